@@ -1,0 +1,102 @@
+// feel — the effect engine: a fixed pool of effect slots rendered once per tick.
+//
+// The engine is the part of feel that runs on the device's local processor (§2.2). It is
+// built with -fno-exceptions -fno-rtti and allocates only in its constructor: every
+// capacity (effect slots, force-profile sample memory) is fixed there, and a create that
+// does not fit reports ErrorCode::device_full instead of growing.
+//
+// Time is an input. tick() takes the time and the sensor state and returns the force on
+// each axis; effect math never reads a clock, so the same inputs give bit-identical
+// outputs.
+//
+// Real-time safety: tick(), start(), stop(), set_gain(), status() never allocate, lock or
+// throw. create() and destroy() do not allocate either, but copy sample data, so call them
+// from the loop's command queue, not from an interrupt.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "feel/axis.hpp"
+#include "feel/effect.hpp"
+#include "feel/status.hpp"
+
+namespace feel {
+
+struct EngineConfig {
+    int32_t axis_count = 2;         // 1..6: the device's axes are x, y, z, rx, ry, rz in order
+    int32_t max_effects = 64;       // effect slots (the "memory pool" of §2.2), 1..65535
+    int32_t max_samples = 1 << 16;  // force-profile sample memory, in samples
+};
+
+// A handle to an effect slot. The generation makes a handle to a freed slot stale.
+struct EffectId {
+    uint16_t index = 0xFFFF;
+    uint16_t generation = 0;
+    [[nodiscard]] bool valid() const noexcept { return index != 0xFFFF; }
+    friend bool operator==(EffectId, EffectId) = default;
+};
+
+struct CreateResult {
+    EffectId id{};
+    Error error{};
+};
+
+enum class EffectState : uint8_t {
+    free,      // the slot holds nothing (stale handle)
+    stopped,   // created, not playing (never started, stopped, or finished)
+    pending,   // started; begins at the next tick
+    delayed,   // playing, inside its start delay
+    playing,   // playing, producing force
+};
+
+// What the engine is told each tick. Positions come from the device's quantized sensors.
+struct TickInput {
+    int64_t t_us = 0;                   // time of this tick, µs, non-decreasing
+    float position[kMaxAxes] = {};      // normalized, ±10000 of each axis's travel
+    uint32_t buttons = 0;               // bit i = button i+1 pressed
+};
+
+struct TickOutput {
+    float force[kMaxAxes] = {};         // normalized ±10000, physical sign, clamped
+    float velocity[kMaxAxes] = {};      // the engine's velocity estimate, normalized units/s
+    int32_t playing_effects = 0;        // effects producing force this tick
+    bool saturated = false;             // the sum was clamped on some axis this tick
+};
+
+class Engine {
+public:
+    explicit Engine(const EngineConfig& config);
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // Validates and stores an effect in a free slot (download). Force profiles pass
+    // their interleaved samples, which are copied into the engine's sample memory.
+    [[nodiscard]] CreateResult create(const EffectParams& params,
+                                      std::span<const int16_t> samples = {}) noexcept;
+    Error destroy(EffectId id) noexcept;
+
+    // Starts the effect at the next tick, from its beginning. Restarting a playing effect
+    // restarts it.
+    Error start(EffectId id) noexcept;
+    Error stop(EffectId id) noexcept;
+    void stop_all() noexcept;
+    [[nodiscard]] EffectState state(EffectId id) const noexcept;
+
+    // Device gain, 0..10000, scales the summed force of every effect.
+    Error set_gain(int32_t gain) noexcept;
+    [[nodiscard]] int32_t gain() const noexcept;
+
+    // Renders one tick. Never allocates, locks or throws; never outputs NaN or inf.
+    void tick(const TickInput& in, TickOutput& out) noexcept;
+
+    [[nodiscard]] const EngineConfig& config() const noexcept;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace feel

@@ -1,0 +1,30 @@
+// Where an effect is in its life, from the time since it was started.
+//
+//   started                                   finished
+//   |<- start delay ->|<- duration ->|<- duration ->| ... (iterations plays)
+//                     τ=0           τ=0            (τ restarts each iteration)
+//
+// The start delay is waited once, before the first iteration. An endless duration or
+// endless iterations never finish.
+#pragma once
+
+#include <cstdint>
+
+#include "feel/effect.hpp"
+
+namespace feel::detail {
+
+enum class ClockPhase : uint8_t { delayed, playing, finished };
+
+struct ClockReading {
+    ClockPhase phase = ClockPhase::delayed;
+    int64_t tau_us = 0;      // time into the current iteration (playing only)
+    int32_t iteration = 0;   // 0-based iteration (playing only)
+};
+
+[[nodiscard]] ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noexcept;
+
+// The total time from start to finish, or kInfiniteUs.
+[[nodiscard]] int64_t total_length_us(const EffectParams& params) noexcept;
+
+}  // namespace feel::detail

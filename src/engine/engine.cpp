@@ -1,0 +1,225 @@
+// The engine tick, the way a device's local processor runs it (§2.2):
+//
+//   for each effect slot that is playing:
+//       read its clock        (start delay, iterations: effect_clock.cpp)
+//       render its force      (waves/: a function of the wave time τ only)
+//       scale by its gain and add it to the axes it acts on
+//   scale the sum by the device gain, clamp each axis to the device maximum
+//
+// Slots live in one array sized at construction; handles carry a generation so a handle
+// to a freed slot is refused instead of reaching its successor. Nothing here reads a clock,
+// allocates or throws: time arrives in TickInput.
+#include "feel/engine.hpp"
+
+#include <cmath>
+
+#include "direction.hpp"
+#include "effect_clock.hpp"
+#include "feel/effect_validation.hpp"
+#include "sample_pool.hpp"
+#include "waves/wave.hpp"
+
+namespace feel {
+namespace {
+
+using detail::ClockPhase;
+
+struct Slot {
+    EffectParams params{};
+    float direction[kMaxAxes] = {};  // force per unit value on each device axis
+    EffectState state = EffectState::free;
+    uint16_t generation = 0;
+    int64_t start_t_us = 0;
+};
+
+Error check_config(const EngineConfig& c) noexcept {
+    if (!Range{1, kMaxAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kMaxAxes});
+    if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
+    if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
+    return {};
+}
+
+// Rendering arrives class by class; until a class lands the engine says so plainly.
+Error check_renderable(EffectType type) noexcept {
+    switch (effect_class(type)) {
+        case EffectClass::wave: return {};
+        case EffectClass::condition:
+            return Error::of(ErrorCode::not_supported, "type",
+                             "Spatial Conditions are not yet rendered by this version of feel");
+        case EffectClass::dynamic:
+            return Error::of(ErrorCode::not_supported, "type",
+                             "Dynamic Sensations are not yet rendered by this version of feel");
+    }
+    return Error::of(ErrorCode::not_supported, "type", "unknown effect class");
+}
+
+float finite_or_zero(double v) noexcept { return std::isfinite(v) ? static_cast<float>(v) : 0.0f; }
+
+}  // namespace
+
+struct Engine::Impl {
+    explicit Impl(const EngineConfig& c)
+        : config(c),
+          config_error(check_config(c)),
+          slot_count(config_error ? 0 : c.max_effects),
+          slots(new Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
+          samples(config_error ? 0 : c.max_samples, slot_count) {}
+
+    Slot* find(EffectId id) noexcept {
+        if (id.index >= slot_count) return nullptr;
+        Slot& s = slots[id.index];
+        return (s.state != EffectState::free && s.generation == id.generation) ? &s : nullptr;
+    }
+
+    EngineConfig config;
+    Error config_error;
+    int32_t slot_count;
+    std::unique_ptr<Slot[]> slots;
+    detail::SamplePool samples;
+    int32_t device_gain = kFullScale;
+    bool have_previous = false;
+    int64_t previous_t_us = 0;
+    float previous_position[kMaxAxes] = {};
+};
+
+Engine::Engine(const EngineConfig& config) : impl_(std::make_unique<Impl>(config)) {}
+Engine::~Engine() = default;
+
+const EngineConfig& Engine::config() const noexcept { return impl_->config; }
+
+CreateResult Engine::create(const EffectParams& params, std::span<const int16_t> samples) noexcept {
+    Impl& m = *impl_;
+    if (m.config_error) return {{}, m.config_error};
+    if (Error e = validate_effect(params, samples)) return {{}, e};
+    for (int i = 0; i < params.axis_count; ++i) {
+        if (axis_index(params.axes[i]) >= m.config.axis_count) {
+            char field[16] = "axes[0]";
+            field[5] = static_cast<char>('0' + i);
+            return {{}, Error::invalid(field, "names an axis this device does not have")};
+        }
+    }
+    if (Error e = check_renderable(params.type)) return {{}, e};
+
+    int32_t index = -1;
+    for (int32_t i = 0; i < m.slot_count; ++i) {
+        if (m.slots[i].state == EffectState::free) {
+            index = i;
+            break;
+        }
+    }
+    if (index < 0) return {{}, Error::of(ErrorCode::device_full, "", "every effect slot is in use")};
+    const bool is_profile = params.type == EffectType::force_profile;
+    if (is_profile && !m.samples.allocate(index, samples.data(), static_cast<int32_t>(samples.size()))) {
+        return {{}, Error::of(ErrorCode::device_full, "custom.samples", "not enough free sample memory")};
+    }
+
+    Slot& s = m.slots[index];
+    s.params = params;
+    s.state = EffectState::stopped;
+    s.start_t_us = 0;
+    detail::direction_factors(params, s.direction);
+    return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
+}
+
+Error Engine::destroy(EffectId id) noexcept {
+    Slot* s = impl_->find(id);
+    if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
+    impl_->samples.release(id.index);
+    s->state = EffectState::free;
+    ++s->generation;
+    return {};
+}
+
+Error Engine::start(EffectId id) noexcept {
+    Slot* s = impl_->find(id);
+    if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
+    s->state = EffectState::pending;
+    return {};
+}
+
+Error Engine::stop(EffectId id) noexcept {
+    Slot* s = impl_->find(id);
+    if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
+    s->state = EffectState::stopped;
+    return {};
+}
+
+void Engine::stop_all() noexcept {
+    for (int32_t i = 0; i < impl_->slot_count; ++i) {
+        Slot& s = impl_->slots[i];
+        if (s.state != EffectState::free) s.state = EffectState::stopped;
+    }
+}
+
+EffectState Engine::state(EffectId id) const noexcept {
+    const Slot* s = impl_->find(id);
+    return s ? s->state : EffectState::free;
+}
+
+Error Engine::set_gain(int32_t gain) noexcept {
+    if (!range::kGain.contains(gain)) return Error::out_of_range("gain", gain, range::kGain);
+    impl_->device_gain = gain;
+    return {};
+}
+
+int32_t Engine::gain() const noexcept { return impl_->device_gain; }
+
+void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
+    Impl& m = *impl_;
+    const int axes = m.config_error ? 0 : m.config.axis_count;
+
+    // Velocity: a backward difference of the sensed positions. Spatial Conditions bring a
+    // proper estimator; waves do not need one.
+    const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
+    for (int a = 0; a < kMaxAxes; ++a) {
+        out.velocity[a] = (a < axes && dt_us > 0)
+                              ? finite_or_zero((in.position[a] - m.previous_position[a]) * 1e6 / static_cast<double>(dt_us))
+                              : 0.0f;
+        m.previous_position[a] = in.position[a];
+    }
+    m.previous_t_us = in.t_us;
+    m.have_previous = true;
+
+    double sum[kMaxAxes] = {};
+    int32_t playing = 0;
+    for (int32_t i = 0; i < m.slot_count; ++i) {
+        Slot& s = m.slots[i];
+        if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
+        if (s.state == EffectState::pending) s.start_t_us = in.t_us;
+
+        const detail::ClockReading clock = detail::read_clock(s.params, in.t_us - s.start_t_us);
+        if (clock.phase == ClockPhase::finished) {
+            s.state = EffectState::stopped;
+            continue;
+        }
+        if (clock.phase == ClockPhase::delayed) {
+            s.state = EffectState::delayed;
+            continue;
+        }
+        s.state = EffectState::playing;
+        ++playing;
+
+        double force[kMaxAxes] = {};
+        const detail::WaveInput wave{&s.params, s.direction,
+                                     s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
+                                     clock.tau_us};
+        detail::render_wave(wave, force);
+        const double effect_gain = s.params.gain / static_cast<double>(kFullScale);
+        for (int a = 0; a < axes; ++a) sum[a] += force[a] * effect_gain;
+    }
+
+    const double device_gain = m.device_gain / static_cast<double>(kFullScale);
+    out.saturated = false;
+    for (int a = 0; a < kMaxAxes; ++a) {
+        double f = a < axes ? sum[a] * device_gain : 0.0;
+        if (!std::isfinite(f)) f = 0.0;  // never pass NaN or inf to a motor
+        if (f > kFullScale || f < -kFullScale) {
+            f = f > 0 ? kFullScale : -kFullScale;
+            out.saturated = true;
+        }
+        out.force[a] = static_cast<float>(f);
+    }
+    out.playing_effects = playing;
+}
+
+}  // namespace feel

@@ -1,0 +1,53 @@
+// Dispatch from an effect type to the wave that renders it.
+#include "wave.hpp"
+
+#include "../direction.hpp"
+
+namespace feel::detail {
+namespace {
+
+void add_along(const float* direction, double value, double force[kMaxAxes]) noexcept {
+    for (int a = 0; a < kMaxAxes; ++a) force[a] += direction[a] * value;
+}
+
+}  // namespace
+
+void render_wave(const WaveInput& in, double force[kMaxAxes]) noexcept {
+    const EffectParams& p = *in.params;
+    switch (p.type) {
+        case EffectType::vector_force:
+        case EffectType::constant:
+            add_along(in.direction, constant_wave(p, in.tau_us), force);
+            return;
+        case EffectType::smart_pop:
+            add_along(in.direction, smart_pop_wave(p, in.tau_us), force);
+            return;
+        case EffectType::sine:
+        case EffectType::square:
+        case EffectType::triangle:
+        case EffectType::saw_up:
+        case EffectType::saw_down:
+            add_along(in.direction, periodic_wave(p, in.tau_us), force);
+            return;
+        case EffectType::sweep_sine:
+        case EffectType::sweep_square:
+        case EffectType::sweep_triangle:
+        case EffectType::sweep_saw_up:
+        case EffectType::sweep_saw_down: {
+            float swept[kMaxAxes];
+            polar_factors(sweep_angle(p, in.tau_us), swept);
+            add_along(swept, periodic_wave(p, in.tau_us), force);
+            return;
+        }
+        case EffectType::ramp:
+            add_along(in.direction, ramp_wave(p, in.tau_us), force);
+            return;
+        case EffectType::force_profile:
+            force_profile_wave(p, in.samples, in.direction, in.tau_us, force);
+            return;
+        default:
+            return;  // not a wave: the engine never routes other classes here
+    }
+}
+
+}  // namespace feel::detail
