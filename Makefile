@@ -33,14 +33,15 @@ test: build unit-tests fuzz
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
 
-# The sensation-file parser under libFuzzer (clang), for a bounded time. The corpus is
-# copied so that the run never writes into the source tree.
+# The sensation-file parser under libFuzzer (clang), for a bounded time. New inputs go to
+# the build tree; the committed seeds in fuzz/corpus are only read.
 fuzz: deps
-	CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	CC=clang CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DFEEL_WERROR=$(WERROR) -DFEEL_BUILD_FUZZ=ON -DFEEL_BUILD_TESTS=OFF -DFEEL_BUILD_BENCH=OFF
 	cmake --build $(BUILD)-fuzz --target fuzz_sensation_file
-	@rm -rf $(BUILD)-fuzz/corpus && mkdir -p $(BUILD)-fuzz/corpus && cp fuzz/corpus/sensation_file/* $(BUILD)-fuzz/corpus/
-	$(BUILD)-fuzz/fuzz/fuzz_sensation_file -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $(BUILD)-fuzz/corpus
+	@mkdir -p $(BUILD)-fuzz/corpus
+	$(BUILD)-fuzz/fuzz/fuzz_sensation_file -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	    -dict=fuzz/sensation_file.dict $(BUILD)-fuzz/corpus fuzz/corpus/sensation_file
 
 bench: build
 	$(BUILD)/bench/feel_bench_tick

@@ -8,6 +8,19 @@ namespace {
 
 constexpr double kRadPerCentideg = std::numbers::pi / 18000.0;
 
+// sin and cos of an angle in hundredths of a degree, exact at the four cardinal points so
+// that a force from due east has no stray 1e-12 on the y axis.
+void sin_cos(double centideg, double& s, double& c) noexcept {
+    double a = std::fmod(centideg, 36000.0);
+    if (a < 0) a += 36000.0;
+    if (a == 0.0) { s = 0; c = 1; return; }
+    if (a == 9000.0) { s = 1; c = 0; return; }
+    if (a == 18000.0) { s = 0; c = -1; return; }
+    if (a == 27000.0) { s = -1; c = 0; return; }
+    s = std::sin(a * kRadPerCentideg);
+    c = std::cos(a * kRadPerCentideg);
+}
+
 void clear(float factors[kMaxAxes]) noexcept {
     for (int i = 0; i < kMaxAxes; ++i) factors[i] = 0.0f;
 }
@@ -27,9 +40,10 @@ void from_vector(const EffectParams& params, const double* from, int n, float fa
 
 void polar_factors(double angle_centideg, float factors[kMaxAxes]) noexcept {
     clear(factors);
-    const double a = angle_centideg * kRadPerCentideg;
-    factors[axis_index(Axis::x)] = static_cast<float>(-std::sin(a));
-    factors[axis_index(Axis::y)] = static_cast<float>(-std::cos(a));
+    double s = 0, c = 0;
+    sin_cos(angle_centideg, s, c);
+    factors[axis_index(Axis::x)] = static_cast<float>(-s);
+    factors[axis_index(Axis::y)] = static_cast<float>(-c);
 }
 
 void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noexcept {
@@ -50,10 +64,10 @@ void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noex
             return;
         }
         case DirectionKind::spherical: {
-            const double azimuth = d.value[0] * kRadPerCentideg;
-            const double elevation = d.value[1] * kRadPerCentideg;
-            const double from[3] = {std::sin(elevation) * std::cos(azimuth),
-                                    std::sin(elevation) * std::sin(azimuth), std::cos(elevation)};
+            double sin_az = 0, cos_az = 0, sin_el = 0, cos_el = 0;
+            sin_cos(d.value[0], sin_az, cos_az);
+            sin_cos(d.value[1], sin_el, cos_el);
+            const double from[3] = {sin_el * cos_az, sin_el * sin_az, cos_el};
             // Spherical directions are over x, y, z by definition, whatever the axis order.
             factors[axis_index(Axis::x)] = static_cast<float>(-from[0]);
             factors[axis_index(Axis::y)] = static_cast<float>(-from[1]);

@@ -120,3 +120,18 @@ TEST_F(Direction3D, CartesianOverThreeAxes) {
 
 }  // namespace
 }  // namespace feel::test
+
+namespace feel::test {
+namespace {
+
+TEST_F(Direction2D, CardinalDirectionsLeaveTheOtherAxisExactlyZero) {
+    for (int32_t angle : {0, 9000, 18000, 27000}) {
+        reset(2);
+        play(on_xy_polar(constant_on_x(5000, kInfiniteUs), angle));
+        const TickOutput out = tick();
+        EXPECT_EQ(out.force[angle % 18000 == 0 ? 0 : 1], 0.0f) << angle;
+    }
+}
+
+}  // namespace
+}  // namespace feel::test

@@ -1,0 +1,149 @@
+// The command-line grammar (CLI11) and the one place that turns errors into exit codes.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <ostream>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace feel::cli {
+namespace {
+
+constexpr const char* kVersion = "feel " FEEL_VERSION;
+constexpr const char* kExitCodes =
+    "Exit codes: 0 success, 1 failure (bad file, refused effect, unwritable output), 2 usage "
+    "error. Full reference: docs/cli.md\n";
+
+void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& duration) {
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a sensation on a simulated device in closed loop; write the trace as "
+                  "CSV (and optionally a plot) and print a summary");
+    cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
+    cmd->add_option("--sensation", a.sensation, "Name of the sensation to render")->required();
+    cmd->add_option("--device", a.device, "Simulated device: joystick, wheel or 3axis")
+        ->capture_default_str();
+    cmd->add_option("--motion", a.motion,
+                    "Target motion of the hand: hold:X[,Y[,Z]], ramp:AXIS:FROM:TO, "
+                    "sine:AXIS:AMPLITUDE:HZ, circle:RADIUS:HZ or csv:PATH")
+        ->capture_default_str();
+    cmd->add_option("--hand", a.hand, "How the hand holds the handle: none, loose, firm, stiff "
+                                      "or kinematic")
+        ->capture_default_str();
+    duration = cmd->add_option("--duration", duration_s, "Seconds to render, 0 < s <= 600 (default: the "
+                                             "sensation's length plus a short tail, or 2 s if "
+                                             "it never ends)");
+    cmd->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..10000")->capture_default_str();
+    cmd->add_option("-o,--output", a.output, "CSV output file, or - for standard output")
+        ->required();
+    cmd->add_option("--plot", a.plot, "Also draw force and position to OUT.svg or OUT.png");
+    cmd->footer(kExitCodes);
+}
+
+void add_check(CLI::App& app, CheckArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "check", "Validate a sensation file and list its sensations");
+    cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
+    cmd->footer(kExitCodes);
+}
+
+void add_devices(CLI::App& app) {
+    app.add_subcommand("devices", "List the simulated device profiles")->footer(kExitCodes);
+}
+
+// "feel render" when the error came from a subcommand, else "feel".
+std::string who(const CLI::App& app) {
+    for (const CLI::App* sub : app.get_subcommands()) return "feel " + sub->get_name();
+    return "feel";
+}
+
+std::string join(const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& s : items) out += (out.empty() ? "" : " ") + s;
+    return out;
+}
+
+// CLI11 reports a missing required option before an unknown one, and lists leftovers in
+// an odd order; a typo in a flag name is the likelier mistake, so name it first.
+std::string parse_error_message(const CLI::App& app, std::span<const std::string> args,
+                                const CLI::ParseError& e) {
+    std::vector<std::string> unknown_flags;
+    std::vector<std::string> leftovers;
+    const CLI::App* scope = &app;
+    for (const CLI::App* sub : app.get_subcommands()) scope = sub;
+    for (const CLI::App* a : {&app, scope}) {
+        for (const std::string& s : a->remaining()) {
+            (s.size() > 1 && s[0] == '-' ? unknown_flags : leftovers).push_back(s);
+        }
+        if (scope == &app) break;
+    }
+    if (!unknown_flags.empty()) {
+        return (unknown_flags.size() == 1 ? "unknown option " : "unknown options ") +
+               join(unknown_flags);
+    }
+    if (app.get_subcommands().empty()) {
+        if (args.size() <= 1) return "no command given (available: render, check, devices)";
+        if (!args[1].empty() && args[1][0] != '-') {
+            return "unknown command \"" + args[1] + "\" (available: render, check, devices)";
+        }
+    }
+    return e.what();
+}
+
+}  // namespace
+
+int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    CLI::App app{"feel renders force-feedback sensations (I-FORCE 2.0 / DirectX 5 effects) on a "
+                 "simulated device.",
+                 "feel"};
+    app.set_version_flag("--version", kVersion);
+    app.require_subcommand(1);
+    app.footer("Run 'feel COMMAND --help' for the options of a command.\n" + std::string(kExitCodes));
+
+    RenderArgs render_args;
+    CheckArgs check_args;
+    double duration_s = 0;
+    CLI::Option* duration = nullptr;
+    add_render(app, render_args, duration_s, duration);
+    add_check(app, check_args);
+    add_devices(app);
+
+    try {
+        std::vector<const char*> argv;
+        argv.reserve(args.size());
+        for (const std::string& s : args) argv.push_back(s.c_str());
+        try {
+            app.parse(static_cast<int>(argv.size()), argv.data());
+        } catch (const CLI::Success& e) {  // --help, --version
+            return app.exit(e, out, err);
+        } catch (const CLI::ParseError& e) {
+            err << who(app) << ": error: " << parse_error_message(app, args, e) << "\n"
+                << "Run '" << who(app) << " --help' for usage.\n";
+            return kExitUsage;
+        }
+
+        if (app.got_subcommand("render")) {
+            if (duration->count() > 0) render_args.duration_s = duration_s;
+            run_render(render_args, out, err);
+        } else if (app.got_subcommand("check")) {
+            run_check(check_args, out, err);
+        } else if (app.got_subcommand("devices")) {
+            run_devices(out);
+        }
+        return kExitOk;
+    } catch (const UsageError& e) {
+        err << who(app) << ": error: " << e.what() << '\n';
+        return kExitUsage;
+    } catch (const std::invalid_argument& e) {  // the libraries' option checks name a flag
+        err << who(app) << ": error: " << e.what() << '\n';
+        return kExitUsage;
+    } catch (const std::exception& e) {
+        err << who(app) << ": error: " << e.what() << '\n';
+        return kExitFailure;
+    } catch (...) {
+        err << who(app) << ": error: unexpected failure\n";
+        return kExitFailure;
+    }
+}
+
+}  // namespace feel::cli

@@ -1,0 +1,74 @@
+// feel::render — closed-loop rendering of a sensation on the simulated device.
+//
+// render() runs the engine and the simulated device together at a fixed rate, the way
+// the device's local loop would: sense, tick the engine, drive the motors, step physics.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "feel/format/sensation_file.hpp"
+#include "feel/sim/device_profile.hpp"
+#include "feel/sim/hand.hpp"
+
+namespace feel::render {
+
+// The limits render() enforces on its options. The rate is a whole number of Hz so that
+// tick n happens at exactly round(n·1e6/rate) µs; a rate that divides 1e6 (100, 125, 200,
+// 250, 500, 1000, 2000, 5000, 10000, ...) gives evenly spaced ticks, any other rate gives
+// ticks that alternate by at most 1 µs.
+inline constexpr double kMinRateHz = 100;
+inline constexpr double kMaxRateHz = 10000;
+inline constexpr double kMaxDurationS = 600;
+inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (88 B a row: ~180 MB)
+
+struct RenderOptions {
+    const sim::DeviceProfile* profile = nullptr;  // required
+    sim::Grip grip = sim::Grip::firm;
+    std::string motion = "hold:0";                 // a TargetMotion spec
+    double duration_s = 0;                         // 0: the sensation's length, or 2 s if endless
+    double rate_hz = 1000;                         // whole Hz, kMinRateHz..kMaxRateHz
+};
+
+struct TraceRow {
+    int64_t t_us = 0;
+    float position[kMaxAxes] = {};  // true handle position, normalized
+    float velocity[kMaxAxes] = {};  // true handle velocity, normalized units/s
+    float force[kMaxAxes] = {};     // force the engine commands, normalized, physical sign
+    bool saturated = false;         // the engine clamped the summed force on some axis
+};
+
+struct Trace {
+    int32_t axis_count = 0;  // the device's axes, x, y, z, rx, ry, rz in that order
+    double rate_hz = 0;
+    std::vector<TraceRow> rows;
+};
+
+// Throws std::invalid_argument for bad options and std::runtime_error naming the effect
+// for a sensation the engine refuses (e.g. a type it cannot render yet).
+[[nodiscard]] Trace render(const format::Sensation& sensation, const RenderOptions& options);
+
+// The time from start until every effect of the sensation has finished, µs: the largest
+// start_delay + duration·iterations over its effects. nullopt when some effect never ends
+// (infinite duration or iterations).
+[[nodiscard]] std::optional<int64_t> sensation_length_us(const format::Sensation& sensation) noexcept;
+
+// The render length used when RenderOptions::duration_s is 0: the sensation's length plus
+// a tail of 10% (at least 100 ms) so that the end of the sensation shows, or 2 s for a
+// sensation that never ends. May exceed kMaxDurationS for very long sensations, in which
+// case render() asks for an explicit duration.
+[[nodiscard]] double default_duration_s(const format::Sensation& sensation) noexcept;
+
+// "t_us,x,y,vx,vy,fx,fy" then one row per tick. Numbers are written in their shortest
+// form that reads back to the same value.
+void write_csv(const Trace& trace, std::ostream& out);
+
+// Draws force and position against time; the format follows the extension (.svg, .png).
+// Throws std::invalid_argument for another extension or an empty trace, and
+// std::runtime_error when the file cannot be written.
+void write_plot(const Trace& trace, const std::string& title, const std::string& path);
+
+}  // namespace feel::render

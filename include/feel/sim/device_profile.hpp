@@ -1,0 +1,65 @@
+// feel::sim — device profiles: the physical facts of each simulated device.
+//
+// A profile maps feel's normalized units onto physical ones for each axis:
+//   position  ±10000  <->  ±half_travel   (m for linear axes, rad for rotary axes)
+//   force     ±10000  <->  ±max_force     (N or N·m; the motor's limit)
+// and velocity 10000 <-> velocity_ref (normalized position units per second); see
+// docs/conventions.md and, for the numbers of every profile and where they come from,
+// docs/simulated-device.md.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "feel/axis.hpp"
+
+namespace feel::sim {
+
+enum class AxisKind : uint8_t { linear, rotary };
+
+// One axis of the handle's mechanism. Every field must be finite; check_device_profile()
+// states the allowed range of each.
+struct AxisModel {
+    Axis axis = Axis::x;
+    AxisKind kind = AxisKind::linear;
+    double half_travel = 0.05;         // m or rad, > 0: position +10000 is +half_travel
+    double max_force = 4.45;           // N or N·m, > 0: the motor limit, force 10000
+    double mass = 0.1;                 // kg or kg·m², > 0: moving mass of the handle
+    double viscous = 0.2;              // N·s/m or N·m·s/rad, >= 0: the mechanism's damping b
+    double coulomb = 0.05;             // N or N·m, >= 0: the mechanism's dry friction
+    double end_stop_stiffness = 2e3;   // N/m or N·m/rad, > 0, beyond ±half_travel
+    double end_stop_damping = 5.0;     // N·s/m or N·m·s/rad, >= 0, while pressing into a stop
+    int32_t sensor_counts = 4096;      // 2..16777216: encoder steps across the full travel
+};
+
+// How a hand holds the handle: a spring-damper tether to the target motion, plus the
+// part of the hand's mass that moves with the handle. All fields finite and >= 0.
+struct GripModel {
+    double stiffness = 0;   // N/m or N·m/rad
+    double damping = 0;     // N·s/m or N·m·s/rad
+    double added_mass = 0;  // kg or kg·m²
+};
+
+struct DeviceProfile {
+    std::string_view name;         // "joystick", "wheel", "3axis"
+    std::string_view description;
+    int32_t axis_count = 0;        // 1..6; axes[i].axis must be axis i (x, y, z, rx, ry, rz)
+    AxisModel axes[kMaxAxes] = {};
+    int32_t button_count = 0;      // 0..32
+    double velocity_ref = 1e5;     // normalized position units/s that read as velocity 10000
+    GripModel loose{}, firm{}, stiff{};  // per axis, same on every axis of the device
+};
+
+// The built-in profiles, in the order "joystick", "wheel", "3axis".
+[[nodiscard]] std::span<const DeviceProfile> device_profiles() noexcept;
+// nullptr when no built-in profile has this name.
+[[nodiscard]] const DeviceProfile* find_device_profile(std::string_view name) noexcept;
+
+// Empty when the profile is usable by SimDevice; otherwise a sentence naming the first bad
+// field, its value and the allowed range, e.g.
+//   "axes[1].mass = 0 is out of range (allowed a finite value > 0, kg or kg·m²)".
+[[nodiscard]] std::string check_device_profile(const DeviceProfile& profile);
+
+}  // namespace feel::sim

@@ -1,0 +1,173 @@
+// Closed-loop rendering: the engine and the simulated device run together, tick by tick.
+//
+// Each tick does what the device's local loop does (§2.2): read the sensors, let the
+// engine compute the force from the time and the sensed state, send the force to the
+// motors, and let the world move. Here the world is SimDevice, so the loop is
+//
+//     in.t_us = t(n);  device.sense(in);  engine.tick(in, out);  record;  device.step(out.force, dt)
+//
+// The row recorded for tick n holds the handle's true state at t(n) (not the quantized
+// sensor reading the engine saw) and the force the engine commanded at t(n). That force
+// then acts on the handle until t(n+1).
+//
+// Time is integer µs and computed from the tick index, t(n) = round(n·1e6 / rate), never
+// accumulated, so the last tick of a long render is as exact as the first. The physics
+// step dt is the difference of two such times, so the device's clock and the engine's
+// clock never drift apart.
+//
+// The engine is sized to hold the whole sensation: rendering answers "what does this
+// sensation feel like", not "does it fit a particular device's memory".
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "feel/engine.hpp"
+#include "feel/render/render.hpp"
+#include "feel/sim/sim_device.hpp"
+
+namespace feel::render {
+namespace {
+
+std::string format_number(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+// The rate, as whole Hz; throws unless it is a whole number within the limits.
+int64_t checked_rate(double rate_hz) {
+    const bool whole = std::isfinite(rate_hz) && std::floor(rate_hz) == rate_hz;
+    if (!whole || rate_hz < kMinRateHz || rate_hz > kMaxRateHz) {
+        throw std::invalid_argument("--rate = " + format_number(rate_hz) +
+                                    " Hz is out of range (allowed a whole number of Hz, " +
+                                    format_number(kMinRateHz) + ".." +
+                                    format_number(kMaxRateHz) + ")");
+    }
+    return static_cast<int64_t>(rate_hz);
+}
+
+// The render length in seconds: the option, or the sensation's own length when it is 0.
+double checked_duration(const format::Sensation& sensation, double duration_s) {
+    const std::string allowed = "allowed 0 < duration <= " + format_number(kMaxDurationS) +
+                                " s, or 0 for the sensation's own length";
+    if (!std::isfinite(duration_s) || duration_s < 0 || duration_s > kMaxDurationS) {
+        throw std::invalid_argument("--duration = " + format_number(duration_s) +
+                                    " s is out of range (" + allowed + ")");
+    }
+    if (duration_s > 0) return duration_s;
+    const double own = default_duration_s(sensation);
+    if (own > kMaxDurationS) {
+        throw std::invalid_argument("sensation \"" + sensation.name + "\" lasts " +
+                                    format_number(own) +
+                                    " s with its tail, longer than the longest render: pass "
+                                    "--duration (" + allowed + ")");
+    }
+    return own;
+}
+
+// Tick n's time, µs, rounded to the nearest µs.
+int64_t tick_time_us(int64_t n, int64_t rate) noexcept {
+    return (n * 1'000'000 + rate / 2) / rate;
+}
+
+std::string effect_label(const format::Sensation& sensation, size_t index,
+                         const EffectParams& params) {
+    return "sensation \"" + sensation.name + "\": effect " + std::to_string(index) + " (" +
+           std::string(effect_type_name(params.type)) + ")";
+}
+
+[[noreturn]] void throw_refused(const format::Sensation& sensation, size_t index,
+                                const EffectParams& params, const char* what,
+                                const Error& error) {
+    throw std::runtime_error(effect_label(sensation, index, params) + ": the engine " + what +
+                             " it (" + std::string(error_code_name(error.code)) +
+                             "): " + error.message());
+}
+
+EngineConfig engine_config_for(const format::Sensation& sensation, int32_t axis_count) {
+    EngineConfig config;
+    config.axis_count = axis_count;
+    size_t samples = 0;
+    for (const format::EffectSpec& e : sensation.effects) samples += e.samples.size();
+    constexpr size_t kMaxSlots = 65535;
+    config.max_effects = static_cast<int32_t>(
+        std::clamp<size_t>(sensation.effects.size(), static_cast<size_t>(config.max_effects),
+                           kMaxSlots));
+    config.max_samples = static_cast<int32_t>(std::clamp<size_t>(
+        samples, static_cast<size_t>(config.max_samples), static_cast<size_t>(INT32_MAX)));
+    return config;
+}
+
+sim::TargetMotion parse_motion(const std::string& spec, double duration_s, int32_t axis_count) {
+    try {
+        return sim::TargetMotion::parse(spec, duration_s, axis_count);
+    } catch (const std::invalid_argument& e) {
+        const std::string message = e.what();
+        if (message.find("--motion") != std::string::npos) throw;
+        throw std::invalid_argument("--motion \"" + spec + "\": " + message);
+    }
+}
+
+}  // namespace
+
+Trace render(const format::Sensation& sensation, const RenderOptions& options) {
+    if (options.profile == nullptr) {
+        throw std::invalid_argument("--device: no device profile given (render needs one)");
+    }
+    const sim::DeviceProfile& profile = *options.profile;
+    const int64_t rate = checked_rate(options.rate_hz);
+    const double duration_s = checked_duration(sensation, options.duration_s);
+    const double exact_ticks = duration_s * static_cast<double>(rate);
+    if (exact_ticks > static_cast<double>(kMaxTicks)) {
+        throw std::invalid_argument(
+            "--duration * --rate = " + format_number(exact_ticks) + " ticks is too many (allowed " +
+            "at most " + std::to_string(kMaxTicks) + "; lower --rate or --duration)");
+    }
+    const int64_t ticks = std::max<int64_t>(1, std::llround(exact_ticks));
+
+    sim::SimDevice device(profile, options.grip,
+                          parse_motion(options.motion, duration_s, profile.axis_count));
+
+    Engine engine(engine_config_for(sensation, profile.axis_count));
+    std::vector<EffectId> ids;
+    ids.reserve(sensation.effects.size());
+    for (size_t i = 0; i < sensation.effects.size(); ++i) {
+        const format::EffectSpec& spec = sensation.effects[i];
+        const CreateResult created = engine.create(spec.params, spec.samples);
+        if (created.error) throw_refused(sensation, i, spec.params, "refused", created.error);
+        ids.push_back(created.id);
+    }
+    for (size_t i = 0; i < ids.size(); ++i) {
+        if (const Error error = engine.start(ids[i])) {
+            throw_refused(sensation, i, sensation.effects[i].params, "could not start", error);
+        }
+    }
+
+    Trace trace;
+    trace.axis_count = profile.axis_count;
+    trace.rate_hz = static_cast<double>(rate);
+    trace.rows.resize(static_cast<size_t>(ticks));
+    for (int64_t n = 0; n < ticks; ++n) {
+        TickInput in;
+        in.t_us = tick_time_us(n, rate);
+        device.sense(in);
+        TickOutput out;
+        engine.tick(in, out);
+
+        TraceRow& row = trace.rows[static_cast<size_t>(n)];
+        row.t_us = in.t_us;
+        row.saturated = out.saturated;
+        for (int a = 0; a < profile.axis_count; ++a) {
+            row.position[a] = static_cast<float>(device.position(a));
+            row.velocity[a] = static_cast<float>(device.velocity(a));
+            row.force[a] = out.force[a];
+        }
+        const double dt_s = static_cast<double>(tick_time_us(n + 1, rate) - in.t_us) * 1e-6;
+        device.step(out.force, dt_s);
+    }
+    return trace;
+}
+
+}  // namespace feel::render

@@ -1,0 +1,207 @@
+// The built-in device profiles.
+//
+// The numbers describe real consumer hardware of each class, seen from the user's hand.
+// Where a device is a lever (a joystick) its axis is modelled as linear motion of the grip
+// point: mass is the effective mass felt at the grip (stick, gimbal and the motor rotors
+// reflected through the transmission), force is the force at the grip. Rotary devices (a
+// wheel) are modelled in rad, N·m and kg·m² about their shaft. docs/simulated-device.md
+// tabulates every number with its normalized <-> physical mapping and its reasoning.
+//
+// Grip models are hand-arm impedances from the haptics literature: a hand resting on a
+// handle is a soft, lightly damped spring (~100 N/m), a firm grasp a few hundred N/m, a
+// braced, co-contracted arm one to two kN/m; the damping ratio of the coupled system stays
+// near 0.25, as measured for human limbs. The added mass is the part of the hand and arm
+// that moves with the handle: fingers for a loose grip, hand and forearm for a stiff one.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "feel/sim/device_profile.hpp"
+
+namespace feel::sim {
+namespace {
+
+// A linear grip axis, used by the joystick and the 3-axis device.
+constexpr GripModel kLinearLoose{.stiffness = 100, .damping = 2, .added_mass = 0.05};
+constexpr GripModel kLinearFirm{.stiffness = 400, .damping = 6, .added_mass = 0.15};
+constexpr GripModel kLinearStiff{.stiffness = 1500, .damping = 15, .added_mass = 0.3};
+
+// Force-FX class joystick (§3.7: "less than 1 pound of force"), two gimballed axes.
+// The grip point sits ~0.115 m above the pivot; ±25° of stick travel is ±50 mm there.
+constexpr AxisModel joystick_axis(Axis axis) {
+    return AxisModel{
+        .axis = axis,
+        .kind = AxisKind::linear,
+        .half_travel = 0.05,           // m: ±50 mm at the grip
+        .max_force = 4.45,             // N: 1 lbf at the grip
+        .mass = 0.15,                  // kg: stick + gimbal + reflected motor rotors
+        .viscous = 0.5,                // N·s/m: motor back-EMF and gear losses
+        .coulomb = 0.15,               // N: gear-train friction, ~3% of the motor limit
+        .end_stop_stiffness = 5e4,     // N/m: padded hard stop, 0.09 mm under 1 lbf
+        .end_stop_damping = 45,        // N·s/m: damping ratio ~0.26 against the bare stick
+        .sensor_counts = 4096,         // 12 bits over the travel: 24 µm at the grip
+    };
+}
+
+// Force-feedback wheel of the geared 900° class (e.g. 2.5 N·m, 14-bit encoder).
+constexpr AxisModel wheel_axis() {
+    return AxisModel{
+        .axis = Axis::x,
+        .kind = AxisKind::rotary,
+        .half_travel = 7.853981633974483,  // rad: ±450°, 2.5 turns lock to lock
+        .max_force = 2.5,                  // N·m: at the rim's shaft
+        .mass = 0.015,                     // kg·m²: 280 mm rim and hub + reflected rotor
+        .viscous = 0.01,                   // N·m·s/rad: back-EMF and gear losses
+        .coulomb = 0.05,                   // N·m: helical gear friction, 2% of the limit
+        .end_stop_stiffness = 1000,        // N·m/rad: the lock, 0.14° under full torque
+        .end_stop_damping = 2,             // N·m·s/rad: damping ratio ~0.26 at the lock
+        .sensor_counts = 16384,            // 14 bits over 900°: 0.055° per step
+    };
+}
+
+// Three-axis delta-type device (Novint Falcon class: 4 in cube, 2 lbf, ~400 dpi).
+constexpr AxisModel three_axis_axis(Axis axis) {
+    return AxisModel{
+        .axis = axis,
+        .kind = AxisKind::linear,
+        .half_travel = 0.0508,         // m: ±2 in, a 4 in cube
+        .max_force = 8.9,              // N: 2 lbf
+        .mass = 0.15,                  // kg: grip + arms + reflected capstan rotors
+        .viscous = 0.4,                // N·s/m
+        .coulomb = 0.05,               // N: cable capstans run almost without friction
+        .end_stop_stiffness = 5e4,     // N/m: 0.18 mm under 2 lbf
+        .end_stop_damping = 45,        // N·s/m: damping ratio ~0.26 against the bare grip
+        .sensor_counts = 1600,         // 400 dpi over 4 in: 63.5 µm per step
+    };
+}
+
+constexpr DeviceProfile kProfiles[] = {
+    DeviceProfile{
+        .name = "joystick",
+        .description = "2-axis force-feedback joystick of the Force-FX class: 4.45 N (1 lbf) "
+                       "at the grip, ±50 mm of travel, 12-bit sensors",
+        .axis_count = 2,
+        .axes = {joystick_axis(Axis::x), joystick_axis(Axis::y)},
+        .button_count = 4,
+        .velocity_ref = 1e5,  // 0.5 m/s at the grip: full travel in 0.2 s reads 10000
+        .loose = kLinearLoose,
+        .firm = kLinearFirm,
+        .stiff = kLinearStiff,
+    },
+    DeviceProfile{
+        .name = "wheel",
+        .description = "1-axis force-feedback steering wheel: 2.5 N·m, ±450° of travel, "
+                       "14-bit sensor",
+        .axis_count = 1,
+        .axes = {wheel_axis()},
+        .button_count = 8,
+        .velocity_ref = 2e4,  // 900°/s: lock to lock in one second reads 10000
+        .loose = GripModel{.stiffness = 3, .damping = 0.12, .added_mass = 0.01},
+        .firm = GripModel{.stiffness = 12, .damping = 0.35, .added_mass = 0.03},
+        .stiff = GripModel{.stiffness = 40, .damping = 0.8, .added_mass = 0.05},
+    },
+    DeviceProfile{
+        .name = "3axis",
+        .description = "3-axis (x, y, z) force-feedback device of the Falcon class: 8.9 N "
+                       "(2 lbf), a 4 in cube of travel, 400 dpi sensors",
+        .axis_count = 3,
+        .axes = {three_axis_axis(Axis::x), three_axis_axis(Axis::y),
+                 three_axis_axis(Axis::z)},
+        .button_count = 4,
+        .velocity_ref = 1e5,  // 0.508 m/s: full travel in 0.2 s reads 10000
+        .loose = kLinearLoose,
+        .firm = kLinearFirm,
+        .stiff = kLinearStiff,
+    },
+};
+
+std::string format_number(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+// "" when lo <= v (or lo < v when strict) and v is finite.
+std::string check_at_least(const std::string& field, double v, double lo, bool strict,
+                           const char* unit) {
+    const bool ok = std::isfinite(v) && (strict ? v > lo : v >= lo);
+    if (ok) return {};
+    return field + " = " + format_number(v) + " is out of range (allowed a finite value " +
+           (strict ? "> " : ">= ") + format_number(lo) + ", " + unit + ")";
+}
+
+std::string check_grip(const std::string& name, const GripModel& g) {
+    for (std::string e : {check_at_least(name + ".stiffness", g.stiffness, 0, false,
+                                         "N/m or N·m/rad"),
+                          check_at_least(name + ".damping", g.damping, 0, false,
+                                         "N·s/m or N·m·s/rad"),
+                          check_at_least(name + ".added_mass", g.added_mass, 0, false,
+                                         "kg or kg·m²")}) {
+        if (!e.empty()) return e;
+    }
+    return {};
+}
+
+std::string check_axis(int i, const AxisModel& a) {
+    const std::string p = "axes[" + std::to_string(i) + "]";
+    if (a.axis != static_cast<Axis>(i)) {
+        return p + ".axis = " + std::string(axis_name(a.axis)) + " is wrong (axis " +
+               std::to_string(i) + " of a device must be " +
+               std::string(axis_name(static_cast<Axis>(i))) + ")";
+    }
+    for (std::string e : {
+             check_at_least(p + ".half_travel", a.half_travel, 0, true, "m or rad"),
+             check_at_least(p + ".max_force", a.max_force, 0, true, "N or N·m"),
+             check_at_least(p + ".mass", a.mass, 0, true, "kg or kg·m²"),
+             check_at_least(p + ".viscous", a.viscous, 0, false, "N·s/m or N·m·s/rad"),
+             check_at_least(p + ".coulomb", a.coulomb, 0, false, "N or N·m"),
+             check_at_least(p + ".end_stop_stiffness", a.end_stop_stiffness, 0, true,
+                            "N/m or N·m/rad"),
+             check_at_least(p + ".end_stop_damping", a.end_stop_damping, 0, false,
+                            "N·s/m or N·m·s/rad"),
+         }) {
+        if (!e.empty()) return e;
+    }
+    // Readings are floats: 2^24 steps keep every one of them exact.
+    constexpr int32_t kMaxCounts = 1 << 24;
+    if (a.sensor_counts < 2 || a.sensor_counts > kMaxCounts) {
+        return p + ".sensor_counts = " + std::to_string(a.sensor_counts) +
+               " is out of range (allowed 2.." + std::to_string(kMaxCounts) + ")";
+    }
+    return {};
+}
+
+}  // namespace
+
+std::span<const DeviceProfile> device_profiles() noexcept { return kProfiles; }
+
+const DeviceProfile* find_device_profile(std::string_view name) noexcept {
+    for (const DeviceProfile& p : kProfiles) {
+        if (p.name == name) return &p;
+    }
+    return nullptr;
+}
+
+std::string check_device_profile(const DeviceProfile& profile) {
+    if (profile.axis_count < 1 || profile.axis_count > kMaxAxes) {
+        return "axis_count = " + std::to_string(profile.axis_count) +
+               " is out of range (allowed 1.." + std::to_string(kMaxAxes) + ")";
+    }
+    for (int i = 0; i < profile.axis_count; ++i) {
+        if (std::string e = check_axis(i, profile.axes[i]); !e.empty()) return e;
+    }
+    if (profile.button_count < 0 || profile.button_count > 32) {
+        return "button_count = " + std::to_string(profile.button_count) +
+               " is out of range (allowed 0..32)";
+    }
+    if (std::string e = check_at_least("velocity_ref", profile.velocity_ref, 0, true,
+                                       "normalized units/s");
+        !e.empty()) {
+        return e;
+    }
+    if (std::string e = check_grip("loose", profile.loose); !e.empty()) return e;
+    if (std::string e = check_grip("firm", profile.firm); !e.empty()) return e;
+    return check_grip("stiff", profile.stiff);
+}
+
+}  // namespace feel::sim
