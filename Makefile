@@ -28,7 +28,8 @@ demo: build
 	$(FEEL) render examples/primer.feel.json --sensation railing_impact \
 	    --device joystick --hand firm -o out/railing_impact.csv --plot out/railing_impact.png
 
-test: build unit-tests fuzz
+# The fuzz run goes first so that the test summary is the last thing printed.
+test: build fuzz unit-tests
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
