@@ -8,7 +8,7 @@ WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 30
 
-.PHONY: all deps build demo test unit-tests fuzz bench clean
+.PHONY: all deps build demo plots test unit-tests fuzz bench clean
 
 all: build
 
@@ -27,6 +27,9 @@ demo: build
 	    --plot out/cross_wind_with_gun_blasts.svg
 	$(FEEL) render examples/primer.feel.json --sensation railing_impact \
 	    --device joystick --hand firm -o out/railing_impact.csv --plot out/railing_impact.png
+	$(FEEL) render examples/walls.feel.json --sensation horizontal_wall \
+	    --device joystick --hand firm --motion circle:6000:0.5 -o out/horizontal_wall.csv \
+	    --plot out/horizontal_wall.png
 
 # The fuzz run goes first so that the test summary is the last thing printed.
 test: build fuzz unit-tests
@@ -43,6 +46,10 @@ fuzz: deps
 	@mkdir -p $(BUILD)-fuzz/corpus
 	$(BUILD)-fuzz/fuzz/fuzz_sensation_file -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
 	    -dict=fuzz/sensation_file.dict $(BUILD)-fuzz/corpus fuzz/corpus/sensation_file
+
+# Every sensation of every example file, rendered and plotted under out/examples/.
+plots: build
+	bash scripts/render-examples.sh $(FEEL)
 
 bench: build
 	$(BUILD)/bench/feel_bench_tick

@@ -53,6 +53,10 @@ struct Envelope {
     friend bool operator==(const Envelope&, const Envelope&) = default;
 };
 
+// Where an offset is measured from: the axis origin, or the handle's position when the
+// effect starts (the primer's SpringAtCurrentLocation, §8.2; a wall's relative offset, §3.7).
+enum class OffsetMode : uint8_t { absolute, relative };
+
 // One axis of a spring, damper, inertia or friction (§6.6.a).
 struct ConditionBlock {
     int32_t pos_coefficient = 0;     // -10000..10000
@@ -61,6 +65,7 @@ struct ConditionBlock {
     int32_t pos_saturation = 10000;  // 0..10000, largest force on the positive side
     int32_t neg_saturation = 10000;  // 0..10000, largest force on the negative side
     int32_t deadband = 0;            // 0..10000, zero-force band around the offset
+    OffsetMode offset_mode = OffsetMode::absolute;  // springs: relative = from the start position
 
     friend bool operator==(const ConditionBlock&, const ConditionBlock&) = default;
 };
@@ -111,8 +116,9 @@ struct TextureBlock {  // §6.6.j
     friend bool operator==(const TextureBlock&, const TextureBlock&) = default;
 };
 
-enum class WallSense : uint8_t { positive, negative };  // the side of the wall the handle is on
-enum class OffsetMode : uint8_t { absolute, relative };  // relative: to the handle at start
+// Which way a wall faces (§3.7): positive resists motion toward +axis, so the handle is free
+// on the negative side; negative resists motion toward -axis.
+enum class WallSense : uint8_t { positive, negative };
 
 struct WallBlock {  // §6.6.h
     int32_t hardness = 0;              // -10000..10000

@@ -28,6 +28,23 @@ struct EngineConfig {
     int32_t axis_count = 2;         // 1..6: the device's axes are x, y, z, rx, ry, rz in order
     int32_t max_effects = 64;       // effect slots (the "memory pool" of §2.2), 1..65535
     int32_t max_samples = 1 << 16;  // force-profile sample memory, in samples
+
+    // What the engine knows of the device, in normalized units (docs/conventions.md).
+    // feel::sim::engine_config_for(profile) fills these from a device profile.
+    float velocity_ref = 1e5f;        // > 0, position units/s that conditions read as 10000
+    float acceleration_ref = 1e7f;    // > 0, position units/s² that inertia reads as 10000
+    float sensor_step = 20000.0f / 4096.0f;  // > 0, position units per sensor count
+    // The mechanism's own viscous damping b, as force units per (position unit/s): the
+    // physical damping times half_travel / max_force. The passivity bound of walls uses it.
+    float device_damping = 0.0f;      // >= 0
+    // Time-domain passivity observer and controller on walls and barriers (§3.7): lets
+    // walls stiffer than the naive bound 2(b - B)/T stay stable. On by default.
+    bool passivity_control = true;
+    // The stiffness of a wall or barrier of hardness 10000 (§3.7, §3.8), in force units per
+    // position unit (a spring coefficient of 10000 is 1). > 0 and finite. A hardness h
+    // renders h/10000 of it. engine_config_for() sets it per profile to a multiple of the
+    // profile's naive passivity bound 2b/T; the default is the joystick's (docs/stability.md).
+    float wall_stiffness = 56.18f;
 };
 
 // A handle to an effect slot. The generation makes a handle to a freed slot stale.
@@ -61,6 +78,10 @@ struct TickInput {
 struct TickOutput {
     float force[kMaxAxes] = {};         // normalized ±10000, physical sign, clamped
     float velocity[kMaxAxes] = {};      // the engine's velocity estimate, normalized units/s
+    float acceleration[kMaxAxes] = {};  // the engine's acceleration estimate, units/s²
+    // The position the device reports to the host: the sensed position, except where a
+    // wall with clipping on holds it at the wall surface while the handle penetrates (§3.7).
+    float reported_position[kMaxAxes] = {};
     int32_t playing_effects = 0;        // effects producing force this tick
     bool saturated = false;             // the sum was clamped on some axis this tick
 };

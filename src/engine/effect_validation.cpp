@@ -261,8 +261,20 @@ private:
 
 // --- conditions (§6.6.a, g, h, j) ---------------------------------------------------------
 
-[[nodiscard]] Error check_condition_block(const ConditionBlock& c, int i) noexcept {
+// A relative offset (SpringAtCurrentLocation, §8.2) is measured from where the handle is
+// when the effect starts: a position, so it means something only for springs.
+[[nodiscard]] Error check_condition_block(const ConditionBlock& c, int i, EffectType type) noexcept {
     auto at = [i](std::string_view f) { return Path("conditions").index(i).add(".").add(f); };
+    if (c.offset_mode != OffsetMode::absolute && c.offset_mode != OffsetMode::relative) {
+        return Error::invalid(at("offset_mode").view(), "the offset mode must be absolute or relative");
+    }
+    if (c.offset_mode == OffsetMode::relative && type != EffectType::spring &&
+        type != EffectType::angle_spring) {
+        return Error::invalid(at("offset_mode").view(),
+                              "a relative offset is a position (the handle's at the start), so "
+                              "only springs take it; damper, inertia and friction offsets are "
+                              "absolute");
+    }
     if (Error e = in_range(at("pos_coefficient"), c.pos_coefficient, range::kSignedLevel)) return e;
     if (Error e = in_range(at("neg_coefficient"), c.neg_coefficient, range::kSignedLevel)) return e;
     if (Error e = in_range(at("offset"), c.offset, range::kSignedLevel)) return e;
@@ -325,7 +337,7 @@ private:
                 return e;
             }
             for (int i = 0; i < p.axis_count; ++i) {
-                if (Error e = check_condition_block(p.conditions[i], i)) return e;
+                if (Error e = check_condition_block(p.conditions[i], i, p.type)) return e;
             }
             return {};
         case EffectType::angle_spring:
@@ -339,7 +351,7 @@ private:
                                       "the spring");
             }
             if (Error e = check_direction_form(p)) return e;
-            return check_condition_block(p.conditions[0], 0);
+            return check_condition_block(p.conditions[0], 0, p.type);
         case EffectType::texture:
             if (p.axis_count == 1) {
                 if (Error e = no_direction(p, "a texture on one axis lies along that axis and "

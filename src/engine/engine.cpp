@@ -13,9 +13,11 @@
 
 #include <cmath>
 
+#include "conditions/condition.hpp"
 #include "direction.hpp"
 #include "effect_clock.hpp"
 #include "feel/effect_validation.hpp"
+#include "motion_estimator.hpp"
 #include "sample_pool.hpp"
 #include "waves/wave.hpp"
 
@@ -30,22 +32,33 @@ struct Slot {
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;
+    bool began_playing = false;            // start_position is set
+    float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
+    detail::ConditionState condition{};    // conditions' memory between ticks
 };
 
 Error check_config(const EngineConfig& c) noexcept {
     if (!Range{1, kMaxAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kMaxAxes});
     if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
     if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
+    if (!(c.velocity_ref > 0) || !std::isfinite(c.velocity_ref))
+        return Error::invalid("velocity_ref", "must be a finite number > 0");
+    if (!(c.acceleration_ref > 0) || !std::isfinite(c.acceleration_ref))
+        return Error::invalid("acceleration_ref", "must be a finite number > 0");
+    if (!(c.sensor_step > 0) || !std::isfinite(c.sensor_step))
+        return Error::invalid("sensor_step", "must be a finite number > 0");
+    if (!(c.device_damping >= 0) || !std::isfinite(c.device_damping))
+        return Error::invalid("device_damping", "must be a finite number >= 0");
+    if (!(c.wall_stiffness > 0) || !std::isfinite(c.wall_stiffness))
+        return Error::invalid("wall_stiffness", "must be a finite number > 0");
     return {};
 }
 
 // Rendering arrives class by class; until a class lands the engine says so plainly.
 Error check_renderable(EffectType type) noexcept {
     switch (effect_class(type)) {
-        case EffectClass::wave: return {};
-        case EffectClass::condition:
-            return Error::of(ErrorCode::not_supported, "type",
-                             "Spatial Conditions are not yet rendered by this version of feel");
+        case EffectClass::wave:
+        case EffectClass::condition: return {};
         case EffectClass::dynamic:
             return Error::of(ErrorCode::not_supported, "type",
                              "Dynamic Sensations are not yet rendered by this version of feel");
@@ -63,7 +76,9 @@ struct Engine::Impl {
           config_error(check_config(c)),
           slot_count(config_error ? 0 : c.max_effects),
           slots(new Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
-          samples(config_error ? 0 : c.max_samples, slot_count) {}
+          samples(config_error ? 0 : c.max_samples, slot_count) {
+        motion.configure(c.sensor_step);
+    }
 
     Slot* find(EffectId id) noexcept {
         if (id.index >= slot_count) return nullptr;
@@ -77,9 +92,9 @@ struct Engine::Impl {
     std::unique_ptr<Slot[]> slots;
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;
+    detail::MotionEstimator motion;
     bool have_previous = false;
     int64_t previous_t_us = 0;
-    float previous_position[kMaxAxes] = {};
 };
 
 Engine::Engine(const EngineConfig& config) : impl_(std::make_unique<Impl>(config)) {}
@@ -117,6 +132,8 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.params = params;
     s.state = EffectState::stopped;
     s.start_t_us = 0;
+    s.began_playing = false;
+    s.condition = {};
     detail::direction_factors(params, s.direction);
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
@@ -134,6 +151,8 @@ Error Engine::start(EffectId id) noexcept {
     Slot* s = impl_->find(id);
     if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
     s->state = EffectState::pending;
+    s->began_playing = false;
+    s->condition = {};
     return {};
 }
 
@@ -168,14 +187,19 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     Impl& m = *impl_;
     const int axes = m.config_error ? 0 : m.config.axis_count;
 
-    // Velocity: a backward difference of the sensed positions. Spatial Conditions bring a
-    // proper estimator; waves do not need one.
-    const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
+    // The handle's motion as the conditions see it: sensed position, estimated velocity
+    // and acceleration. The reported position starts as the sensed one; clipping walls
+    // may hold it at their surface.
+    const double dt_s = m.have_previous ? static_cast<double>(in.t_us - m.previous_t_us) * 1e-6 : 0.0;
+    m.motion.update(in.t_us, in.position, axes);
+    float velocity[kMaxAxes] = {};
+    float acceleration[kMaxAxes] = {};
     for (int a = 0; a < kMaxAxes; ++a) {
-        out.velocity[a] = (a < axes && dt_us > 0)
-                              ? finite_or_zero((in.position[a] - m.previous_position[a]) * 1e6 / static_cast<double>(dt_us))
-                              : 0.0f;
-        m.previous_position[a] = in.position[a];
+        velocity[a] = a < axes ? finite_or_zero(m.motion.velocity(a)) : 0.0f;
+        acceleration[a] = a < axes ? finite_or_zero(m.motion.acceleration(a)) : 0.0f;
+        out.velocity[a] = velocity[a];
+        out.acceleration[a] = acceleration[a];
+        out.reported_position[a] = a < axes ? in.position[a] : 0.0f;
     }
     m.previous_t_us = in.t_us;
     m.have_previous = true;
@@ -198,12 +222,24 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
         s.state = EffectState::playing;
         ++playing;
+        if (!s.began_playing) {
+            for (int a = 0; a < kMaxAxes; ++a) s.start_position[a] = in.position[a];
+            s.began_playing = true;
+        }
 
         double force[kMaxAxes] = {};
-        const detail::WaveInput wave{&s.params, s.direction,
-                                     s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
-                                     clock.tau_us};
-        detail::render_wave(wave, force);
+        if (effect_class(s.params.type) == EffectClass::condition) {
+            const detail::ConditionContext condition{&s.params,     &m.config,     in.position,
+                                                     velocity,      acceleration,  s.start_position,
+                                                     s.direction,   dt_s,          clock.tau_us,
+                                                     &s.condition,  out.reported_position};
+            detail::render_condition(condition, force);
+        } else {
+            const detail::WaveInput wave{&s.params, s.direction,
+                                         s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
+                                         clock.tau_us};
+            detail::render_wave(wave, force);
+        }
         const double effect_gain = s.params.gain / static_cast<double>(kFullScale);
         for (int a = 0; a < axes; ++a) sum[a] += force[a] * effect_gain;
     }

@@ -109,6 +109,7 @@ constexpr FieldSpec kCondition[] = {
     field<ConditionAt, &ConditionBlock::pos_saturation>("pos_saturation", kOptional),
     field<ConditionAt, &ConditionBlock::neg_saturation>("neg_saturation", kOptional),
     field<ConditionAt, &ConditionBlock::deadband>("deadband", kOptional),
+    field<ConditionAt, &ConditionBlock::offset_mode>("offset_mode", kOptional, kOffsetModes),
 };
 
 constexpr FieldSpec kTexture[] = {

@@ -40,13 +40,14 @@ void write_csv(const Trace& trace, std::ostream& out) {
     append_columns(line, "", axes);
     append_columns(line, "v", axes);
     append_columns(line, "f", axes);
+    append_columns(line, "r", axes);
     line += '\n';
     out << line;
 
     for (const TraceRow& row : trace.rows) {
         line.clear();
         append(line, row.t_us);
-        for (const float* column : {row.position, row.velocity, row.force}) {
+        for (const float* column : {row.position, row.velocity, row.force, row.reported}) {
             for (int a = 0; a < axes; ++a) {
                 line += ',';
                 append(line, column[a]);

@@ -86,9 +86,8 @@ std::string effect_label(const format::Sensation& sensation, size_t index,
                              "): " + error.message());
 }
 
-EngineConfig engine_config_for(const format::Sensation& sensation, int32_t axis_count) {
-    EngineConfig config;
-    config.axis_count = axis_count;
+EngineConfig engine_config_for(const format::Sensation& sensation, const sim::DeviceProfile& profile) {
+    EngineConfig config = sim::engine_config_for(profile);
     size_t samples = 0;
     for (const format::EffectSpec& e : sensation.effects) samples += e.samples.size();
     constexpr size_t kMaxSlots = 65535;
@@ -130,7 +129,7 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     sim::SimDevice device(profile, options.grip,
                           parse_motion(options.motion, duration_s, profile.axis_count));
 
-    Engine engine(engine_config_for(sensation, profile.axis_count));
+    Engine engine(engine_config_for(sensation, profile));
     std::vector<EffectId> ids;
     ids.reserve(sensation.effects.size());
     for (size_t i = 0; i < sensation.effects.size(); ++i) {
@@ -163,6 +162,7 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
             row.position[a] = static_cast<float>(device.position(a));
             row.velocity[a] = static_cast<float>(device.velocity(a));
             row.force[a] = out.force[a];
+            row.reported[a] = out.reported_position[a];
         }
         const double dt_s = static_cast<double>(tick_time_us(n + 1, rate) - in.t_us) * 1e-6;
         device.step(out.force, dt_s);

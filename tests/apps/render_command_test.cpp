@@ -35,10 +35,10 @@ TEST_F(Render, WritesTheTraceAsCsvWithTheForceOfTheDefinition) {
     ASSERT_EQ(r.code, kExitOk) << r.err;
     const auto lines = lines_of(read(csv));
     ASSERT_EQ(lines.size(), 1u + 300u);
-    EXPECT_EQ(lines[0], "t_us,x,y,vx,vy,fx,fy");
+    EXPECT_EQ(lines[0], "t_us,x,y,vx,vy,fx,fy,rx,ry");
     for (size_t i = 1; i < lines.size(); ++i) {
         const auto cells = split(lines[i]);
-        ASSERT_EQ(cells.size(), 7u) << lines[i];
+        ASSERT_EQ(cells.size(), 9u) << lines[i];
         const long long t = std::stoll(cells[0]);
         EXPECT_EQ(t, static_cast<long long>(i - 1) * 1000);
         const double fx = std::strtod(cells[5].c_str(), nullptr);
@@ -71,13 +71,13 @@ TEST_F(Render, TheHeaderFollowsTheDevice) {
                        "0.05", "-o", wheel})
                   .code,
               kExitOk);
-    EXPECT_EQ(lines_of(read(wheel))[0], "t_us,x,vx,fx");
+    EXPECT_EQ(lines_of(read(wheel))[0], "t_us,x,vx,fx,rx");
     const std::string three = path("3axis.csv");
     ASSERT_EQ(run_cli({"render", file_, "--sensation", "hum", "--device", "3axis", "--duration",
                        "0.05", "-o", three})
                   .code,
               kExitOk);
-    EXPECT_EQ(lines_of(read(three))[0], "t_us,x,y,z,vx,vy,vz,fx,fy,fz");
+    EXPECT_EQ(lines_of(read(three))[0], "t_us,x,y,z,vx,vy,vz,fx,fy,fz,rx,ry,rz");
 }
 
 TEST_F(Render, DashWritesTheCsvToStdoutAndTheSummaryToStderr) {
@@ -86,7 +86,7 @@ TEST_F(Render, DashWritesTheCsvToStdoutAndTheSummaryToStderr) {
     ASSERT_EQ(r.code, kExitOk) << r.err;
     const auto lines = lines_of(r.out);
     ASSERT_EQ(lines.size(), 1u + 20u);
-    EXPECT_EQ(lines[0], "t_us,x,y,vx,vy,fx,fy");
+    EXPECT_EQ(lines[0], "t_us,x,y,vx,vy,fx,fy,rx,ry");
     EXPECT_EQ(split(lines.back())[0], "9500");
     EXPECT_NE(r.err.find("hum"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;

@@ -129,11 +129,12 @@ TEST_F(EngineMachinery, AnAxisTheDeviceLacksIsRefused) {
 }
 
 TEST_F(EngineMachinery, ClassesNotYetRenderedSaySoAndNameTheType) {
-    EffectParams spring;
-    spring.type = EffectType::spring;
-    spring.axis_count = 1;
-    spring.axes[0] = Axis::x;
-    const CreateResult r = engine_->create(spring);
+    EffectParams recoil;
+    recoil.type = EffectType::dynamic_recoil;
+    recoil.axis_count = 2;
+    recoil.axes[0] = Axis::x;
+    recoil.axes[1] = Axis::y;
+    const CreateResult r = engine_->create(recoil);
     EXPECT_EQ(r.error.code, ErrorCode::not_supported);
     EXPECT_STREQ(r.error.field, "type");
     EXPECT_NE(r.error.message().find("not yet"), std::string::npos);
@@ -159,16 +160,20 @@ TEST_F(EngineMachinery, InvalidParamsAreRefusedByTheSharedValidator) {
     EXPECT_EQ(r.error.allowed.max, 35999);
 }
 
-TEST_F(EngineMachinery, VelocityIsTheDifferenceOfSensedPositions) {
+TEST_F(EngineMachinery, AConstantSpeedRampReadsItsExactVelocity) {
+    // 10 units every 2 ms, unquantized: every window of the estimator sees a straight line,
+    // so from the second tick on the velocity is the ramp's slope and the acceleration 0.
     TickInput in;
     TickOutput out;
-    in.t_us = 0;
-    in.position[0] = 100;
-    engine_->tick(in, out);
-    in.t_us = 2000;
-    in.position[0] = 120;  // 20 units in 2 ms
-    engine_->tick(in, out);
-    EXPECT_NEAR(out.velocity[0], 10'000, 1e-3);
+    for (int k = 0; k < 80; ++k) {
+        in.t_us = 2000 * k;
+        in.position[0] = 100.0f + 10.0f * static_cast<float>(k);
+        engine_->tick(in, out);
+        if (k == 0) continue;
+        ASSERT_NEAR(out.velocity[0], 5'000, 1e-2) << "tick " << k;
+        ASSERT_NEAR(out.acceleration[0], 0, 1.0) << "tick " << k;
+        ASSERT_EQ(out.velocity[1], 0.0f) << "tick " << k;  // y holds still
+    }
 }
 
 }  // namespace

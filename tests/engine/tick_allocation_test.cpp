@@ -4,6 +4,7 @@
 
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -70,6 +71,55 @@ TEST(TickAllocation, ABusyWaveMixTicksWithoutAllocating) {
     counting = false;
     EXPECT_EQ(allocations.load(), 0);
     EXPECT_EQ(out.playing_effects, 64);
+}
+
+// Every Spatial Condition, with the handle moving through walls, barriers, textures and
+// friction so that every branch of their state machines runs.
+TEST(TickAllocation, EveryConditionTicksWithoutAllocating) {
+    Engine engine(EngineConfig{});
+    const EffectType types[] = {EffectType::spring,    EffectType::damper,       EffectType::inertia,
+                                EffectType::friction,  EffectType::angle_spring, EffectType::axis_barrier,
+                                EffectType::angle_barrier, EffectType::axis_wall, EffectType::angle_wall,
+                                EffectType::texture};
+    for (int copy = 0; copy < 6; ++copy) {
+        for (EffectType t : types) {
+            EffectParams p;
+            p.type = t;
+            p.duration_us = kInfiniteUs;
+            const bool one_axis = t == EffectType::axis_wall || t == EffectType::axis_barrier;
+            const bool polar = t == EffectType::angle_spring || t == EffectType::texture;
+            p.axis_count = one_axis ? 1 : 2;
+            p.axes[0] = Axis::x;
+            p.axes[1] = Axis::y;
+            if (polar) {
+                p.direction.kind = DirectionKind::polar;
+                p.direction.value[0] = 1500 * copy;
+            }
+            for (ConditionBlock& c : p.conditions) c = {3000, 2000, 100, 9000, 8000, 50, OffsetMode::absolute};
+            p.texture = {4000, 3000, 500, 5000};
+            p.wall = {8000, copy % 2 ? WallSense::positive : WallSense::negative, 1000 * copy - 2000,
+                      OffsetMode::absolute, 4500 * copy % 36000, 3000, 2000, copy % 2 == 0};
+            p.barrier = {6000, 7000, 400, 500 * copy - 1000, 3000 * copy % 36000, 2000, 1000};
+            if (one_axis) p.wall.angle = p.barrier.angle = 0;  // axis elements have no angle
+            const CreateResult r = engine.create(p);
+            ASSERT_TRUE(r.error.ok()) << effect_type_name(t) << ": " << r.error.message();
+            ASSERT_TRUE(engine.start(r.id).ok());
+        }
+    }
+    TickOutput out;
+    counting = true;
+    for (int n = 0; n < 20'000; ++n) {
+        TickInput in;
+        in.t_us = n * 1000;
+        // A slow circle of radius 6000 units with a fast wiggle on top.
+        const double t = n * 1e-3;
+        in.position[0] = static_cast<float>(6000 * std::cos(2 * 3.14159265 * 0.5 * t) + 300 * std::sin(60 * t));
+        in.position[1] = static_cast<float>(6000 * std::sin(2 * 3.14159265 * 0.5 * t));
+        engine.tick(in, out);
+    }
+    counting = false;
+    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_EQ(out.playing_effects, 60);
 }
 
 }  // namespace

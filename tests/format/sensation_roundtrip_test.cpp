@@ -1,5 +1,6 @@
 // Lossless writing: canonical text comes back byte for byte, any valid file comes back
 // as the same model, and the writer refuses models it could not read back.
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -118,6 +119,19 @@ TEST(SensationRoundTrip, PrimerExamplesAreCanonical) {
     ASSERT_FALSE(text.empty());
     const SensationFile f = load_sensation_file(primer_path());
     EXPECT_EQ(write_sensation_file(f), text);
+}
+
+// Every example file in examples/ is valid and in canonical form.
+TEST(SensationRoundTrip, EveryExampleFileIsCanonical) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(FEEL_SOURCE_DIR) + "/examples")) {
+        if (entry.path().extension() != ".json") continue;
+        ++files;
+        const std::string text = read_text(entry.path().string());
+        const SensationFile f = load_sensation_file(entry.path());
+        EXPECT_EQ(write_sensation_file(f), text) << entry.path();
+    }
+    EXPECT_GE(files, 1);
 }
 
 TEST(SensationRoundTrip, PrimerExamplesFollowThePrimer) {

@@ -52,7 +52,7 @@ TEST_P(CsvPerDevice, HeaderNamesEachAxisAndEveryRowHasOneCellPerColumn) {
     ASSERT_EQ(lines.size(), 1u + 200u);
     EXPECT_EQ(lines[0], c.header);
     const size_t columns = split(lines[0], ',').size();
-    EXPECT_EQ(columns, 1u + 3u * static_cast<size_t>(o.profile->axis_count));
+    EXPECT_EQ(columns, 1u + 4u * static_cast<size_t>(o.profile->axis_count));
     for (size_t i = 1; i < lines.size(); ++i) {
         ASSERT_EQ(split(lines[i], ',').size(), columns) << "line " << i << ": " << lines[i];
     }
@@ -63,9 +63,9 @@ TEST_P(CsvPerDevice, HeaderNamesEachAxisAndEveryRowHasOneCellPerColumn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Devices, CsvPerDevice,
-                         ::testing::Values(DeviceCase{"joystick", "t_us,x,y,vx,vy,fx,fy"},
-                                           DeviceCase{"wheel", "t_us,x,vx,fx"},
-                                           DeviceCase{"3axis", "t_us,x,y,z,vx,vy,vz,fx,fy,fz"}),
+                         ::testing::Values(DeviceCase{"joystick", "t_us,x,y,vx,vy,fx,fy,rx,ry"},
+                                           DeviceCase{"wheel", "t_us,x,vx,fx,rx"},
+                                           DeviceCase{"3axis", "t_us,x,y,z,vx,vy,vz,fx,fy,fz,rx,ry,rz"}),
                          [](const auto& param_info) {
                              return std::string(param_info.param.device) == "3axis"
                                         ? std::string("three_axis")
@@ -86,6 +86,8 @@ TEST(Csv, FloatsRoundTripExactly) {
         row.velocity[1] = values[i] / 7;
         row.force[0] = values[(i + 1) % std::size(values)];
         row.force[1] = values[(i + 2) % std::size(values)];
+        row.reported[0] = values[(i + 3) % std::size(values)];
+        row.reported[1] = -values[(i + 4) % std::size(values)];
         trace.rows.push_back(row);
     }
     std::ostringstream out;
@@ -94,12 +96,13 @@ TEST(Csv, FloatsRoundTripExactly) {
     ASSERT_EQ(lines.size(), 1 + trace.rows.size());
     for (size_t i = 0; i < trace.rows.size(); ++i) {
         const std::vector<std::string> cells = split(lines[i + 1], ',');
-        ASSERT_EQ(cells.size(), 7u);
+        ASSERT_EQ(cells.size(), 9u);
         const TraceRow& row = trace.rows[i];
         EXPECT_EQ(std::stoll(cells[0]), row.t_us);
         const float expected[] = {row.position[0], row.position[1], row.velocity[0],
-                                  row.velocity[1], row.force[0],    row.force[1]};
-        for (size_t c = 0; c < 6; ++c) {
+                                  row.velocity[1], row.force[0],    row.force[1],
+                                  row.reported[0], row.reported[1]};
+        for (size_t c = 0; c < 8; ++c) {
             EXPECT_EQ(std::strtof(cells[c + 1].c_str(), nullptr), expected[c])
                 << "row " << i << " column " << c + 1 << ": " << cells[c + 1];
         }
@@ -111,7 +114,7 @@ TEST(Csv, AnEmptyTraceIsJustTheHeader) {
     trace.axis_count = 1;
     std::ostringstream out;
     write_csv(trace, out);
-    EXPECT_EQ(out.str(), "t_us,x,vx,fx\n");
+    EXPECT_EQ(out.str(), "t_us,x,vx,fx,rx\n");
 }
 
 }  // namespace

@@ -125,3 +125,28 @@ TEST(DeviceProfiles, CheckNamesTheBadFieldAndItsRange) {
 
 }  // namespace
 }  // namespace feel::sim
+
+namespace feel::sim {
+namespace {
+
+// The engine's normalized view of a device follows from the profile's physical facts:
+// F_norm = F·10000/max_force and x_norm = x·10000/half_travel.
+TEST(EngineConfigFor, FollowsTheProfilesPhysicalFacts) {
+    for (const DeviceProfile& p : device_profiles()) {
+        const EngineConfig c = engine_config_for(p);
+        const AxisModel& a = p.axes[0];
+        EXPECT_EQ(c.axis_count, p.axis_count) << p.name;
+        EXPECT_FLOAT_EQ(c.velocity_ref, static_cast<float>(p.velocity_ref)) << p.name;
+        EXPECT_FLOAT_EQ(c.sensor_step, static_cast<float>(20000.0 / a.sensor_counts)) << p.name;
+        // A damping b resists velocity v with b·v newtons; in normalized units that force is
+        // b·v·10000/max_force at a normalized velocity of v·10000/half_travel.
+        const double v_phys = 0.1;
+        const double force_norm = a.viscous * v_phys * 10000.0 / a.max_force;
+        const double v_norm = v_phys * 10000.0 / a.half_travel;
+        EXPECT_NEAR(c.device_damping, force_norm / v_norm, 1e-6 * force_norm / v_norm) << p.name;  // float
+        EXPECT_GT(c.acceleration_ref, 0.0f);
+    }
+}
+
+}  // namespace
+}  // namespace feel::sim

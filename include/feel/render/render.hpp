@@ -38,6 +38,7 @@ struct TraceRow {
     float position[kMaxAxes] = {};  // true handle position, normalized
     float velocity[kMaxAxes] = {};  // true handle velocity, normalized units/s
     float force[kMaxAxes] = {};     // force the engine commands, normalized, physical sign
+    float reported[kMaxAxes] = {};  // position the device reports (clipped at clipping walls)
     bool saturated = false;         // the engine clamped the summed force on some axis
 };
 

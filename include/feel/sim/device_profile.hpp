@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "feel/axis.hpp"
+#include "feel/engine.hpp"
 
 namespace feel::sim {
 
@@ -56,6 +57,11 @@ struct DeviceProfile {
 [[nodiscard]] std::span<const DeviceProfile> device_profiles() noexcept;
 // nullptr when no built-in profile has this name.
 [[nodiscard]] const DeviceProfile* find_device_profile(std::string_view name) noexcept;
+
+// What the engine needs to know of a device, in normalized units: its axes, velocity and
+// acceleration scales, sensor resolution and mechanical damping (from axis 0, the profiles'
+// axes share them). See docs/conventions.md.
+[[nodiscard]] EngineConfig engine_config_for(const DeviceProfile& profile) noexcept;
 
 // Empty when the profile is usable by SimDevice; otherwise a sentence naming the first bad
 // field, its value and the allowed range, e.g.

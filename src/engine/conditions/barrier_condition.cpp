@@ -1,0 +1,113 @@
+// Barriers (§3.8, §6.6.g): axis_barrier and angle_barrier, a two-sided penetrable surface.
+//
+// Geometry (contact_surface.hpp): s = position·u; the barrier is a slab of the given
+// thickness t centered on s = offset (§8.2: "location of center of barrier"), with faces
+// at offset − t/2 and offset + t/2. ContactState remembers two things:
+//
+//     side      which side of the center the handle is on, −1 or +1;
+//     crossing  while the handle is inside the slab, the direction it entered in: +1 if
+//               it came in from the negative side moving in +u, −1 from the positive side.
+//
+// Hardness follows the crossing: "a positive hardness and a negative hardness which define
+// the feel of the barrier depending upon which direction you are crossing it" (§3.8).
+// A crossing in +u feels pos_hardness from the moment the handle enters until it leaves
+// the slab, on either side; a crossing in −u feels neg_hardness.
+//
+// Force, with K the crossing's hardness/10000 · EngineConfig::wall_stiffness, saturated
+// at full scale:
+//
+//     side −1: F = −clamp(K·(s − (offset − t/2)))   pushes back out of the negative face
+//     side +1: F = +clamp(K·((offset + t/2) − s))   pushes out of the positive face
+//
+// Pop-through (Figure 3-13): when the handle has pushed in past half the thickness, i.e.
+// past the center, its side flips. The force, K·t/2 against the motion just before, is
+// K·t/2 along it just after: it flips direction and pushes the handle on through and out
+// of the far face. Coming back from the other side works the same way. The side starts as
+// the side of the center the handle is on at the effect's first tick. Within one crossing
+// the force is the slope of a tent-shaped potential of height K·t²/8, and K changes only
+// outside the slab where the potential is zero, so the barrier is conservative: a pop
+// returns exactly what pushing in stored, whatever the two hardnesses.
+//
+// Passivity: the port observer and controller (passivity.hpp) watch the barrier like a
+// wall, with the tent as the ideal element's energy; over a tick in which the handle
+// popped through, the ideal work is split at the center, so the controller does not
+// mistake the designed pop for generated energy.
+//
+// Surface friction and texture: pressure mode along the barrier's surface while the
+// handle presses on a face (contact_surface.hpp).
+#include <cmath>
+
+#include "conditions/condition.hpp"
+#include "conditions/contact_surface.hpp"
+#include "conditions/passivity.hpp"
+
+namespace feel::detail {
+namespace {
+
+// The face that holds a handle on one side: its stiffness (the crossing's), the direction
+// of travel into it along u, and its coordinate.
+struct Face {
+    double k = 0;        // force units per position unit
+    double into = 1;     // +1: the negative side's face, entered moving in +u; −1 otherwise
+    double surface = 0;  // the face's coordinate along u
+};
+
+Face face_of(const BarrierBlock& barrier, const EngineConfig& config, int side, int crossing) noexcept {
+    const double half = 0.5 * barrier.thickness;
+    const double k = element_stiffness(config, crossing > 0 ? barrier.pos_hardness : barrier.neg_hardness);
+    if (side < 0) return {k, 1.0, barrier.offset - half};
+    return {k, -1.0, barrier.offset + half};
+}
+
+double face_depth(const Face& f, double s) noexcept { return f.into * (s - f.surface); }
+double face_energy(const Face& f, double s) noexcept { return saturated_spring_energy(f.k, face_depth(f, s)); }
+
+}  // namespace
+
+void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+    const BarrierBlock& barrier = c.params->barrier;
+    const ContactFrame frame = element_contact_frame(c, barrier.angle);
+    const double s = dot(frame.u, c.position);
+    const double center = barrier.offset;
+
+    ContactState& state = c.state->contact;
+    if (state.side == 0) state.side = s >= center ? 1 : -1;
+    const int previous_side = state.side;
+    const int previous_crossing = state.crossing != 0 ? state.crossing : -state.side;
+    const bool inside = std::fabs(s - center) < 0.5 * barrier.thickness;
+    if (!inside) state.crossing = 0;
+    else if (state.crossing == 0) state.crossing = static_cast<int8_t>(-state.side);  // entered from this side
+    if (state.side < 0 && s > center) state.side = 1;        // pushed past half the thickness
+    else if (state.side > 0 && s < center) state.side = -1;  // from the other side
+    const int crossing = state.crossing != 0 ? state.crossing : -state.side;
+
+    // The ideal energy change since the last tick: the tent of the crossing, split at the
+    // center if the handle popped through. Outside the slab the tent is zero whatever its
+    // hardness, so a new crossing's hardness changes nothing that was stored.
+    const Face face = face_of(barrier, *c.config, state.side, crossing);
+    const Face before = face_of(barrier, *c.config, previous_side, previous_crossing);
+    double ideal_energy_change = 0;
+    if (state.side == previous_side) {
+        ideal_energy_change = face_energy(face, s) - face_energy(before, state.coordinate);
+    } else {
+        const Face before_at_center = face_of(barrier, *c.config, previous_side, crossing);
+        ideal_energy_change = (face_energy(before_at_center, center) - face_energy(before, state.coordinate)) +
+                              (face_energy(face, s) - face_energy(face, center));
+    }
+
+    PortTick tick;
+    tick.coordinate = s;
+    tick.ideal_energy_change = ideal_energy_change;
+    tick.force = face.into * saturated_spring_force(face.k, face_depth(face, s));
+    tick.stiffness = std::fabs(face.k);
+    tick.velocity = dot(frame.u, c.velocity);
+    tick.dt_s = c.dt_s;
+    tick.resolution = c.config->sensor_step;
+    const double normal_force = passive_port_force(state, tick, c.config->passivity_control);
+    for (int a = 0; a < kMaxAxes; ++a) force[a] += normal_force * frame.u[a];
+
+    add_rubbing_force(frame, c, std::fabs(tick.force), barrier.surface_friction, barrier.surface_texture,
+                      force);
+}
+
+}  // namespace feel::detail

@@ -1,0 +1,103 @@
+// The friction model of friction and texture conditions: a Dahl bristle whose presliding
+// stiffness is set by what the device can render passively, and the bump of a texture.
+//
+// Why a bristle (Dahl 1968) and not a function of velocity. Friction has to do three
+// things at once here: resist sliding with a constant force, hold the handle still against
+// a push smaller than that force, and turn around without a sharp jerk. A function of
+// velocity, sign(v) smoothed as v/v_s near zero (the "smoothed Coulomb" most devices of
+// the primer's time used, §3.5), can do the third but not the second (under a steady push
+// it creeps at v_s·push/f), and near rest it is a damper of slope f/v_s acting on a
+// velocity that must be estimated from quantized positions: on the joystick profile at
+// 1 kHz a friction of 10000 chatters with v_s = 1% and 5% of velocity_ref, and at 10%
+// lets a push creep 18 mm a second (measured with the simulated device;
+// docs/conditions.md). Karnopp's model holds the handle with
+// exactly the other forces on it, which a haptic device cannot know: the hand's force is
+// not measured. A bristle needs no velocity at all. It is a spring between the handle and
+// an anchor that slides: pushed less than f, the handle deflects the spring and stays;
+// pushed more, the anchor slips and the force is f. Dahl's law gives the spring a smooth
+// knee instead of a corner, per unit of handle travel dx:
+//
+//     dz = dx·(1 - z·sign(dx)),   z = deflection / presliding distance ∈ [-1, 1]
+//     F  = -f·z
+//
+// (exact for a monotone step: z' = ±1 + (z ∓ 1)·e^(-|dx|/Z), so no step size can overshoot).
+// Turning around, the force passes through zero along a spring of stiffness f/Z: no jerk.
+// At rest the position does not change and neither does the force: no chatter. A handle
+// pushed by less than f holds still, deflected by push/(f/Z).
+//
+// Presliding stiffness. The bristle is a spring the device renders from sampled positions,
+// so it obeys the passivity bound of any virtual spring, K <= 2b/T (Colgate & Schenkel;
+// b the device's own damping EngineConfig::device_damping, T the tick). Stiffer, and the
+// handle rings or chatters around its stuck position. Softer, and turning around takes
+// long. So the stiffness is the bound itself, with two guards:
+//   - at least f / kMaxPresliding: the force builds up within 5% of the travel (5 mm on
+//     the joystick) even on a device that reports no damping;
+//   - at most kMaxForcePerCount / (2·sensor_step): one sensor count never moves the force
+//     by more than 2% of full scale (Dahl's slope is at most 2·f/Z, turning around from
+//     full deflection), or the handle could buzz between two counts.
+// On the joystick at 1 kHz that is 11.2 force units per position unit, 1 N/mm at the
+// grip (f = 10000 builds up over 890 units, 4.5 mm).
+//
+// Microdamping. A bristle is a spring, and a handle stuck on it with little damping of its
+// own (the wheel: ζ ≈ 0.01) rings on it for seconds after a push. LuGre (Canudas de Wit et
+// al. 1995) adds a damping σ1 on the bristle's rate ż; with σ1 faded out as exp(-(v/v_d)²)
+// the model stays passive (Olsson et al. 1998) and the damping cannot jerk a fast reversal.
+// Here σ1 = σ0·kBristleDampingTime and v_d = kBristleDampingFade·velocity_ref:
+//
+//     F_damping = -σ0·τ·ż·exp(-(v/v_d)²),   ż = v·(1 - z·sign(v))   (position units/s)
+//
+// ż vanishes while sliding (z = ±1 in the direction of motion), so this adds no viscous
+// drag to the sliding force. τ = 2 ms damps the presliding ringing of all three device
+// profiles at 1 kHz and 10 kHz; 10 ms starts to chatter (docs/conditions.md has the
+// measurements).
+#pragma once
+
+#include <cstdint>
+
+#include "feel/engine.hpp"
+
+namespace feel::detail {
+
+// The presliding distance is at most this, position units (5% of the travel).
+inline constexpr double kMaxPresliding = 1000.0;
+// One sensor count moves a bristle's force by at most this, force units (2% of full scale).
+inline constexpr double kMaxForcePerCount = 200.0;
+// Microdamping: σ1 = σ0 · this, s.
+inline constexpr double kBristleDampingTime = 0.002;
+// Microdamping fades out above this fraction of EngineConfig::velocity_ref.
+inline constexpr double kBristleDampingFade = 0.1;
+
+// A Dahl bristle on one line of motion. Zero-initialized it is relaxed and not yet primed;
+// the first advance() only records where the handle is.
+struct Bristle {
+    float deflection = 0.0f;  // z, -1..1: +1 = fully dragged by motion toward +, force -f
+    float anchor = 0.0f;      // position at the last advance, position units
+    bool primed = false;      // anchor is valid
+};
+
+// The presliding distance Z, position units, for a friction of magnitude f (force units,
+// >= 0) on this device at this tick period (s). 0 for f = 0. dt_s <= 0 uses the guards
+// only (no tick to judge passivity by).
+[[nodiscard]] double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept;
+
+// Moves the bristle with the handle now at `position` (along the bristle's line, position
+// units), less `slip` (how far the surface itself moved since the last tick, for a
+// friction with a velocity offset). Returns the new deflection z.
+float advance(Bristle& b, double position, double slip, double presliding) noexcept;
+
+// The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force
+// units per position unit) at deflection z, the handle moving at `velocity` (units/s)
+// relative to the surface.
+[[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
+
+// The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
+// multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine
+//
+//     bump(r) = (1 + cos(2π·r/width)) / 2   for |r| <= width/2,   0 beyond,
+//
+// r the distance to the nearest center. 1 on top, falling smoothly (zero slope at both
+// ends) to 0 at the bump's edges, so the force has no step entering or leaving a bump;
+// width = spacing (density 10000) makes the bumps touch: a sinusoidal washboard.
+[[nodiscard]] double texture_bump(double s, double spacing, double width) noexcept;
+
+}  // namespace feel::detail

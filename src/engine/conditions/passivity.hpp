@@ -1,0 +1,94 @@
+// Time-domain passivity for walls and barriers: an observer that keeps the energy ledger of
+// the element's port and a controller that dissipates what the sampling has created.
+//
+// Why walls go unstable. A wall is a stiff spring F = −K·p evaluated once per tick and
+// held until the next (zero-order hold). While the handle moves, the held force always
+// lags the ideal one: going in it pushes back too little, coming out too much. Each tick
+// the sampled spring therefore puts out K·Δp²/2 more energy than a real spring would; the
+// device's own damping b removes b·v²·T. Colgate and Schenkel showed the sampled wall is
+// passive only while K ≤ 2(b − B)/T (B: any virtual damping, T: the tick). Above that a
+// handle resting against the wall rings in a limit cycle. docs/stability.md tabulates the
+// bound of every device profile.
+//
+// The observer (Hannaford & Ryu, "Time-domain passivity control of haptic interfaces",
+// 2002, with the reference energy of Ryu, Preusche, Hannaford & Hirzinger, "Time domain
+// passivity control with reference energy following", 2005). The port is the handle's
+// coordinate s along the element's direction u and the force F along u. Over the tick
+// from n−1 to n the element received −F(n−1)·(s(n) − s(n−1)) from the handle; its ideal
+// continuous-time counterpart (a real spring, saturated like the motor) would have changed
+// its stored energy by U(s(n)) − U(s(n−1)). The difference is energy the sampled element
+// made out of nothing:
+//
+//     E(n) = max(0, E(n−1) + [U(s(n)) − U(s(n−1))] + F(n−1)·(s(n) − s(n−1)))
+//
+// Using the ideal element's stored energy as the reference (instead of Hannaford & Ryu's
+// plain "energy in ≥ 0") matters for a wall: a handle pressed into a spring holds a large
+// stored energy, and the plain observer would let the ringing grow until that whole
+// reservoir is spent before it acts. The reference ledger sees the K·Δp²/2 of every tick.
+// The ledger keeps no credit (E ≥ 0): energy dissipated once never licenses a later burst.
+// Positions are the sensor's, so the ledger is exact for the trajectory the sensor saw.
+//
+// The sensor's resolution. A handle dithering across one count boundary reads as a whole
+// count of motion each time, so the ledger would book K·q²/2 (q: one count) per flicker
+// for motion that hardly happened, and spend it later as a dead wall. Each tick therefore
+// forgives one count's worth, ½·K·q·min(|Δs|, q): a one-count flicker books nothing, a
+// move of n counts keeps (n² − 1)/n² of its K·Δs²/2. What this leaves unwatched is motion
+// of about a count per tick or less: there the sampled wall may create up to ½·K·q² a
+// tick unseen, which the mechanism's Coulomb friction must absorb (docs/stability.md
+// gives each profile's margin). For moves of several counts the booking lies between the
+// least the true motion could have created and its average; erring high only makes the
+// controller dissipate a little more than needed, which is safe.
+//
+// The controller: a variable damper, Hannaford & Ryu's α = E/(v²·T), that spends the
+// ledger over the next tick,
+//
+//     F_out = F − α·v,   α = min(E / (|v|·max(|v|·T, q)),  k·T)
+//
+//   * max(|v|·T, q): at speeds under one count per tick, over the next count the sensor
+//     can resolve instead (a slow handle crosses a count in several ticks; spending E
+//     every tick would overspend it);
+//   * the ceiling k·T: a damper that removes k·v²·T² per tick, twice what the sampled
+//     spring creates, and changes the force by at most k·|v|·T, one tick of motion. An
+//     unbounded α (a force E/(|v|T) at a near-zero speed estimate) slams the force to
+//     zero and back; the handle reverses inside the tick, the ledger charges the cut to
+//     the element, and the controller itself chatters. Bounded, it is smooth;
+//   * F_out keeps the sign of F (a wall pushes, it never pulls) and stays within ±10000.
+//
+// While the handle goes in the damper stiffens the wall a little, while it comes out it
+// softens it: within what the sensor can resolve, the wall returns no more energy than a
+// continuous spring would, and the device's own damping and friction make contact settle. What the damper cannot spend
+// in one tick stays in the ledger.
+//
+// Real-time safe: a few multiplications, no allocation, state only in ContactState.
+#pragma once
+
+#include "conditions/contact_state.hpp"
+
+namespace feel::detail {
+
+// One tick of a contact port.
+struct PortTick {
+    double coordinate = 0;           // s(n): the sensed position along u, position units
+    double ideal_energy_change = 0;  // U(s(n)) − U(s(n−1)) of the ideal element (ignored on the first tick)
+    double force = 0;                // the ideal element's force along u this tick, ±10000
+    double stiffness = 0;            // the ideal element's k (|dF/ds| in contact), force units per position unit
+    double velocity = 0;             // estimated ds/dt, position units/s
+    double dt_s = 0;                 // the tick period T, s (0 on the engine's first tick)
+    double resolution = 0;           // the sensor's step along u, position units, > 0
+};
+
+// Updates the ledger with this tick's reading and returns the force along u to command.
+// With control off the observer still runs (the ledger shows what a naive element
+// generates) and the force is returned unchanged.
+double passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept;
+
+// The energy stored in a spring of stiffness k (force units per position unit, any sign)
+// compressed by depth (position units; none when depth <= 0), whose force saturates at the
+// motor's full scale, 10000: the potential of F = −clamp(k·depth, ±10000).
+double saturated_spring_energy(double k, double depth) noexcept;
+
+// The force of that spring along its depth direction: −clamp(k·depth, ±10000), 0 when
+// depth <= 0.
+double saturated_spring_force(double k, double depth) noexcept;
+
+}  // namespace feel::detail

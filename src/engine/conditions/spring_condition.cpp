@@ -1,0 +1,43 @@
+// Spring (§3.2) and Angle Spring: Hooke's law with the Condition Struct's response curve.
+//
+//   spring, one block per axis i of the effect, on device axis a:
+//       F_a = response(block_i, x_a - center_i)
+//   angle_spring, one block along the unit vector u of its polar angle (u = (sin a, cos a)):
+//       s = x·u,  F = response(block, s - center)·u
+//
+// center = offset (absolute), or offset measured from where the handle was when the
+// effect began playing (relative). Relative is the primer's SpringAtCurrentLocation
+// (§8.2): a spring that holds the handle where it is. CenterSpring is an absolute spring on
+// x and y with offset 0. The positive side of an angle spring is the side its compass
+// angle points to: at 9000 the + side is +x.
+#include "conditions/condition_math.hpp"
+
+namespace feel::detail {
+
+namespace {
+
+double spring_center(const ConditionBlock& b, double start) noexcept {
+    return b.offset_mode == OffsetMode::relative ? start + b.offset : static_cast<double>(b.offset);
+}
+
+}  // namespace
+
+void spring_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+    const EffectParams& p = *c.params;
+    if (p.type == EffectType::angle_spring) {
+        double u[kMaxAxes];
+        condition_line(c, u);
+        const ConditionBlock& b = p.conditions[0];
+        const double s = along(u, c.position);
+        const double f = condition_response(b, s - spring_center(b, along(u, c.start_position)));
+        for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
+        return;
+    }
+    for (int i = 0; i < p.axis_count; ++i) {
+        const int a = device_axis(c, i);
+        const ConditionBlock& b = p.conditions[i];
+        force[a] += condition_response(b, c.position[a] - spring_center(b, c.start_position[a]));
+    }
+}
+
+}  // namespace feel::detail

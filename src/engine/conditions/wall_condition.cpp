@@ -1,0 +1,95 @@
+// Walls (§3.7, §6.6.h): axis_wall and angle_wall, a one-sided hard stop.
+//
+// Geometry (contact_surface.hpp): the wall is the surface s = s_w across the direction u,
+// s = position·u, with
+//
+//     s_w = offset                       offset_mode absolute (from the center of travel)
+//     s_w = start_position·u + offset    offset_mode relative (from where the handle was
+//                                        when the effect began playing, §3.7 Offset-Flag)
+//
+// Sense, as §3.7 defines it: "a wall with positive sense will resist crossing of the wall
+// when moving in a positive direction". So
+//
+//     positive: the free side is s < s_w, the solid is s > s_w; depth p = s − s_w
+//     negative: the free side is s > s_w, the solid is s < s_w; depth p = s_w − s
+//
+// (§8.2's "wall on left or right of location": positive puts the wall on the positive
+// side of its location.) For an axis_wall on x with positive sense and offset 3000, the
+// handle moves freely left of x = 3000 and meets the wall moving right.
+//
+// Force: a spring on the depth, saturated at the motor's full scale,
+//
+//     F = −clamp(K·p, ±10000)   along the direction into the solid, while p > 0
+//     K = hardness/10000 · EngineConfig::wall_stiffness
+//
+// so positive hardness pushes the handle out; a negative hardness pulls it in (the
+// primer's sign convention for every coefficient). wall_stiffness maps each device
+// profile's hardness to a physical stiffness; docs/stability.md gives the numbers and the
+// passivity bound they are measured against.
+//
+// Passivity: the force passes through the port's observer and controller
+// (passivity.hpp) when EngineConfig::passivity_control is on, so a wall stiffer than the
+// sampled-data bound K ≤ 2b/T still settles.
+//
+// Surface friction and texture act in pressure mode, scaled by the wall's normal force
+// (contact_surface.hpp), along the surface's tangent directions.
+//
+// Clipping (§3.7): while the reported position lies inside the solid it is moved back onto
+// the surface along u (for the horizontal and vertical walls, axis walls and angle walls at
+// 0/9000/18000/27000, that holds the one axis at the surface and leaves the others alone;
+// at other angles it is the projection onto the wall line). The reported position starts
+// each tick as the sensed one, so clipping walls act in turn and two walls meeting at a
+// right angle clip the handle into their corner.
+#include <cmath>
+
+#include "conditions/condition.hpp"
+#include "conditions/contact_surface.hpp"
+#include "conditions/passivity.hpp"
+
+namespace feel::detail {
+
+void wall_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+    const WallBlock& wall = c.params->wall;
+    const ContactFrame frame = element_contact_frame(c, wall.angle);
+    const double s = dot(frame.u, c.position);
+    const double surface =
+        wall.offset + (wall.offset_mode == OffsetMode::relative ? dot(frame.u, c.start_position) : 0.0);
+    const double into = wall.sense == WallSense::positive ? 1.0 : -1.0;  // along u, into the solid
+    const double k = element_stiffness(*c.config, wall.hardness);
+
+    ContactState& state = c.state->contact;
+    const double depth = into * (s - surface);
+    const double previous_depth = into * (state.coordinate - surface);
+
+    PortTick tick;
+    tick.coordinate = s;
+    tick.ideal_energy_change = saturated_spring_energy(k, depth) - saturated_spring_energy(k, previous_depth);
+    tick.force = into * saturated_spring_force(k, depth);
+    tick.stiffness = std::fabs(k);
+    tick.velocity = dot(frame.u, c.velocity);
+    tick.dt_s = c.dt_s;
+    tick.resolution = c.config->sensor_step;
+    const double normal_force = passive_port_force(state, tick, c.config->passivity_control);
+    for (int a = 0; a < kMaxAxes; ++a) force[a] += normal_force * frame.u[a];
+
+    add_rubbing_force(frame, c, std::fabs(tick.force), wall.surface_friction, wall.surface_texture, force);
+
+    if (wall.clipping) {
+        const double reported_depth = into * (dot(frame.u, c.reported_position) - surface);
+        if (reported_depth > 0) {
+            for (int a = 0; a < kMaxAxes; ++a) {
+                if (frame.u[a] == 0) continue;
+                const double on_surface = c.reported_position[a] - into * reported_depth * frame.u[a];
+                // Round to a float on the free side, so the report never lies inside.
+                float clipped = static_cast<float>(on_surface);
+                const double free_direction = -into * frame.u[a];
+                if ((clipped - on_surface) * free_direction < 0) {
+                    clipped = std::nextafter(clipped, free_direction > 0 ? HUGE_VALF : -HUGE_VALF);
+                }
+                c.reported_position[a] = clipped;
+            }
+        }
+    }
+}
+
+}  // namespace feel::detail

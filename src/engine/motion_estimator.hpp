@@ -1,0 +1,73 @@
+// Velocity and acceleration from a quantized position sensor.
+//
+// Real devices see only encoder counts. A raw difference of two quantized positions is
+// either zero or a whole count per tick: at slow speeds it reads zero most ticks and then
+// a spike, which makes a damper buzz and collapse. The estimator exists so that Spatial
+// Conditions get a velocity and an acceleration they can use.
+//
+// Method: first-order adaptive windowing (FOAW, Janabi-Sharifi, Hayward & Chen 2000), in
+// its best-fit form, and the same idea one order up for the acceleration. Each tick, for
+// growing windows of recent samples, fit a line (a parabola for the acceleration) by least
+// squares and keep the longest window whose samples all lie within one sensor count of the
+// fit. Slow motion gets a long window (a count every few ticks averages out), fast or
+// changing motion a short one (little lag). motion_estimator.cpp has the details and
+// docs/conditions.md the reasoning and the measured accuracy.
+//
+// Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
+// function of the samples fed in.
+#pragma once
+
+#include <cstdint>
+
+#include "feel/axis.hpp"
+
+namespace feel::detail {
+
+class MotionEstimator {
+public:
+    // Samples kept per axis; the longest window is kHistory - 1 intervals.
+    static constexpr int kHistory = 128;
+    // No window spans more than this, µs, whatever the loop rate: bounds the lag at low
+    // rates (100 Hz would otherwise average over 1.27 s).
+    static constexpr int64_t kMaxWindowUs = 100'000;
+    // Samples older than the newest are kept at least this far apart, µs, so that the
+    // history spans kMaxWindowUs whatever the loop rate (faster loops keep every few ticks;
+    // the newest sample is always the latest tick).
+    static constexpr int64_t kMinSpacingUs = kMaxWindowUs / (kHistory - 1);
+    // The acceleration is fitted over at least this many sample intervals (8 ms at 1 kHz).
+    static constexpr int kMinAccelerationWindow = 8;
+
+    // sensor_step: the position change of one sensor count, normalized units (> 0). The
+    // fit tolerance is one count: a sample one count off a line is quantization, two
+    // counts off is motion.
+    void configure(float sensor_step) noexcept;
+    // Forgets the history; velocity and acceleration read 0 until new samples arrive.
+    void reset() noexcept;
+
+    // Feeds the sensed positions of one tick at t_us. Times must not decrease; a sample at
+    // the same time as the newest one, or closer than kMinSpacingUs to the one before it,
+    // replaces the newest; an earlier time restarts the history.
+    void update(int64_t t_us, const float position[kMaxAxes], int axis_count) noexcept;
+
+    [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }          // units/s
+    [[nodiscard]] float acceleration(int axis) const noexcept { return acceleration_[axis]; }  // units/s²
+    // The windows used at the last update, in sample intervals (0: no estimate yet).
+    [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
+    [[nodiscard]] int acceleration_window(int axis) const noexcept { return acceleration_window_[axis]; }
+
+private:
+    // Fits the windows of one axis; tau[i] is the age of sample i (s, <= 0), 0..max_n.
+    void estimate_axis(int axis, const double* tau, int max_n) noexcept;
+
+    float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
+    int count_ = 0;      // valid samples in the ring, 0..kHistory
+    int head_ = 0;       // index of the newest sample
+    int64_t t_us_[kHistory] = {};
+    float x_[kMaxAxes][kHistory] = {};
+    float velocity_[kMaxAxes] = {};
+    float acceleration_[kMaxAxes] = {};
+    int velocity_window_[kMaxAxes] = {};
+    int acceleration_window_[kMaxAxes] = {};
+};
+
+}  // namespace feel::detail

@@ -1,0 +1,37 @@
+// From a device profile's physical facts to the engine's normalized view of the device.
+#include <algorithm>
+
+#include "feel/sim/device_profile.hpp"
+
+namespace feel::sim {
+
+// A hand reaches full speed (velocity_ref) from rest in about 50 ms in a brisk deliberate
+// move, so that is the acceleration inertia conditions read as full scale.
+constexpr double kTimeToFullSpeed_s = 0.05;
+
+// Walls and barriers: hardness 10000 is this many times the device's naive passivity
+// bound 2b/T (Colgate & Schenkel) at the 1 kHz loop the profiles are built for. The
+// passivity controller keeps such walls stable; without it, hardness above
+// 10000/kWallStiffnessOverBound rings. docs/stability.md has the numbers per profile.
+constexpr double kWallStiffnessOverBound = 5.0;
+constexpr double kDesignTickPeriod_s = 1e-3;
+// A device without mechanical damping has no naive bound; its walls still get a usable
+// stiffness (full force at a tenth of the travel) and rely on the controller.
+constexpr double kMinWallStiffness = 10.0;
+
+EngineConfig engine_config_for(const DeviceProfile& profile) noexcept {
+    EngineConfig c;
+    c.axis_count = profile.axis_count;
+    const AxisModel& axis = profile.axes[0];
+    c.velocity_ref = static_cast<float>(profile.velocity_ref);
+    c.acceleration_ref = static_cast<float>(profile.velocity_ref / kTimeToFullSpeed_s);
+    c.sensor_step = static_cast<float>(2.0 * kFullScale / axis.sensor_counts);
+    // F_norm = F·10000/max_force and v_phys = v_norm·half_travel/10000, so a damping b in
+    // physical units is b·half_travel/max_force in normalized ones.
+    c.device_damping = static_cast<float>(axis.viscous * axis.half_travel / axis.max_force);
+    const double naive_bound = 2.0 * c.device_damping / kDesignTickPeriod_s;
+    c.wall_stiffness = static_cast<float>(std::max(kWallStiffnessOverBound * naive_bound, kMinWallStiffness));
+    return c;
+}
+
+}  // namespace feel::sim

@@ -1,0 +1,195 @@
+// Friction (§3.5, §6.6.a): a constant resistance against the motion with a smooth turn-
+// around, checked against the closed form of the Dahl bristle the engine renders it with
+// (docs/conditions.md). Along a monotone stretch of travel X from a deflection z0 the
+// bristle obeys dz/dx = 1 - z·sign(dx), whose solution is
+//
+//     z = ±1 + (z0 ∓ 1)·exp(-X/Z)        (+ while moving toward +, - toward -)
+//
+// and the force is -f·z, f the coefficient of the side z is on. The presliding distance Z
+// follows the documented rule: Z = f/K with K = 2b/T (the device's passivity bound),
+// at least f/1000 and at most 200/(2·sensor_step). A small LuGre microdamping acts while
+// the bristle deflects at low speed (bristle_model.hpp).
+#include "bristle_model.hpp"
+#include "condition_fixture.hpp"
+
+namespace feel::test {
+namespace {
+
+using Friction = ConditionFixture;
+
+double presliding(double f, double damping = kJoystickDamping, double dt_s = 1e-3) {
+    return feel::test::presliding(f, damping, dt_s, kJoystickStep);
+}
+
+// The friction force at deflection z with the handle moving at v relative to the surface:
+// -f·z (f of the side z is on) plus microdamping, capped by that side's saturation.
+double friction_force(double z, double v, double f_pos, double f_neg, double sat_pos, double sat_neg) {
+    const double magnitude = std::max(std::fabs(f_pos), std::fabs(f_neg));
+    const double Z = presliding(magnitude);
+    const double f = -(z >= 0 ? f_pos : f_neg) * z + microdamping(magnitude / Z, z, v);
+    const double cap = z >= 0 ? sat_pos : sat_neg;
+    return std::min(std::max(f, -cap), cap);
+}
+
+TEST_F(Friction, ThePresslidingDistanceOnTheJoystickIsItsPassiveStiffness) {
+    // 2b/T = 11.24 force units per position unit at 1 kHz: f = 6000 builds up over 534 units.
+    EXPECT_NEAR(presliding(6000), 534.0, 0.5);
+    // After sliding exactly one presliding distance from rest: 1 - 1/e of the force.
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    const double Z = presliding(6000);
+    tick_at(-2000);
+    const TickOutput out = tick_at(-2000 + Z);
+    EXPECT_NEAR(out.force[0], -6000 * (1 - std::exp(-1.0)), 1.0);
+}
+
+TEST_F(Friction, SlidingBothWaysWithAsymmetricCoefficients) {
+    // f+ 6000 (moving toward +), f- 3000. Slide + for 600 ticks at 20 units/tick, then back.
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 3000)}));
+    const double Z = presliding(6000);
+    const double x0 = -6000, turn = x0 + 20.0 * 600;
+    const double z_turn = bristle(0, turn - x0, Z);
+    auto x_at = [&](int k) { return k <= 600 ? x0 + 20.0 * k : turn - 20.0 * (k - 600); };
+    expect_along(
+        1200, [&](int k) { return Point{x_at(k), 0}; },
+        [&](int k, int axis, const TickOutput& out) {
+            if (axis != 0) return 0.0;
+            const double z = k <= 600 ? bristle(0, x_at(k) - x0, Z) : bristle(z_turn, x_at(k) - turn, Z);
+            return friction_force(z, out.velocity[0], 6000, 3000, 10000, 10000);
+        },
+        0.5);
+    // Sliding on, the force is the coefficient of the direction of motion (Figure 3-9).
+    EXPECT_NEAR(tick_at(x_at(1200) - 20).force[0], 3000, 1.0);
+}
+
+TEST_F(Friction, TurningAroundHasNoStep) {
+    // A 3 Hz back-and-forth of ±1500, quantized: the ideal Coulomb law would step by
+    // 2f = 16000 at each reversal. The bristle's force changes per tick by at most
+    // 2·f·|dx|/Z = 300 here (0.4 count per tick at the fastest), the microdamping a little more.
+    play(condition(EffectType::friction, {Axis::x}, {block(8000, 8000)}));
+    const double Z = presliding(8000);
+    double previous_f = 0, largest_step = 0;
+    int sign_changes = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const double x = quantize(1500 * std::sin(2 * kPi * 3 * k * 1e-3), kJoystickStep);
+        const double f = tick_at(x).force[0];
+        if (k > 0) {
+            largest_step = std::max(largest_step, std::fabs(f - previous_f));
+            if (f * previous_f < 0) ++sign_changes;
+        }
+        previous_f = f;
+    }
+    EXPECT_LT(largest_step, 0.05 * 16000);
+    EXPECT_LT(largest_step, 1.2 * 2 * 8000 * 1500 * 2 * kPi * 3 * 1e-3 / Z);
+    EXPECT_EQ(sign_changes, 6);  // once per reversal: 3 periods
+}
+
+TEST_F(Friction, AtRestTheForceHoldsExactly) {
+    play(condition(EffectType::friction, {Axis::x, Axis::y}, {block(5000, 5000), block(5000, 5000)}));
+    for (int k = 0; k < 200; ++k) tick_at(-3000 + 7.0 * k, 2000 - 3.0 * k);
+    const double x = -3000 + 7.0 * 200, y = 2000 - 3.0 * 200;
+    // While the velocity estimate's window still holds the motion, the microdamping fades
+    // (a few force units: the bristle is nearly slid through, ż is small).
+    TickOutput out = tick_at(x, y);
+    for (int k = 0; k < 110; ++k) {
+        const TickOutput next = tick_at(x, y);
+        ASSERT_NEAR(next.force[0], out.force[0], 5) << k;
+        ASSERT_NEAR(next.force[1], out.force[1], 5) << k;
+        out = next;
+    }
+    // Then not a bit changes.
+    for (int k = 0; k < 500; ++k) {
+        const TickOutput next = tick_at(x, y);
+        ASSERT_EQ(next.force[0], out.force[0]) << k;
+        ASSERT_EQ(next.force[1], out.force[1]) << k;
+    }
+    const double Z = presliding(5000);
+    EXPECT_NEAR(out.force[0], -5000 * bristle(0, 7.0 * 200, Z), 0.5);  // it was sliding toward +x
+    EXPECT_NEAR(out.force[1], 5000 * bristle(0, 3.0 * 200, Z), 0.5);   // and toward -y
+}
+
+TEST_F(Friction, SaturationsCapEachSideAndNegativeCoefficientsPushAlong) {
+    play(condition(EffectType::friction, {Axis::x, Axis::y},
+                   {block(8000, 5000, 0, 3000, 10000, 0), block(-4000, -4000, 0, 10000, 2500, 0)}));
+    const double Zx = presliding(8000), Zy = presliding(4000);
+    expect_along(
+        800, [](int k) { return Point{-8000 + 20.0 * k, 8000 - 20.0 * k}; },
+        [&](int k, int axis, const TickOutput& out) {
+            if (axis == 0) return friction_force(bristle(0, 20.0 * k, Zx), out.velocity[0], 8000, 5000, 3000, 10000);
+            return friction_force(bristle(0, -20.0 * k, Zy), out.velocity[1], -4000, -4000, 10000, 2500);
+        },
+        0.5);
+    const TickOutput out = tick_at(-8000 + 20.0 * 800, 8000 - 20.0 * 800);
+    EXPECT_NEAR(out.force[0], -3000, 1e-2);  // 8000 capped at the + side's 3000
+    EXPECT_NEAR(out.force[1], -2500, 1e-2);  // pushed along its motion toward -y, capped
+}
+
+TEST_F(Friction, AnOffsetIsASurfaceMovingAtThatSpeed) {
+    // offset 2000 = 20000 units/s. A handle at rest is dragged toward + with the
+    // coefficient of the side its motion relative to the surface is on (-: f- = 3000).
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 3000, 2000)}));
+    const double Z = presliding(6000);
+    expect_along(
+        300, [](int) { return Point{1000, 0}; },
+        [&](int k, int axis, const TickOutput& out) {
+            if (axis != 0) return 0.0;
+            if (k == 0) return 0.0;  // the first tick only anchors the bristle
+            return friction_force(bristle(0, -20000.0 * 1e-3 * k, Z), out.velocity[0] - 20000, 6000, 3000, 10000,
+                                  10000);
+        },
+        0.5);
+    EXPECT_NEAR(tick_at(1000).force[0], 3000, 1.0);
+    // Moving with the surface, nothing rubs: the bristle stays where it was (only the
+    // microdamping follows the velocity estimate as it catches up with the new motion).
+    const double z = bristle(0, -20000.0 * 1e-3 * 301, Z);
+    for (int k = 1; k <= 100; ++k) {
+        const TickOutput out = tick_at(1000 + 20.0 * k);
+        ASSERT_NEAR(out.force[0], friction_force(z, out.velocity[0] - 20000, 6000, 3000, 10000, 10000), 0.5) << k;
+        if (k > 10) {
+            ASSERT_NEAR(out.force[0], -3000 * z, 0.5) << k;
+        }
+    }
+}
+
+TEST_F(Friction, TheDeadbandIsAFreeBandOfSpeed) {
+    // deadband 1000 = 10000 units/s: no force below it, the full force beyond twice it, a
+    // smoothstep between.
+    for (double v : {5000.0, 15000.0, 30000.0}) {
+        SCOPED_TRACE(v);
+        reset(joystick_config());
+        play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000, 0, 10000, 10000, 1000)}));
+        const double Z = presliding(6000);
+        const double t = std::clamp((v / 10 - 1000) / 1000, 0.0, 1.0);
+        const double gate = t * t * (3 - 2 * t);
+        expect_along(
+            400, [&](int k) { return Point{-9000 + v * 1e-3 * k, 0}; },
+            [&](int k, int axis, const TickOutput& out) {
+                if (axis != 0) return 0.0;
+                if (k < 2) return kNaN;  // the velocity estimate needs two samples
+                EXPECT_NEAR(out.velocity[0], v, 1e-2);
+                return gate * friction_force(bristle(0, v * 1e-3 * k, Z), v, 6000, 6000, 10000, 10000);
+            },
+            0.5);
+    }
+}
+
+TEST_F(Friction, ThePresslidingDistanceFollowsTheTickAndTheDevice) {
+    // 10 kHz: 2b/T = 112 exceeds the resolution cap 200/(2·4.88) = 20.5, which wins.
+    dt_us_ = 100;
+    play(condition(EffectType::friction, {Axis::x}, {block(5000, 5000)}));
+    const double Z = presliding(5000, kJoystickDamping, 1e-4);
+    EXPECT_NEAR(Z, 5000 / 20.48, 0.1);
+    tick_at(0);
+    EXPECT_NEAR(tick_at(Z).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
+
+    // A device that reports no damping: the force builds up over 1000 units.
+    EngineConfig undamped = joystick_config();
+    undamped.device_damping = 0;
+    reset(undamped);
+    dt_us_ = 1000;
+    play(condition(EffectType::friction, {Axis::x}, {block(5000, 5000)}));
+    tick_at(0);
+    EXPECT_NEAR(tick_at(1000).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
+}
+
+}  // namespace
+}  // namespace feel::test
