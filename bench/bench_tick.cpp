@@ -2,7 +2,7 @@
 // device's 1 kHz local loop (§2.2), which must stay far below the 1000 µs period.
 //
 // The handle moves (a circle with a wiggle, quantized like the joystick's sensor), so the
-// velocity estimator and every condition do their real work each tick.
+// velocity estimator, every condition and every dynamic do their real work each tick.
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -60,6 +60,33 @@ EffectParams mixed_condition(int i) {
     return p;
 }
 
+// Every Dynamic Sensation in turn, each with a simulated mass tethered to the handle.
+EffectParams mixed_dynamic(int i) {
+    constexpr EffectType kTypes[] = {EffectType::dynamic_recoil,       EffectType::dynamic_impact,
+                                     EffectType::dynamic_liquid,       EffectType::dynamic_inertia,
+                                     EffectType::dynamic_center_drift, EffectType::dynamic_control_law,
+                                     EffectType::dynamic_sling,        EffectType::dynamic_paddle};
+    EffectParams p;
+    p.type = kTypes[i % 8];
+    p.duration_us = kInfiniteUs;
+    p.axis_count = 2;
+    p.axes[0] = Axis::x;
+    p.axes[1] = Axis::y;
+    DynamicBlock& d = p.dynamic;
+    d.blast_direction = d.impact_direction = d.initial_velocity_direction = (i * 4100) % 36000;
+    d.blast_intensity = d.impact_intensity = d.initial_velocity = 3000;
+    d.dynamic_mass = d.density = d.inertia = d.ball_mass = 2000;
+    d.blast_resonance = d.elasticity = d.settle = d.stiffness = d.string_compliance = d.paddle_compliance = 3000;
+    d.blast_decay = d.collision_absorption = d.viscosity = d.paddle_damping = 1000;
+    d.play = 200;
+    d.drift_resistance = 2000;
+    d.string_length = 1500;
+    d.ball_damping = 500;
+    for (ControlLawBlock& c : d.control_law) c = {2000, 3000, 2500, 800, 1000, 0, 0, 100, 200, 0};
+    d.interim_reporting = true;
+    return p;
+}
+
 // A circle of 5000 units at 1 Hz with a 40 Hz wiggle, quantized to 4096 counts.
 void move_handle(TickInput& in, int64_t n) {
     const double t = static_cast<double>(n) * 1e-3;
@@ -75,8 +102,10 @@ void BM_TickMixedEffects(benchmark::State& state) {
     Engine engine(EngineConfig{});
     const std::array<int16_t, 8> samples = {100, -100, 200, -200, 300, -300, 400, -400};
     for (int i = 0; i < effects; ++i) {
-        // Half waves, half conditions.
-        const EffectParams p = i % 2 ? mixed_condition(i / 2) : mixed_wave(i / 2);
+        // Waves, conditions and dynamics in turn: 3 of every 8 are waves, 3 conditions, 2
+        // dynamics (64 effects: 24 waves, 24 conditions, 16 dynamics).
+        const int kind = i % 8;
+        const EffectParams p = kind < 3 ? mixed_wave(i) : kind < 6 ? mixed_condition(i) : mixed_dynamic(i);
         const auto data = p.type == EffectType::force_profile ? std::span<const int16_t>(samples)
                                                               : std::span<const int16_t>();
         const CreateResult r = engine.create(p, data);
@@ -88,11 +117,13 @@ void BM_TickMixedEffects(benchmark::State& state) {
     TickInput in;
     TickOutput out;
     int64_t n = 0;
+    DynamicReport report;
     for (auto _ : state) {
         ++n;
         in.t_us = n * 1000;
         move_handle(in, n);
         engine.tick(in, out);
+        while (engine.pop_report(report)) benchmark::DoNotOptimize(report);  // the host drains
         benchmark::DoNotOptimize(out);
     }
     state.counters["effects"] = effects;

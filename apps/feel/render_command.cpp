@@ -140,6 +140,7 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
     r.stats = render::summarize(trace);
     r.csv_path = csv_to_stdout ? "" : args.output;
     r.plot_path = args.plot;
+    r.trace = &trace;
     write_render_summary(r, report);
 }
 

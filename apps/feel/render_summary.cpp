@@ -39,6 +39,20 @@ std::string plot_title(const std::string& sensation, const render::RenderOptions
            std::string(sim::grip_name(options.grip)) + " hand, motion " + options.motion;
 }
 
+// The dynamics' reports (§5.2): how many interim reports the host would have received, and
+// the final position and velocity of every mass that ended by itself.
+void write_dynamic_reports(const render::Trace& trace, std::ostream& out) {
+    out << '\n' << "dynamics   " << trace.interim_reports << " interim reports, "
+        << trace.final_reports.size() << (trace.final_reports.size() == 1 ? " final report\n" : " final reports\n");
+    for (const DynamicReport& f : trace.final_reports) {
+        out << "final      at " << format_seconds(static_cast<double>(f.t_us) * 1e-6) << ": mass - handle position (";
+        for (int i = 0; i < f.axis_count; ++i) out << (i ? ", " : "") << printf_string("%.1f", f.position[i]);
+        out << "), velocity (";
+        for (int i = 0; i < f.axis_count; ++i) out << (i ? ", " : "") << printf_string("%.1f", f.velocity[i]);
+        out << ") units/s\n";
+    }
+}
+
 void write_render_summary(const RenderReport& r, std::ostream& out) {
     const render::TraceStats& st = r.stats;
     const render::RenderOptions& o = *r.options;
@@ -64,6 +78,7 @@ void write_render_summary(const RenderReport& r, std::ostream& out) {
     }
     out << "(force and position are normalized: \u00b110000 is the motor limit and the end of "
            "travel)\n";
+    if (r.trace != nullptr && r.trace->has_dynamics) write_dynamic_reports(*r.trace, out);
     if (!r.csv_path.empty() || !r.plot_path.empty()) out << '\n';
     if (!r.csv_path.empty()) out << "wrote      " << r.csv_path << " (CSV, " << st.ticks << " rows)\n";
     if (!r.plot_path.empty()) out << "wrote      " << r.plot_path << " (plot)\n";

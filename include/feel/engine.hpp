@@ -40,6 +40,30 @@ struct EngineConfig {
     // Time-domain passivity observer and controller on walls and barriers (§3.7): lets
     // walls stiffer than the naive bound 2(b - B)/T stay stable. On by default.
     bool passivity_control = true;
+
+    // Dynamic Sensations (§5): what the Dynamic Struct's integers mean on this device, in
+    // normalized units (force units, position units, seconds). docs/dynamics.md explains
+    // the mapping; feel::sim::engine_config_for(profile) sets them per profile. The
+    // defaults are the joystick's. Velocities (VelInit, intensities) use velocity_ref.
+    // > 0: mass of "mass 10000", force units per (position unit/s²). The profiles use
+    // 10000/acceleration_ref, the mass full force accelerates at a brisk hand's acceleration
+    // (the inertia condition's scale; 0.445 kg at the joystick's grip).
+    float dynamic_mass_ref = 0.005f;
+    // > 0: tether stiffness of "k 10000", force units per position unit. The profiles use
+    // twice the naive passivity bound 2b/T (docs/dynamics.md: why that is stable).
+    float dynamic_stiffness_ref = 22.47f;
+    // > 0: damping of "b 10000" or "drag 10000", force units per (position unit/s). The
+    // profiles use 2·sqrt(dynamic_stiffness_ref · dynamic_mass_ref): b 10000 critically
+    // damps mass 10000 on tether 10000 against a held handle.
+    float dynamic_damping_ref = 0.6704f;
+    // > 0: acceleration of "gravity 10000", position units/s². The profiles use
+    // 10000/dynamic_mass_ref, so mass 10000 at gravity 10000 weighs full force (on the
+    // joystick and the 3-axis device that is about 1 g).
+    float gravity_ref = 2.0e6f;
+    // Interim reports of dynamics with interim_reporting set (§5.2): their rate, and the
+    // capacity of the report queue the host drains with Engine::pop_report().
+    float interim_report_hz = 60.0f;       // 1..1000
+    int32_t report_capacity = 256;         // 1..65535; reports beyond it are dropped and counted
     // The stiffness of a wall or barrier of hardness 10000 (§3.7, §3.8), in force units per
     // position unit (a spring coefficient of 10000 is 1). > 0 and finite. A hardness h
     // renders h/10000 of it. engine_config_for() sets it per profile to a multiple of the
@@ -84,6 +108,30 @@ struct TickOutput {
     float reported_position[kMaxAxes] = {};
     int32_t playing_effects = 0;        // effects producing force this tick
     bool saturated = false;             // the sum was clamped on some axis this tick
+    // The simulated mass of the first playing dynamic (lowest slot), relative to the
+    // handle: what interim reporting would send, every tick. has_mass is false when no
+    // dynamic plays.
+    bool has_mass = false;
+    float mass_position[kMaxAxes] = {};  // position units, mass minus handle
+    float mass_velocity[kMaxAxes] = {};  // position units/s, mass minus handle
+};
+
+// A report of a dynamic's simulated mass to the host (§5.2, §6.6.f).
+struct DynamicReport {
+    enum class Kind : uint8_t {
+        interim,  // while it plays, at EngineConfig::interim_report_hz, if interim_reporting
+        final,    // once, when it ends by itself: a paddle ball leaving, half_cycles done
+    };
+    EffectId effect{};
+    Kind kind = Kind::interim;
+    int64_t t_us = 0;                    // the tick that produced it
+    int32_t axis_count = 0;              // the effect's axes, in its order
+    float position[kMaxAxes] = {};       // mass minus handle, position units, per effect axis
+    float velocity[kMaxAxes] = {};       // mass minus handle, position units/s
+    // The handle's own velocity at that tick (the engine's estimate), per effect axis: add
+    // it to `velocity` for the mass's velocity in the fixed frame, e.g. where a paddle ball
+    // flies off to.
+    float handle_velocity[kMaxAxes] = {};  // position units/s
 };
 
 class Engine {
@@ -112,6 +160,11 @@ public:
 
     // Renders one tick. Never allocates, locks or throws; never outputs NaN or inf.
     void tick(const TickInput& in, TickOutput& out) noexcept;
+
+    // Takes the oldest report of a dynamic (interim or final), if any. Real-time safe.
+    [[nodiscard]] bool pop_report(DynamicReport& report) noexcept;
+    // Reports lost because the queue was full since the engine was made.
+    [[nodiscard]] uint64_t dropped_reports() const noexcept;
 
     [[nodiscard]] const EngineConfig& config() const noexcept;
 

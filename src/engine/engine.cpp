@@ -15,6 +15,7 @@
 
 #include "conditions/condition.hpp"
 #include "direction.hpp"
+#include "dynamics/dynamic.hpp"
 #include "effect_clock.hpp"
 #include "feel/effect_validation.hpp"
 #include "motion_estimator.hpp"
@@ -35,6 +36,8 @@ struct Slot {
     bool began_playing = false;            // start_position is set
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
     detail::ConditionState condition{};    // conditions' memory between ticks
+    detail::DynamicState dynamic{};        // dynamics' simulated mass between ticks
+    int64_t next_interim_us = 0;           // when the next interim report is due
 };
 
 Error check_config(const EngineConfig& c) noexcept {
@@ -51,6 +54,16 @@ Error check_config(const EngineConfig& c) noexcept {
         return Error::invalid("device_damping", "must be a finite number >= 0");
     if (!(c.wall_stiffness > 0) || !std::isfinite(c.wall_stiffness))
         return Error::invalid("wall_stiffness", "must be a finite number > 0");
+    const float dynamic_refs[] = {c.dynamic_mass_ref, c.dynamic_stiffness_ref, c.dynamic_damping_ref, c.gravity_ref};
+    const char* dynamic_names[] = {"dynamic_mass_ref", "dynamic_stiffness_ref", "dynamic_damping_ref", "gravity_ref"};
+    for (int i = 0; i < 4; ++i) {
+        if (!(dynamic_refs[i] > 0) || !std::isfinite(dynamic_refs[i]))
+            return Error::invalid(dynamic_names[i], "must be a finite number > 0");
+    }
+    if (!(c.interim_report_hz >= 1.0f && c.interim_report_hz <= 1000.0f))
+        return Error::invalid("interim_report_hz", "must be between 1 and 1000 Hz");
+    if (!Range{1, 65535}.contains(c.report_capacity))
+        return Error::out_of_range("report_capacity", c.report_capacity, {1, 65535});
     return {};
 }
 
@@ -58,10 +71,8 @@ Error check_config(const EngineConfig& c) noexcept {
 Error check_renderable(EffectType type) noexcept {
     switch (effect_class(type)) {
         case EffectClass::wave:
-        case EffectClass::condition: return {};
-        case EffectClass::dynamic:
-            return Error::of(ErrorCode::not_supported, "type",
-                             "Dynamic Sensations are not yet rendered by this version of feel");
+        case EffectClass::condition:
+        case EffectClass::dynamic: return {};
     }
     return Error::of(ErrorCode::not_supported, "type", "unknown effect class");
 }
@@ -76,8 +87,55 @@ struct Engine::Impl {
           config_error(check_config(c)),
           slot_count(config_error ? 0 : c.max_effects),
           slots(new Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
-          samples(config_error ? 0 : c.max_samples, slot_count) {
+          samples(config_error ? 0 : c.max_samples, slot_count),
+          report_capacity(config_error ? 1 : c.report_capacity),
+          reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
+    }
+
+    // The report queue: a ring the tick writes and the host drains (single thread for now;
+    // the device runtime puts a lock-free SPSC queue between them).
+    void push_report(const DynamicReport& r) noexcept {
+        if (report_count == report_capacity) {
+            ++reports_dropped;
+            return;
+        }
+        reports[(report_head + report_count) % report_capacity] = r;
+        ++report_count;
+    }
+
+    // Interim reports at the configured rate while interim_reporting is set, a final report
+    // when the dynamic ends by itself, and the first playing dynamic's mass in the output.
+    void report_dynamic(Slot& s, uint16_t index, int64_t t_us, const detail::DynamicResult& r,
+                        const float* handle_velocity, TickOutput& out) noexcept {
+        if (!out.has_mass) {
+            out.has_mass = true;
+            for (int a = 0; a < kMaxAxes; ++a) {
+                out.mass_position[a] = r.mass_position[a];
+                out.mass_velocity[a] = r.mass_velocity[a];
+            }
+        }
+        const bool interim_due = s.params.dynamic.interim_reporting && t_us >= s.next_interim_us;
+        if (!interim_due && !r.finished) return;
+        DynamicReport report;
+        report.effect = EffectId{index, s.generation};
+        report.kind = r.finished ? DynamicReport::Kind::final : DynamicReport::Kind::interim;
+        report.t_us = t_us;
+        report.axis_count = s.params.axis_count;
+        for (int i = 0; i < s.params.axis_count; ++i) {
+            const int a = axis_index(s.params.axes[i]);
+            report.position[i] = r.mass_position[a];
+            report.velocity[i] = r.mass_velocity[a];
+            report.handle_velocity[i] = handle_velocity[a];
+        }
+        push_report(report);
+        if (interim_due) {
+            // The next report is due one period after this one was due, so the rate holds on
+            // average even when the period is not a whole number of ticks.
+            const int64_t period_us = static_cast<int64_t>(1e6 / config.interim_report_hz);
+            s.next_interim_us = (s.next_interim_us == 0 ? t_us : s.next_interim_us) + period_us;
+            if (s.next_interim_us <= t_us) s.next_interim_us = t_us + period_us;
+        }
     }
 
     Slot* find(EffectId id) noexcept {
@@ -93,6 +151,11 @@ struct Engine::Impl {
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;
     detail::MotionEstimator motion;
+    int32_t report_capacity;
+    std::unique_ptr<DynamicReport[]> reports;
+    int32_t report_head = 0;
+    int32_t report_count = 0;
+    uint64_t reports_dropped = 0;
     bool have_previous = false;
     int64_t previous_t_us = 0;
 };
@@ -134,6 +197,8 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.start_t_us = 0;
     s.began_playing = false;
     s.condition = {};
+    s.dynamic = {};
+    s.next_interim_us = 0;
     detail::direction_factors(params, s.direction);
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
@@ -153,6 +218,8 @@ Error Engine::start(EffectId id) noexcept {
     s->state = EffectState::pending;
     s->began_playing = false;
     s->condition = {};
+    s->dynamic = {};
+    s->next_interim_us = 0;
     return {};
 }
 
@@ -228,7 +295,19 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
 
         double force[kMaxAxes] = {};
-        if (effect_class(s.params.type) == EffectClass::condition) {
+        const EffectClass cls = effect_class(s.params.type);
+        if (cls == EffectClass::dynamic) {
+            const detail::DynamicContext dynamic{&s.params, &m.config, in.position, velocity,
+                                                 s.start_position, dt_s, clock.tau_us, &s.dynamic};
+            detail::DynamicResult result;
+            detail::render_dynamic(dynamic, force, result);
+            m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
+            if (result.finished) {
+                s.state = EffectState::stopped;
+                --playing;
+                continue;  // its last force is not applied: the event is over
+            }
+        } else if (cls == EffectClass::condition) {
             const detail::ConditionContext condition{&s.params,     &m.config,     in.position,
                                                      velocity,      acceleration,  s.start_position,
                                                      s.direction,   dt_s,          clock.tau_us,
@@ -257,5 +336,16 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     }
     out.playing_effects = playing;
 }
+
+bool Engine::pop_report(DynamicReport& report) noexcept {
+    Impl& m = *impl_;
+    if (m.report_count == 0) return false;
+    report = m.reports[m.report_head];
+    m.report_head = (m.report_head + 1) % m.report_capacity;
+    --m.report_count;
+    return true;
+}
+
+uint64_t Engine::dropped_reports() const noexcept { return impl_->reports_dropped; }
 
 }  // namespace feel

@@ -41,13 +41,19 @@ void write_csv(const Trace& trace, std::ostream& out) {
     append_columns(line, "v", axes);
     append_columns(line, "f", axes);
     append_columns(line, "r", axes);
+    if (trace.has_dynamics) {  // the simulated mass, relative to the handle (§5.2)
+        append_columns(line, "m", axes);
+        append_columns(line, "mv", axes);
+    }
     line += '\n';
     out << line;
 
     for (const TraceRow& row : trace.rows) {
         line.clear();
         append(line, row.t_us);
-        for (const float* column : {row.position, row.velocity, row.force, row.reported}) {
+        for (const float* column : {row.position, row.velocity, row.force, row.reported, row.mass_relative,
+                                    row.mass_velocity}) {
+            if (!trace.has_dynamics && column == row.mass_relative) break;
             for (int a = 0; a < axes; ++a) {
                 line += ',';
                 append(line, column[a]);

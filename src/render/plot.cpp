@@ -57,7 +57,8 @@ using Column = float (TraceRow::*)[kMaxAxes];
 
 struct PanelSpec {
     Column column;
-    const char* label;  // the y axis label, saying what ±10000 means on this axis
+    const char* label;           // the y axis label, saying what ±10000 means on this axis
+    Column overlay = nullptr;    // drawn dashed underneath when the trace has dynamics
 };
 
 void set_color(cairo_t* cr, Rgb c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
@@ -84,12 +85,16 @@ void set_font(cairo_t* cr, double size, bool bold = false) {
 // The value range of one column over the device's axes, with 0 always in view. Data
 // within the normalized limits is never padded past them, so a force that touches the
 // motor limit gives an axis that ends at ±10000 rather than at the next step beyond.
-Scale value_scale(const Trace& trace, Column column) {
+Scale value_scale(const Trace& trace, Column column, Column overlay = nullptr) {
     double lo = 0, hi = 0;
     for (const TraceRow& row : trace.rows) {
         for (int a = 0; a < trace.axis_count; ++a) {
             lo = std::min<double>(lo, (row.*column)[a]);
             hi = std::max<double>(hi, (row.*column)[a]);
+            if (overlay != nullptr && row.has_mass) {
+                lo = std::min<double>(lo, (row.*overlay)[a]);
+                hi = std::max<double>(hi, (row.*overlay)[a]);
+            }
         }
     }
     if (hi - lo < 1e-3) {  // a flat zero line: show a small symmetric range around it
@@ -235,7 +240,17 @@ void draw_panel(cairo_t* cr, const Trace& trace, const Mapping& m, const PanelSp
     }
     cairo_set_dash(cr, nullptr, 0, 0);
 
-    // The data, clipped to the panel.
+    // The data, clipped to the panel. A dynamic's simulated mass draws dashed over the
+    // handle's position, in the same axis colors, where the mass exists.
+    if (spec.overlay != nullptr && trace.has_dynamics) {
+        const double mass_dashes[] = {4, 3};
+        cairo_set_dash(cr, mass_dashes, 2, 0);
+        for (int a = trace.axis_count - 1; a >= 0; --a) {
+            set_color(cr, kAxisColors[a], 0.75);
+            draw_series(cr, trace, m, spec.overlay, a, time_scale);
+        }
+        cairo_set_dash(cr, nullptr, 0, 0);
+    }
     for (int a = trace.axis_count - 1; a >= 0; --a) {  // x on top
         set_color(cr, kAxisColors[a]);
         draw_series(cr, trace, m, spec.column, a, time_scale);
@@ -291,10 +306,13 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     const double panel_h = (kHeight - kTop - kBottom - kPanelGap) / 2;
     const double panel_w = kWidth - kLeft - kRight;
     const PanelSpec force{&TraceRow::force, "force (\u00b110000 = motor limit)"};
-    const PanelSpec position{&TraceRow::position, "position (\u00b110000 = end of travel)"};
+    const PanelSpec position{&TraceRow::position,
+                             trace.has_dynamics ? "position; dashed: the simulated mass"
+                                                : "position (\u00b110000 = end of travel)",
+                             &TraceRow::mass_absolute};
     const Mapping top{{kLeft, kTop, panel_w, panel_h}, xs, value_scale(trace, force.column)};
     const Mapping bottom{{kLeft, kTop + panel_h + kPanelGap, panel_w, panel_h}, xs,
-                         value_scale(trace, position.column)};
+                         value_scale(trace, position.column, position.overlay)};
 
     set_font(cr, 19, true);
     set_color(cr, kInk);

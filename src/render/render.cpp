@@ -148,6 +148,9 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     trace.axis_count = profile.axis_count;
     trace.rate_hz = static_cast<double>(rate);
     trace.rows.resize(static_cast<size_t>(ticks));
+    for (const format::EffectSpec& e : sensation.effects) {
+        if (effect_class(e.params.type) == EffectClass::dynamic) trace.has_dynamics = true;
+    }
     for (int64_t n = 0; n < ticks; ++n) {
         TickInput in;
         in.t_us = tick_time_us(n, rate);
@@ -163,6 +166,15 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
             row.velocity[a] = static_cast<float>(device.velocity(a));
             row.force[a] = out.force[a];
             row.reported[a] = out.reported_position[a];
+            row.mass_relative[a] = out.mass_position[a];
+            row.mass_velocity[a] = out.mass_velocity[a];
+            row.mass_absolute[a] = out.has_mass ? in.position[a] + out.mass_position[a] : 0.0f;
+        }
+        row.has_mass = out.has_mass;
+        DynamicReport report;
+        while (engine.pop_report(report)) {
+            if (report.kind == DynamicReport::Kind::final) trace.final_reports.push_back(report);
+            else ++trace.interim_reports;
         }
         const double dt_s = static_cast<double>(tick_time_us(n + 1, rate) - in.t_us) * 1e-6;
         device.step(out.force, dt_s);

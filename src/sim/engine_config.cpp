@@ -1,5 +1,6 @@
 // From a device profile's physical facts to the engine's normalized view of the device.
 #include <algorithm>
+#include <cmath>
 
 #include "feel/sim/device_profile.hpp"
 
@@ -19,6 +20,14 @@ constexpr double kDesignTickPeriod_s = 1e-3;
 // stiffness (full force at a tenth of the travel) and rely on the controller.
 constexpr double kMinWallStiffness = 10.0;
 
+// Dynamic Sensations (docs/dynamics.md). Stiffness 10000 is this many times the naive
+// passivity bound 2b/T: the tether's force is the mean reaction over the coming tick
+// (control_law_dynamic.cpp), which removes the held sample's lag, and the sampled-data
+// analysis keeps every profile, grip and mass stable at 2x with a margin (3x is marginal
+// on the 3-axis device). A device without mechanical damping gets the floor instead.
+constexpr double kTetherStiffnessOverBound = 2.0;
+constexpr double kMinTetherStiffness = 2.0;
+
 EngineConfig engine_config_for(const DeviceProfile& profile) noexcept {
     EngineConfig c;
     c.axis_count = profile.axis_count;
@@ -31,6 +40,15 @@ EngineConfig engine_config_for(const DeviceProfile& profile) noexcept {
     c.device_damping = static_cast<float>(axis.viscous * axis.half_travel / axis.max_force);
     const double naive_bound = 2.0 * c.device_damping / kDesignTickPeriod_s;
     c.wall_stiffness = static_cast<float>(std::max(kWallStiffnessOverBound * naive_bound, kMinWallStiffness));
+    // Dynamics: mass 10000 is what full force accelerates at acceleration_ref (the scale
+    // of the inertia condition); gravity 10000 makes mass 10000 weigh full force; b 10000
+    // critically damps mass 10000 on a tether of stiffness 10000 against a held handle.
+    const double mass_ref = kFullScale / static_cast<double>(c.acceleration_ref);
+    const double stiffness_ref = std::max(kTetherStiffnessOverBound * naive_bound, kMinTetherStiffness);
+    c.dynamic_mass_ref = static_cast<float>(mass_ref);
+    c.dynamic_stiffness_ref = static_cast<float>(stiffness_ref);
+    c.dynamic_damping_ref = static_cast<float>(2.0 * std::sqrt(stiffness_ref * mass_ref));
+    c.gravity_ref = static_cast<float>(kFullScale / mass_ref);
     return c;
 }
 

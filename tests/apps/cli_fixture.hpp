@@ -71,7 +71,7 @@ protected:
 
 // push_west: a vector force of magnitude 4321 and gain 5000 from polar 9000, 200 ms.
 // hum: an endless sine on x. pair: a compound of two constants on x and y, the second
-// delayed. kick: a dynamic_recoil (the engine refuses dynamics until they land).
+// delayed. kick: a dynamic_recoil on x and y.
 inline format::SensationFile sample_file() {
     format::SensationFile file;
 

@@ -177,7 +177,8 @@ TEST_F(Render, OutOfRangeValuesNameTheFlagAndTheRange) {
 // --- failures doing the work: exit 1 -----------------------------------------------------
 
 TEST_F(Render, ASensationTheEngineRefusesNamesTheEffectAndType) {
-    const Result r = run_cli({"render", file_, "--sensation", "kick", "-o", path("kick.csv")});
+    // The kick is a recoil on x and y; the wheel has only x.
+    const Result r = run_cli({"render", file_, "--sensation", "kick", "--device", "wheel", "-o", path("kick.csv")});
     EXPECT_EQ(r.code, kExitFailure);
     EXPECT_NE(r.err.find("\"kick\""), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("effect 0"), std::string::npos) << r.err;
@@ -203,6 +204,22 @@ TEST_F(Render, AnUnwritableOutputIsAFailureNamingIt) {
     const Result r = run_cli({"render", file_, "--sensation", "hum", "--duration", "0.01", "-o", csv});
     EXPECT_EQ(r.code, kExitFailure);
     EXPECT_NE(r.err.find("blocker"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace feel::cli::testing
+
+namespace feel::cli::testing {
+namespace {
+
+// A dynamic's render carries the simulated mass: CSV columns mx,my,mvx,mvy and a line
+// about its reports in the summary (§5.2).
+TEST_F(Render, ADynamicWritesTheMassAndSummarizesItsReports) {
+    const std::string csv = path("kick_mass.csv");
+    const Result r = run_cli({"render", file_, "--sensation", "kick", "-o", csv});
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    EXPECT_EQ(lines_of(read(csv))[0], "t_us,x,y,vx,vy,fx,fy,rx,ry,mx,my,mvx,mvy");
+    EXPECT_NE(r.out.find("dynamics"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -128,18 +128,6 @@ TEST_F(EngineMachinery, AnAxisTheDeviceLacksIsRefused) {
     EXPECT_STREQ(r.error.field, "axes[0]");
 }
 
-TEST_F(EngineMachinery, ClassesNotYetRenderedSaySoAndNameTheType) {
-    EffectParams recoil;
-    recoil.type = EffectType::dynamic_recoil;
-    recoil.axis_count = 2;
-    recoil.axes[0] = Axis::x;
-    recoil.axes[1] = Axis::y;
-    const CreateResult r = engine_->create(recoil);
-    EXPECT_EQ(r.error.code, ErrorCode::not_supported);
-    EXPECT_STREQ(r.error.field, "type");
-    EXPECT_NE(r.error.message().find("not yet"), std::string::npos);
-}
-
 TEST_F(EngineMachinery, InvalidConfigRefusesEveryCreate) {
     EngineConfig c;
     c.axis_count = 7;

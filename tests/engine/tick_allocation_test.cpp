@@ -124,3 +124,62 @@ TEST(TickAllocation, EveryConditionTicksWithoutAllocating) {
 
 }  // namespace
 }  // namespace feel
+
+namespace feel {
+namespace {
+
+// Every Dynamic Sensation with interim reporting on, the handle moving, and the host
+// draining the reports: the tick allocates nothing, whatever the model does.
+TEST(TickAllocation, EveryDynamicTicksWithoutAllocating) {
+    Engine engine(EngineConfig{});
+    const EffectType types[] = {EffectType::dynamic_recoil,       EffectType::dynamic_impact,
+                                EffectType::dynamic_liquid,       EffectType::dynamic_inertia,
+                                EffectType::dynamic_center_drift, EffectType::dynamic_control_law,
+                                EffectType::dynamic_sling,        EffectType::dynamic_paddle};
+    for (int copy = 0; copy < 4; ++copy) {
+        for (EffectType t : types) {
+            EffectParams p;
+            p.type = t;
+            p.duration_us = kInfiniteUs;
+            p.axis_count = 2;
+            p.axes[0] = Axis::x;
+            p.axes[1] = Axis::y;
+            DynamicBlock& d = p.dynamic;
+            d.blast_direction = d.impact_direction = d.initial_velocity_direction = 9000 * copy;
+            d.blast_intensity = d.impact_intensity = d.initial_velocity = 4000;
+            d.dynamic_mass = d.density = d.inertia = d.ball_mass = 1000 + 2000 * copy;
+            d.blast_resonance = d.elasticity = d.settle = d.stiffness = d.string_compliance =
+                d.paddle_compliance = 2000 + 2000 * copy;
+            d.blast_decay = d.collision_absorption = d.viscosity = d.paddle_damping = 500 * copy;
+            d.play = 300;
+            d.drift_resistance = 1000;
+            d.string_length = 1000 + 500 * copy;
+            d.ball_damping = 200;
+            // Asymmetric, with free play, gravity and a half-cycle count: every branch.
+            for (ControlLawBlock& c : d.control_law) c = {3000, 5000, 2000, 300, 2000, 500, copy * 3, 200, 100, -1000};
+            d.interim_reporting = true;
+            const CreateResult r = engine.create(p);
+            ASSERT_TRUE(r.error.ok()) << effect_type_name(t) << ": " << r.error.message();
+            ASSERT_TRUE(engine.start(r.id).ok());
+        }
+    }
+    TickOutput out;
+    DynamicReport report;
+    long reports = 0;
+    counting = true;
+    for (int n = 0; n < 20'000; ++n) {
+        TickInput in;
+        in.t_us = n * 1000;
+        const double t = n * 1e-3;
+        in.position[0] = static_cast<float>(4000 * std::cos(2 * 3.14159265 * 1.5 * t));
+        in.position[1] = static_cast<float>(4000 * std::sin(2 * 3.14159265 * 1.5 * t));
+        engine.tick(in, out);
+        while (engine.pop_report(report)) ++reports;
+    }
+    counting = false;
+    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_GT(reports, 0);
+}
+
+}  // namespace
+}  // namespace feel

@@ -2,6 +2,7 @@
 // definitions of the primer and the conventions of docs/conventions.md.
 #include "feel/render/render.hpp"
 
+#include <sstream>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -162,10 +163,9 @@ TEST(Render, ACompoundPlaysItsEffectsTogetherEachAfterItsDelay) {
     }
 }
 
-// The dynamics are the last family to land in the engine, so the engine refuses them for
-// now; the error must say which sensation, which effect and which type, whatever words the
-// engine uses for the reason. When dynamic_recoil renders, this test moves to whichever
-// type is then still refused (the axis test below covers refusals in general).
+// An effect the engine refuses (here a recoil, which needs axes x and y, on the 1-axis
+// wheel): the error must say which sensation, which effect and which type, whatever words
+// the engine uses for the reason.
 TEST(Render, AnEffectTheEngineRefusesNamesTheSensationEffectAndType) {
     EffectParams recoil;
     recoil.type = EffectType::dynamic_recoil;
@@ -179,14 +179,41 @@ TEST(Render, AnEffectTheEngineRefusesNamesTheSensationEffectAndType) {
     s.effects.push_back({axis_constant(Axis::x, 1000, 100'000), {}, {}});
     s.effects.push_back({recoil, {}, {}});
     try {
-        (void)render(s, kinematic_hold("joystick", 0.1));
-        FAIL() << "dynamic_recoil rendered: move this test to a type the engine still refuses";
+        (void)render(s, kinematic_hold("wheel", 0.1));
+        FAIL() << "a two-axis recoil rendered on a one-axis wheel";
     } catch (const std::runtime_error& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("kick"), std::string::npos) << message;
         EXPECT_NE(message.find("effect 1"), std::string::npos) << message;
         EXPECT_NE(message.find("dynamic_recoil"), std::string::npos) << message;
     }
+}
+
+// A sensation with a dynamic carries the simulated mass in the trace, and the CSV gets
+// its columns: the mass relative to the handle and its velocity.
+TEST(Render, ADynamicAddsTheMassColumns) {
+    EffectParams recoil;
+    recoil.type = EffectType::dynamic_recoil;
+    recoil.duration_us = 300'000;
+    recoil.axis_count = 2;
+    recoil.dynamic.blast_direction = 9000;
+    recoil.dynamic.blast_intensity = 5000;
+    recoil.dynamic.dynamic_mass = 3000;
+    recoil.dynamic.blast_resonance = 3000;
+    recoil.dynamic.blast_decay = 1000;
+    Sensation s;
+    s.name = "kick";
+    s.effects.push_back({recoil, {}, {}});
+    const Trace trace = render(s, kinematic_hold("joystick", 0.2));
+    EXPECT_TRUE(trace.has_dynamics);
+    bool mass_moved = false;
+    for (const TraceRow& row : trace.rows) {
+        if (row.has_mass && (row.mass_relative[0] != 0.0f || row.mass_relative[1] != 0.0f)) mass_moved = true;
+    }
+    EXPECT_TRUE(mass_moved);
+    std::ostringstream csv;
+    write_csv(trace, csv);
+    EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "t_us,x,y,vx,vy,fx,fy,rx,ry,mx,my,mvx,mvy");
 }
 
 TEST(Render, AnAxisTheDeviceLacksIsRefusedWithTheEffectNamed) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "feel/engine.hpp"
 #include "feel/format/sensation_file.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
@@ -39,6 +40,12 @@ struct TraceRow {
     float velocity[kMaxAxes] = {};  // true handle velocity, normalized units/s
     float force[kMaxAxes] = {};     // force the engine commands, normalized, physical sign
     float reported[kMaxAxes] = {};  // position the device reports (clipped at clipping walls)
+    // The first playing dynamic's simulated mass (TickOutput::mass_*): relative to the
+    // handle, and absolute (handle + relative) for plots. Zero while no dynamic plays.
+    bool has_mass = false;
+    float mass_relative[kMaxAxes] = {};  // position units, mass minus handle
+    float mass_velocity[kMaxAxes] = {};  // position units/s, mass minus handle
+    float mass_absolute[kMaxAxes] = {};  // position units
     bool saturated = false;         // the engine clamped the summed force on some axis
 };
 
@@ -46,6 +53,9 @@ struct Trace {
     int32_t axis_count = 0;  // the device's axes, x, y, z, rx, ry, rz in that order
     double rate_hz = 0;
     std::vector<TraceRow> rows;
+    bool has_dynamics = false;                 // the sensation has a dynamic: mass columns
+    std::vector<DynamicReport> final_reports;  // dynamics that ended by themselves (§5.2)
+    int64_t interim_reports = 0;               // interim reports the engine sent
 };
 
 // Throws std::invalid_argument for bad options and std::runtime_error naming the effect

@@ -1,0 +1,52 @@
+// Dynamic Sensations (§5): a simulated mass tethered to the handle.
+//
+// A dynamic sees the handle through DynamicContext (its sensed position and estimated
+// velocity), keeps its simulated mass in DynamicState (in the effect's slot, persisting
+// across ticks), adds the tether's reaction on the handle to force[] (±10000 units, physical
+// sign, before effect and device gain), and tells the engine where its mass is and whether
+// it has ended (DynamicResult). The engine turns that into interim and final reports.
+//
+// Every named dynamic maps onto the control law (§8.4), except the sling and the paddle,
+// which are true 2D models (§5.8, §5.9). One file per model; dynamic.cpp dispatches.
+#pragma once
+
+#include <cstdint>
+
+#include "dynamics/ball_state.hpp"
+#include "dynamics/control_law_state.hpp"
+#include "feel/effect.hpp"
+#include "feel/engine.hpp"
+
+namespace feel::detail {
+
+struct DynamicState {
+    bool initialized = false;  // the first playing tick sets up the mass
+    ControlLawState law{};     // control-law dynamics (recoil ... center drift, control law)
+    BallState ball{};          // sling and paddle
+};
+
+struct DynamicContext {
+    const EffectParams* params = nullptr;
+    const EngineConfig* config = nullptr;
+    const float* position = nullptr;        // [kMaxAxes] handle, sensed, position units
+    const float* velocity = nullptr;        // [kMaxAxes] handle, estimated, position units/s
+    const float* start_position = nullptr;  // [kMaxAxes] handle at the effect's first playing tick
+    double dt_s = 0;                        // time since the previous tick, s (0 on the first)
+    int64_t tau_us = 0;                     // time since the effect began playing
+    DynamicState* state = nullptr;
+};
+
+struct DynamicResult {
+    bool finished = false;               // ended by itself this tick (final report follows)
+    float mass_position[kMaxAxes] = {};  // per DEVICE axis: mass minus handle, position units
+    float mass_velocity[kMaxAxes] = {};  // per DEVICE axis: mass minus handle, position units/s
+};
+
+void render_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+
+// The models, one file each.
+void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+
+}  // namespace feel::detail

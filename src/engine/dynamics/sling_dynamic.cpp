@@ -1,0 +1,180 @@
+// Dynamic Sling (§5.8): a ball on a string whose other end, the "bobbin", is the handle.
+//
+// The model. The ball is a point mass m free in the space of the effect's axes (the x-y
+// plane for the §5.8 joystick sling; one axis gives a ball on a line, three a ball in
+// space). The string, of rest length L, is a spring of stiffness k that pulls only when
+// taut:
+//
+//     F = −k·(|r| − L)·r/|r|   when |r| > L,   0 otherwise        (on the ball; r = ball − handle)
+//
+// It pulls radially, along the string, and only inward. Nothing makes the ball spin but
+// the user: circling the handle drags the ball around, and a ball circling at speed u at
+// radius R needs the centripetal pull m·u²/R, so the faster it spins the harder the handle
+// is pulled (§5.8). Ball damping is air resistance on the ball against the fixed frame,
+// −c·v (§5.8: "in air versus in water"), not against the handle: a ball left spinning
+// around a still handle winds down at the rate c/m.
+//
+// Parameters (§8.4: BallMass → Mass, StringCompliance → KPos, StringLength → Length,
+// BallDamping → Drag; EngineConfig says what 10000 of each is on this device):
+//   ball_mass          m = ball_mass/10000 · dynamic_mass_ref
+//   string_length      L = string_length, position units (the control law's Length, free
+//                      play between mass and handle): 10000 is half the handle's travel
+//   string_compliance  k = string_compliance/10000 · dynamic_stiffness_ref: as §8.4 maps it
+//                      onto KPos, the string's stiffness (10000 the stiffest, a steel
+//                      cable; 1 a soft bungee)
+//   ball_damping       c = ball_damping/10000 · dynamic_damping_ref
+//
+// The start. The ball hangs at the bobbin, at rest: seen from above, a ball hanging on a
+// string is right under the hand, r = 0. No direction is preferred, and the user feels
+// nothing until the handle has moved the string taut.
+//
+// Integration. The string is nonlinear (it switches between slack and taut, and turns with
+// the ball), so no exact step exists; the ball is advanced with velocity Verlet, which is
+// symplectic: with the handle still and no air resistance the energy ½m·v² + ½k·(|r| − L)²
+// oscillates about its true value and does not drift. Air resistance is applied exactly,
+// v·e^(−c·h/2m) before and after each step (Strang splitting), so any c is stable. The tick
+// is cut into steps with h·max(ω, Ω) ≤ 0.025 (ω = √(k/m), the string's radial rate; Ω the
+// ball's angular rate about the handle at the string's length). The energy then ripples
+// about Verlet's conserved shadow energy by about (ω·h)²/2 = 0.03% (it scales as h²; a
+// taut, turning string ripples more than the (ω·h)²/4 of a plain spring) and the phase
+// error is (ω·h)²/24 = 3e-5 per radian.
+//
+// A tick (ball_tick.hpp): the ball is caught up to now along the handle's sensed path,
+// then predicted one tick ahead with the handle going on the same way; the string's
+// impulse on the ball over that tick (the sum of Verlet's kicks, exactly the momentum it
+// gave) gives the mean pull the motor holds, the reaction −J/T: toward the ball. The ball
+// relative to the handle goes to DynamicResult. The sling never ends by itself.
+//
+// Real-time safe: no allocation; at most kMaxSteps steps per tick.
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/ball_tick.hpp"
+#include "dynamics/dynamic.hpp"
+#include "dynamics/dynamic_units.hpp"
+
+namespace feel::detail {
+
+namespace {
+
+// Verlet steps are at most this many radians of the fastest rate in play.
+constexpr double kMaxPhasePerStep = 0.025;
+// Steps per tick at most: the stiffest string on the lightest ball of the built-in
+// profiles (ω ≈ 7e3 rad/s) takes 280 over a 1 ms tick. The limit only binds in stalls,
+// where h·ω stays below Verlet's stability limit of 2 for advances up to kBallMaxAdvanceS.
+constexpr int kMaxSteps = 1024;
+
+struct Sling {
+    double mass = 1;          // m, force units per (position unit/s²)
+    double stiffness = 0;     // k, force units per position unit
+    double length = 0;        // L, position units
+    double drag = 0;          // c, force units per (position unit/s)
+    int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
+    int count = 0;            // the effect's axes
+
+    Sling(const EffectParams& p, const EngineConfig& config) noexcept {
+        const DynamicBlock& d = p.dynamic;
+        mass = dynamic_mass(config, d.ball_mass);
+        stiffness = dynamic_stiffness(config, d.string_compliance);
+        length = d.string_length;
+        drag = dynamic_damping(config, d.ball_damping);
+        count = p.axis_count;
+        for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
+    }
+
+    // The string's pull on the ball per unit mass, for r = ball − handle (per effect axis).
+    void acceleration(const double r[kMaxAxes], double a[kMaxAxes]) const noexcept {
+        double r2 = 0;
+        for (int i = 0; i < count; ++i) r2 += r[i] * r[i];
+        const double distance = std::sqrt(r2);
+        // −k·(|r| − L)/|r| per unit of r, when taut. L = 0: −k·r, smooth through r = 0.
+        const double pull = distance > length ? -stiffness * (1.0 - length / distance) / mass : 0.0;
+        for (int i = 0; i < count; ++i) a[i] = pull * r[i];
+    }
+
+    // The ball's angular rate about the handle when the string is at its length, rad/s:
+    // what the steps must resolve besides the string's own radial rate. With L = 0 the
+    // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
+    double turning_rate(const double r[kMaxAxes], const double relative_velocity[kMaxAxes]) const noexcept {
+        if (length <= 0) return 0.0;
+        double r2 = 0;
+        double v2 = 0;
+        for (int i = 0; i < count; ++i) {
+            r2 += r[i] * r[i];
+            v2 += relative_velocity[i] * relative_velocity[i];
+        }
+        return std::sqrt(v2) / std::max(std::sqrt(r2), length);
+    }
+
+    // Hanging at the bobbin, at rest.
+    void start(BallMotion& ball, const DynamicContext& c) const noexcept {
+        for (int i = 0; i < count; ++i) {
+            ball.position[axes[i]] = c.position[axes[i]];
+            ball.velocity[axes[i]] = 0;
+        }
+    }
+
+    // Velocity Verlet with the air applied exactly around it (Strang splitting).
+    void advance(BallMotion& ball, const BallHandlePath& handle, double h_total,
+                 double impulse[kMaxAxes]) const noexcept {
+        double q[kMaxAxes] = {};
+        double v[kMaxAxes] = {};
+        double r[kMaxAxes] = {};
+        double relative[kMaxAxes] = {};
+        double kicks[kMaxAxes] = {};  // Σ h·(string acceleration), the string's Δv
+        for (int i = 0; i < count; ++i) {
+            const int a = axes[i];
+            q[i] = ball.position[a];
+            v[i] = ball.velocity[a];
+            r[i] = q[i] - handle.from[a];
+            relative[i] = v[i] - handle.velocity[a];
+        }
+        const double rate = std::max(std::sqrt(stiffness / mass), turning_rate(r, relative));
+        const int steps = static_cast<int>(
+            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
+        const double h = h_total / steps;
+        const double half_drag = std::exp(-drag * h / (2.0 * mass));
+
+        double acc[kMaxAxes] = {};
+        acceleration(r, acc);
+        for (int step = 0; step < steps; ++step) {
+            const double t_end = (step + 1) * h;
+            for (int i = 0; i < count; ++i) {
+                v[i] = v[i] * half_drag + 0.5 * h * acc[i];
+                kicks[i] += 0.5 * h * acc[i];
+                q[i] += h * v[i];
+                r[i] = q[i] - handle.at(axes[i], t_end);
+            }
+            acceleration(r, acc);
+            for (int i = 0; i < count; ++i) {
+                v[i] = (v[i] + 0.5 * h * acc[i]) * half_drag;
+                kicks[i] += 0.5 * h * acc[i];
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            ball.position[axes[i]] = q[i];
+            ball.velocity[axes[i]] = v[i];
+            impulse[axes[i]] = mass * kicks[i];
+        }
+    }
+
+    // The string's pull on the handle now: toward the ball, k·(|r| − L) when taut.
+    void reaction(const BallMotion& ball, const DynamicContext& c, double force[kMaxAxes]) const noexcept {
+        double r[kMaxAxes] = {};
+        for (int i = 0; i < count; ++i) r[i] = ball.position[axes[i]] - c.position[axes[i]];
+        double acc[kMaxAxes] = {};
+        acceleration(r, acc);
+        for (int i = 0; i < count; ++i) force[axes[i]] -= mass * acc[i];
+    }
+};
+
+}  // namespace
+
+void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
+    const Sling sling(*c.params, *c.config);
+    ball_tick(sling, c, force);
+    report_ball(c.state->ball.now, c, sling.axes, sling.count, result);
+    result.finished = false;
+}
+
+}  // namespace feel::detail

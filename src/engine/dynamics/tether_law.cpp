@@ -1,0 +1,174 @@
+// The piecewise exact integration of one control-law axis (tether_law.hpp).
+#include "dynamics/tether_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/tether_step.hpp"
+
+namespace feel::detail {
+
+namespace {
+
+enum class Region : uint8_t {
+    below,  // s < −length: the tether is stretched negatively, k_neg
+    slack,  // |s| < length: free play
+    above,  // s > +length: stretched positively, k_pos
+};
+
+// The force on a mass that moves with the handle (in the handle's frame ṡ = 0 means
+// ẋ = u), apart from the spring: gravity, the drag of moving at u, and the tether damper
+// if it measures against a velocity other than u.
+double free_force(const TetherLaw& law, const HandlePath& path) noexcept {
+    return law.mass * law.gravity - law.drag * path.velocity - law.b * (path.velocity - path.damper_velocity);
+}
+
+// The same without the tether damper: in the free play the tether is slack.
+double slack_force(const TetherLaw& law, const HandlePath& path) noexcept {
+    return law.mass * law.gravity - law.drag * path.velocity;
+}
+
+// The region a stretch is in. On an edge, the side the motion leaves to decides (the sign
+// of ṡ, else of the force at rest), so that a mass set onto an edge by a crossing goes on
+// into the region it was heading for.
+Region classify(const TetherLaw& law, double s, double rate, double rest_force) noexcept {
+    const double edge = law.length;
+    if (edge > 0) {
+        if (s > edge) return Region::above;
+        if (s < -edge) return Region::below;
+        if (s > -edge && s < edge) return Region::slack;
+        const double out = s > 0 ? 1.0 : -1.0;  // on +edge, outward is +
+        const double leaving = rate != 0 ? rate : rest_force;
+        if (leaving * out > 0) return s > 0 ? Region::above : Region::below;
+        return Region::slack;
+    }
+    if (s > 0) return Region::above;
+    if (s < 0) return Region::below;
+    if (rate != 0) return rate > 0 ? Region::above : Region::below;
+    return rest_force >= 0 ? Region::above : Region::below;
+}
+
+// The linear segment of a region, in its local coordinate y: s − length above, s + length
+// below, s in the slack. With the handle moving at u and the damper measuring against u_b,
+// ẏ = ṡ and
+//     M·ÿ = −k·y − b·(ẏ + u − u_b) − d·(ẏ + u) + M·g   ⇒   c = b + d,  f = M·g − d·u − b·(u − u_b).
+SpringDamper segment(const TetherLaw& law, Region r, const HandlePath& path) noexcept {
+    switch (r) {
+        case Region::above: return {law.mass, law.k_pos, law.b + law.drag, free_force(law, path)};
+        case Region::below: return {law.mass, law.k_neg, law.b + law.drag, free_force(law, path)};
+        case Region::slack: break;
+    }
+    return {law.mass, 0.0, law.drag, slack_force(law, path)};
+}
+
+double local_origin(const TetherLaw& law, Region r) noexcept {
+    switch (r) {
+        case Region::above: return law.length;
+        case Region::below: return -law.length;
+        case Region::slack: break;
+    }
+    return 0.0;
+}
+
+void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stretch, double hysteresis) noexcept {
+    const int8_t side = stretch_side(law, stretch, hysteresis);
+    if (side == 0 || side == state.side) return;
+    if (state.side != 0) ++state.half_cycles;
+    state.side = side;
+}
+
+// Advances the stretch (s, ṡ) by h within one piece, switching regions at the edges.
+void advance_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate, const HandlePath& path,
+                   double h, double hysteresis, bool piecewise) noexcept {
+    const double rest_force = free_force(law, path);
+    double remaining = h;
+    int32_t switches = 0;
+    while (remaining > 0) {
+        const Region r = classify(law, s, rate, rest_force);
+        const SpringDamper seg = segment(law, r, path);
+        const double origin = local_origin(law, r);
+        const MassState start{s - origin, rate};
+        double t = remaining;
+        double snap_to = 0;
+        bool crossed = false;
+        if (piecewise && switches < kMaxRegionSwitches) {
+            double tc = 0;
+            if (r == Region::slack) {
+                // Either edge of the play, whichever comes first.
+                if (tether_crossing(seg, start, law.length, remaining, tc) && tc < t) {
+                    t = tc;
+                    snap_to = law.length;
+                    crossed = true;
+                }
+                if (tether_crossing(seg, start, -law.length, remaining, tc) && tc < t) {
+                    t = tc;
+                    snap_to = -law.length;
+                    crossed = true;
+                }
+            } else if (tether_crossing(seg, start, 0.0, remaining, tc) && tc < remaining) {
+                t = tc;
+                snap_to = origin;  // back onto the edge the region starts at
+                crossed = true;
+            }
+        }
+        const MassState end = tether_step(seg, start, t);
+        s = crossed ? snap_to : end.position + origin;
+        rate = end.velocity;
+        remaining = crossed ? remaining - t : 0.0;
+        if (crossed) ++switches;
+        count_half_cycle(law, state, s, hysteresis);
+    }
+}
+
+}  // namespace
+
+double rest_stretch(const TetherLaw& law) noexcept {
+    const double weight = law.mass * law.gravity;
+    if (weight > 0) return law.length + weight / law.k_pos;
+    if (weight < 0) return -law.length + weight / law.k_neg;
+    return 0.0;
+}
+
+double tether_reaction(const TetherLaw& law, double stretch, double stretch_rate) noexcept {
+    // On an edge of the play (or at 0 without play) the tether is taut if the mass is
+    // moving out: a kick from the handle meets the damper at once.
+    const double edge = law.length;
+    if (stretch > edge || (stretch == edge && stretch_rate > 0)) {
+        return law.k_pos * (stretch - edge) + law.b * stretch_rate;
+    }
+    if (stretch < -edge || (stretch == -edge && stretch_rate < 0)) {
+        return law.k_neg * (stretch + edge) + law.b * stretch_rate;
+    }
+    return 0.0;
+}
+
+int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noexcept {
+    const double e = stretch - rest_stretch(law);
+    if (e > hysteresis) return 1;
+    if (e < -hysteresis) return -1;
+    return 0;
+}
+
+double advance_tether(const TetherLaw& law, TetherAxisState& state, HandlePath path, double h,
+                      double hysteresis) noexcept {
+    if (!(h > 0)) return 0.0;
+    const double u = path.velocity;
+    const double s0 = state.position - path.position;
+    const double rate0 = state.velocity - u;
+    // Different stiffnesses either side of 0, or free play: the law is piecewise.
+    const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
+    const SpringDamper stiffest{law.mass, std::max(law.k_pos, law.k_neg), 0.0, 0.0};
+    const int32_t pieces = tether_substeps(stiffest, h, kMaxTetherSubsteps);
+    const double piece = h / pieces;
+    double s = s0;
+    double rate = rate0;
+    for (int32_t i = 0; i < pieces; ++i) advance_piece(law, state, s, rate, path, piece, hysteresis, piecewise);
+    // The handle moved u·h over the step; the mass's absolute state follows from the stretch.
+    state.position = s + path.position + u * h;
+    state.velocity = rate + u;
+    const double dv = rate - rate0;
+    const double dx = (s - s0) + u * h;
+    return law.mass * dv - law.mass * law.gravity * h + law.drag * dx;
+}
+
+}  // namespace feel::detail

@@ -1,0 +1,87 @@
+// The control law of one axis (§5.10, §8.4): a mass tethered to the handle, in physical
+// (normalized) units, and its exact piecewise integration.
+//
+//                 length (free play, no tether force within ±length)
+//               |<------>|
+//   handle p ---[ spring k± ]---[ damper b ]--- mass M ~~~ drag d to the fixed frame
+//                                               <-- gravity g on the mass, any sign
+//
+// The stretch s = x − p is the mass's position relative to the handle. Outside the play
+// the tether pulls the mass back with −k±·(s ∓ length) − b·ṡ (k_pos for s > +length, k_neg
+// for s < −length); within it the tether is slack and pulls neither way. Drag −d·ẋ acts
+// on the mass's absolute velocity, gravity M·g on the mass. The handle feels the reaction
+// of the tether and nothing else: +k±·(s ∓ length) + b·ṡ.
+//
+// Each region is a linear spring-damper, solved exactly by tether_step. A step is cut into
+// pieces with ω·h ≤ 1 (ω = √(max k±/M)); within a piece, tether_crossing finds the moment
+// the stretch reaches an edge of the play (or 0, when k_pos ≠ k_neg and there is no play),
+// the piece is split there, the stretch is set exactly onto the edge and the next region
+// carries on. Rather than chase a mass that grazes an edge endlessly (a Zeno sequence of
+// crossings), a piece takes at most kMaxRegionSwitches switches and finishes the rest of
+// its time in the region it is in.
+#pragma once
+
+#include <cstdint>
+
+#include "dynamics/control_law_state.hpp"
+#include "feel/effect.hpp"
+#include "feel/engine.hpp"
+
+namespace feel::detail {
+
+// One axis of the control law in normalized physical units (dynamic_units.hpp).
+struct TetherLaw {
+    double mass = 1;        // > 0, force units per (position unit/s²)
+    double k_pos = 1;       // > 0, force units per position unit, stretch beyond +length
+    double k_neg = 1;       // > 0, the same beyond −length
+    double b = 0;           // >= 0, tether damping on the relative velocity, force/(units/s)
+    double drag = 0;        // >= 0, ambient damping on the absolute velocity, force/(units/s)
+    double gravity = 0;     // position units/s², either sign: the force M·g on the mass
+    double length = 0;      // >= 0, position units: the half-width of the free play
+    double pos_init = 0;    // position units, the mass's start relative to the handle
+    double vel_init = 0;    // position units/s, relative to the handle
+    int32_t half_cycles = 0;  // 0 = never ends; else ends after this many half oscillations
+};
+
+// A handle moving at constant velocity over an interval: p(t) = position + velocity·t. The
+// tether's damper acts on the mass's velocity relative to damper_velocity, normally the
+// same; control_law_dynamic.cpp explains when it is not.
+struct HandlePath {
+    double position = 0;         // position units
+    double velocity = 0;         // position units/s
+    double damper_velocity = 0;  // position units/s
+};
+
+// At most this many pieces per step: enough for ω·h ≤ 1 at 100 Hz on every profile
+// (docs/dynamics.md); a longer step is still exact piecewise, only edges may be missed.
+inline constexpr int32_t kMaxTetherSubsteps = 128;
+// At most this many edge crossings handled per piece.
+inline constexpr int32_t kMaxRegionSwitches = 8;
+
+// The stretch where the mass rests against a held handle: 0 without gravity, else the
+// sag M·g/k± beyond the play on the side gravity pulls to.
+[[nodiscard]] double rest_stretch(const TetherLaw& law) noexcept;
+
+// The tether's pull on the handle (force units, + toward +axis) at stretch s, rate ṡ.
+[[nodiscard]] double tether_reaction(const TetherLaw& law, double stretch, double stretch_rate) noexcept;
+
+// The side (−1, 0, +1) a stretch is on relative to the rest stretch, beyond ±hysteresis.
+[[nodiscard]] int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noexcept;
+
+// Advances one axis of the mass by h seconds (h >= 0) against the handle path (the path
+// at t = 0 is where the handle is at the start of the step). Counts half cycles: each time
+// the stretch goes from beyond +hysteresis of the rest stretch to beyond −hysteresis, or
+// back, checked at every piece end and edge crossing (a half period spans at least π
+// pieces, so none is missed). Returns the impulse the tether gave the mass over the step,
+// force units·s, from the momentum balance M·Δv = J + M·g·h − d·Δx (exact, whatever
+// regions the step went through): the handle felt −J.
+double advance_tether(const TetherLaw& law, TetherAxisState& state, HandlePath path, double h,
+                      double hysteresis) noexcept;
+
+// The §8.4 mapping: fills laws[i] for each axis i of the effect from its dynamic type and
+// Dynamic Struct, scaled by the config. Returns the effect's axis count. The effect must
+// be a control-law dynamic (recoil, impact, liquid, inertia, center drift, control law)
+// that validate_effect() accepted.
+int32_t tether_laws(const EffectParams& params, const EngineConfig& config, TetherLaw laws[kMaxAxes]) noexcept;
+
+}  // namespace feel::detail

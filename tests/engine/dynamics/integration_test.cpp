@@ -1,0 +1,294 @@
+// Integration you can trust (issue 4, section 4): the exact spring-damper step against the
+// textbook, event location at the edges of a piecewise law, energy kept for a minute, and
+// the coupled handle-mass loop stable on every device profile at the extremes of the
+// parameter ranges, with a free handle and with every grip.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "dynamics/tether_law.hpp"
+#include "dynamics/tether_step.hpp"
+#include "feel/sim/device_profile.hpp"
+#include "feel/sim/sim_device.hpp"
+#include "tether_fixture.hpp"
+
+namespace feel::test {
+namespace {
+
+using detail::MassState;
+using detail::SpringDamper;
+
+// --- the exact step ------------------------------------------------------------------------
+
+// The textbook solution of m·ÿ + c·ẏ + k·y = f: the oscillator about y = f/k for k > 0; for
+// k = 0 a mass under a constant force and linear drag (ballistic when c = 0).
+MassState textbook(const SpringDamper& s, MassState x, double t) {
+    if (s.stiffness > 0) {
+        const double eq = s.force / s.stiffness;
+        const Oscillator osc{s.mass, s.damping, s.stiffness, x.position - eq, x.velocity};
+        double y, v;
+        osc.at(t, y, v);
+        return {y + eq, v};
+    }
+    if (s.damping == 0) {
+        const double a = s.force / s.mass;
+        return {x.position + x.velocity * t + a * t * t / 2, x.velocity + a * t};
+    }
+    // Terminal velocity f/c and relaxation rate c/m; long double because a light drag makes
+    // the terminal velocity huge and the two terms of the position nearly cancel.
+    const long double terminal = static_cast<long double>(s.force) / s.damping;
+    const long double rate = static_cast<long double>(s.damping) / s.mass;
+    const long double lt = t;
+    const long double one_minus_e = -std::expm1(-rate * lt);
+    const long double y = x.position + terminal * lt + (x.velocity - terminal) * one_minus_e / rate;
+    const long double v = terminal + (x.velocity - terminal) * (1 - one_minus_e);
+    return {static_cast<double>(y), static_cast<double>(v)};
+}
+
+TEST(TetherStep, MatchesTheTextbookInEveryRegime) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
+    for (int i = 0; i < 20000; ++i) {
+        SpringDamper s;
+        s.mass = log_uniform(1e-6, 1e-1);
+        const double w0 = log_uniform(0.3, 3e3);  // the ranges' slowest tether is ~0.7 rad/s
+        s.stiffness = i % 10 == 0 ? 0.0 : s.mass * w0 * w0;
+        const double zeta = i % 7 == 0 ? 0.0 : (i % 13 == 0 ? 1.0 : log_uniform(1e-3, 1e3));
+        s.damping = 2 * zeta * s.mass * (s.stiffness > 0 ? w0 : log_uniform(1e-2, 1e3));
+        s.force = (unit(rng) - 0.5) * 2e4;
+        const MassState x{(unit(rng) - 0.5) * 2e4, (unit(rng) - 0.5) * 2e5};
+        const double h = log_uniform(1e-5, 2e-2);
+        const MassState got = detail::tether_step(s, x, h);
+        const MassState want = textbook(s, x, h);
+        // Both solutions shift to the equilibrium f/k: rounding there is ~1e-16·|f/k|.
+        const double far = s.stiffness > 0 ? std::fabs(s.force / s.stiffness) : 0.0;
+        const double scale_y = std::fabs(x.position) + std::fabs(x.velocity) * h + std::fabs(want.position) + 1e-7 * far + 1;
+        const double scale_v = std::fabs(x.velocity) + std::fabs(want.velocity) + std::fabs(s.force / s.mass) * h + 1;
+        ASSERT_NEAR(got.position, want.position, 1e-8 * scale_y)
+            << "m=" << s.mass << " k=" << s.stiffness << " c=" << s.damping << " h=" << h;
+        ASSERT_NEAR(got.velocity, want.velocity, 1e-7 * scale_v)
+            << "m=" << s.mass << " k=" << s.stiffness << " c=" << s.damping << " h=" << h;
+    }
+}
+
+TEST(TetherStep, OneLongStepIsManyShortOnes) {
+    // Exactness: the solution is a flow, so stepping 1000 × h/1000 lands where one h does.
+    for (const double zeta : {0.0, 0.05, 1.0, 40.0}) {
+        const SpringDamper s{2e-3, 8.0, 2 * zeta * std::sqrt(8.0 * 2e-3), -300};
+        MassState one = detail::tether_step(s, {500, -9000}, 0.25);
+        MassState many{500, -9000};
+        for (int i = 0; i < 1000; ++i) many = detail::tether_step(s, many, 0.25 / 1000);
+        EXPECT_NEAR(one.position, many.position, 1e-8 * 1000) << zeta;
+        EXPECT_NEAR(one.velocity, many.velocity, 1e-7 * 1e5) << zeta;
+    }
+}
+
+TEST(TetherStep, ExtremeRatiosStayFiniteAndBounded) {
+    // Stiff over light, damped over light, and every step length: never a NaN, and the
+    // motion of a passive oscillator never gains energy.
+    for (double m : {1e-9, 1e-6, 1.0}) {
+        for (double k : {0.0, 1e-6, 1.0, 1e6}) {
+            for (double c : {0.0, 1e-6, 1.0, 1e6}) {
+                for (double h : {1e-6, 1e-3, 1.0}) {
+                    const SpringDamper s{m, k, c, 0};
+                    const MassState x{1000, 1e4};
+                    const MassState y = detail::tether_step(s, x, h);
+                    ASSERT_TRUE(std::isfinite(y.position) && std::isfinite(y.velocity)) << m << " " << k << " " << c;
+                    if (k > 0) {
+                        const double e0 = 0.5 * m * x.velocity * x.velocity + 0.5 * k * x.position * x.position;
+                        const double e1 = 0.5 * m * y.velocity * y.velocity + 0.5 * k * y.position * y.position;
+                        ASSERT_LE(e1, e0 * (1 + 1e-9)) << m << " " << k << " " << c << " " << h;
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(TetherCrossing, FindsTheCrossingOfASine) {
+    // y = A·sin(ωt) over a step of 1/ω (y reaches A·sin 1 ≈ 0.84·A): a level below that is
+    // crossed at asin(L/A)/ω; a level above it, or one it moves away from, is not.
+    const double m = 1e-3, k = 4.0, w = std::sqrt(k / m), a = 800;
+    const SpringDamper s{m, k, 0, 0};
+    double t = 0;
+    for (const double level : {1.0, 300.0, 600.0}) {
+        ASSERT_TRUE(detail::tether_crossing(s, {0, a * w}, level, 1.0 / w, t)) << level;
+        EXPECT_NEAR(t, std::asin(level / a) / w, 1e-9 / w) << level;
+    }
+    EXPECT_FALSE(detail::tether_crossing(s, {0, a * w}, 700, 1.0 / w, t));
+    EXPECT_FALSE(detail::tether_crossing(s, {0, a * w}, -600, 1.0 / w, t));
+}
+
+TEST(TetherCrossing, FindsAGrazeThatComesBackWithinTheStep) {
+    // Up through 100 and back down within one step: the first crossing is on the way up.
+    const double m = 1e-3, k = 4.0, w = std::sqrt(k / m), a = 120;
+    const SpringDamper s{m, k, 0, 0};
+    const double h = 3.0 / w;
+    double t = 0;
+    ASSERT_TRUE(detail::tether_crossing(s, {0, a * w}, 100, h, t));
+    EXPECT_NEAR(t, std::asin(100 / a) / w, 1e-9 * h);
+    // Starting above 100 on the way up, over the top and back down: the way down counts.
+    const MassState above{110, std::sqrt(a * a - 110 * 110) * w};
+    ASSERT_TRUE(detail::tether_crossing(s, above, 100, h, t));
+    const double t_top = (kPiD / 2 - std::asin(110 / a)) / w;
+    EXPECT_NEAR(t, t_top + (kPiD / 2 - std::asin(100 / a)) / w, 1e-9 * h);
+    // A crest below the level is not a crossing.
+    EXPECT_FALSE(detail::tether_crossing(s, {0, a * w}, 121, h, t));
+}
+
+TEST(TetherCrossing, LeavingTheLevelIsNotACrossingComingBackIs) {
+    const double m = 1e-3, k = 4.0, w = std::sqrt(k / m);
+    const SpringDamper s{m, k, 0, 0};
+    double t = 0;
+    // From the level moving out, the return half a period later is the crossing.
+    ASSERT_TRUE(detail::tether_crossing(s, {0, 5000}, 0, 3.5 / w, t));
+    EXPECT_NEAR(t, kPiD / w, 1e-9 * 3.5 / w);
+    // From rest on the level with a force pushing off it (gravity on a slack tether).
+    const SpringDamper falling{m, 0, 0, -10};
+    EXPECT_FALSE(detail::tether_crossing(falling, {0, 0}, 0, 1.0, t));
+}
+
+// --- energy over a minute ---------------------------------------------------------------------
+
+double law_energy(const ControlLawBlock& b, const EngineConfig& c, double s, double v) {
+    const double m = per_10000(b.mass, c.dynamic_mass_ref);
+    const double kp = per_10000(b.k_pos, c.dynamic_stiffness_ref), kn = per_10000(b.k_neg, c.dynamic_stiffness_ref);
+    const double L = b.length;
+    double u = 0;
+    if (s > L) u = 0.5 * kp * (s - L) * (s - L);
+    if (s < -L) u = 0.5 * kn * (s + L) * (s + L);
+    return 0.5 * m * v * v + u;
+}
+
+class EnergyOverAMinute : public ::testing::TestWithParam<std::tuple<int32_t, int32_t, int32_t>> {};
+
+TEST_P(EnergyOverAMinute, AnUndampedTetheredMassKeepsItsEnergy) {
+    // Handle held still (kinematic), no damping, no drag: 60 s at 1 kHz, 60000 ticks and
+    // hundreds of oscillations; the energy drifts by less than 0.1%.
+    const auto [k_pos, k_neg, length] = GetParam();
+    ControlLawBlock b = law_block(2000, k_pos);
+    b.k_neg = k_neg;
+    b.length = length;
+    b.vel_init = 3000;
+    b.pos_init = 700;
+    DynamicRig rig;
+    rig.tick({0, 0});
+    rig.play(control_law_params(b));
+    const TickOutput first = rig.tick({0, 0});
+    const double e0 = law_energy(b, rig.config(), first.mass_position[0], first.mass_velocity[0]);
+    double worst = 0;
+    for (int n = 1; n < 60000; ++n) {
+        const TickOutput out = rig.tick({0, 0});
+        const double e = law_energy(b, rig.config(), out.mass_position[0], out.mass_velocity[0]);
+        worst = std::max(worst, std::fabs(e - e0) / e0);
+    }
+    EXPECT_LT(worst, 1e-3);
+    // In fact the drift is at the level of the float outputs.
+    EXPECT_LT(worst, 1e-5);
+}
+
+INSTANTIATE_TEST_SUITE_P(LinearAndPiecewise, EnergyOverAMinute,
+                         ::testing::Values(std::make_tuple(5000, 5000, 0), std::make_tuple(9000, 1500, 0),
+                                           std::make_tuple(4000, 7000, 900)));
+
+// --- the coupled loop on every profile -------------------------------------------------------------
+
+struct LoopRun {
+    double first_swing = 0;  // handle peak-to-peak over the first second
+    double last_swing = 0;   // over the last second
+    double last_force = 0;   // largest |force| over the last second
+    bool finite = true;
+};
+
+LoopRun run_loop(const sim::DeviceProfile& profile, sim::Grip grip, const EffectParams& p, int seconds = 4) {
+    const EngineConfig config = sim::engine_config_for(profile);
+    Engine engine(config);
+    sim::SimDevice device(profile, grip, sim::TargetMotion::hold_at({0.0}));
+    const CreateResult created = engine.create(p);
+    EXPECT_TRUE(created.error.ok()) << created.error.message();
+    EXPECT_TRUE(engine.start(created.id).ok());
+    LoopRun run;
+    std::vector<double> x;
+    const int ticks = seconds * 1000;
+    for (int n = 0; n < ticks; ++n) {
+        TickInput in;
+        in.t_us = n * 1000;
+        device.sense(in);
+        TickOutput out;
+        engine.tick(in, out);
+        device.step(out.force, 1e-3);
+        for (int a = 0; a < kMaxAxes; ++a) run.finite = run.finite && std::isfinite(out.force[a]);
+        run.finite = run.finite && std::isfinite(out.mass_position[0]) && std::isfinite(out.mass_velocity[0]);
+        x.push_back(device.position(0));
+        if (n >= ticks - 1000) run.last_force = std::max(run.last_force, static_cast<double>(std::fabs(out.force[0])));
+    }
+    auto swing = [&](int from, int to) {
+        const auto [lo, hi] = std::minmax_element(x.begin() + from, x.begin() + to);
+        return *hi - *lo;
+    };
+    run.first_swing = swing(0, 1000);
+    run.last_swing = swing(ticks - 1000, ticks);
+    return run;
+}
+
+// The extremes: the lightest and the heaviest mass on the stiffest tether, undamped and at
+// full tether damping, kicked at full intensity.
+std::vector<ControlLawBlock> extreme_laws() {
+    std::vector<ControlLawBlock> laws;
+    for (int32_t mass : {1, 10000}) {
+        for (int32_t b : {0, 10000}) {
+            ControlLawBlock c = law_block(mass, 10000, b);
+            c.vel_init = 10000;
+            laws.push_back(c);
+        }
+    }
+    ControlLawBlock dragged = law_block(10000, 10000, 0);
+    dragged.drag = 10000;
+    dragged.vel_init = 10000;
+    laws.push_back(dragged);
+    return laws;
+}
+
+TEST(CoupledLoop, StableOnEveryProfileAtTheExtremesFreeAndGripped) {
+    for (const sim::DeviceProfile& profile : sim::device_profiles()) {
+        const double count = sim::engine_config_for(profile).sensor_step;
+        for (sim::Grip grip : {sim::Grip::none, sim::Grip::loose, sim::Grip::firm, sim::Grip::stiff}) {
+            for (const ControlLawBlock& law : extreme_laws()) {
+                const LoopRun run = run_loop(profile, grip, control_law_params(law));
+                const std::string what = std::string(profile.name) + " grip " + std::string(sim::grip_name(grip)) +
+                                         " mass " + std::to_string(law.mass) + " b " + std::to_string(law.b) +
+                                         " drag " + std::to_string(law.drag);
+                ASSERT_TRUE(run.finite) << what;
+                SCOPED_TRACE(what + ": swing first " + std::to_string(run.first_swing) + " last " +
+                             std::to_string(run.last_swing) + ", force last " + std::to_string(run.last_force));
+                // Nothing grows: after three seconds the handle swings at most a quarter of
+                // what the kick did, or sits within a few sensor counts.
+                EXPECT_LE(run.last_swing, std::max(3 * count, 0.25 * run.first_swing)) << what;
+                if (law.b > 0 || law.drag > 0) {
+                    // A damped tether has given all it had: the handle is at rest.
+                    EXPECT_LE(run.last_swing, 2 * count) << what;
+                    EXPECT_LT(run.last_force, 0.02 * kFullScale) << what;
+                }
+            }
+        }
+    }
+}
+
+TEST(CoupledLoop, AFullRecoilOnTheHeaviestMassSettlesWithAFreeHandle) {
+    // The strongest undamped recoil the ranges allow, on two axes at once, with nothing
+    // holding the handle.
+    for (const sim::DeviceProfile& profile : sim::device_profiles()) {
+        if (profile.axis_count < 2) continue;  // recoil plays on x and y
+        const LoopRun run = run_loop(profile, sim::Grip::none, recoil_params(4500, 10000, 10000, 10000, 0));
+        ASSERT_TRUE(run.finite) << profile.name;
+        EXPECT_LE(run.last_swing, std::max(3.0 * sim::engine_config_for(profile).sensor_step, 0.25 * run.first_swing))
+            << profile.name;
+    }
+}
+
+}  // namespace
+}  // namespace feel::test

@@ -1,0 +1,349 @@
+// Dynamic Sling (§5.8): a ball on a string tied to the handle, against the centripetal
+// law, the conservation of energy and the exact decay of a ball in a viscous medium.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ball_rig.hpp"
+
+namespace feel::test {
+namespace {
+
+constexpr double kTick = 1e-3;
+
+struct SlingPhysics {
+    double m, k, L, c;
+    double omega() const { return std::sqrt(k / m); }
+};
+
+SlingPhysics physics_of(const EffectParams& p, const EngineConfig& c) {
+    const DynamicBlock& d = p.dynamic;
+    return {scaled(d.ball_mass, c.dynamic_mass_ref), scaled(d.string_compliance, c.dynamic_stiffness_ref),
+            static_cast<double>(d.string_length), scaled(d.ball_damping, c.dynamic_damping_ref)};
+}
+
+// Puts the ball at (x, y) moving at (vx, vy), as if the last tick had sensed the handle
+// at the rig's position, moving at the rig's velocity.
+void place_ball(BallRig& rig, double x, double y, double vx, double vy) {
+    rig.state.initialized = true;
+    rig.state.ball.now.position[0] = x;
+    rig.state.ball.now.position[1] = y;
+    rig.state.ball.now.velocity[0] = vx;
+    rig.state.ball.now.velocity[1] = vy;
+    for (int a = 0; a < kMaxAxes; ++a) {
+        rig.state.ball.handle[a] = rig.position[a];
+        rig.state.ball.handle_velocity[a] = rig.velocity[a];
+    }
+}
+
+double energy(const SlingPhysics& s, const detail::BallState& state) {
+    const detail::BallMotion& b = state.now;
+    const double r = norm2(b.position[0] - state.handle[0], b.position[1] - state.handle[1]);
+    const double stretch = std::max(0.0, r - s.L);
+    return 0.5 * s.m * (b.velocity[0] * b.velocity[0] + b.velocity[1] * b.velocity[1]) + 0.5 * s.k * stretch * stretch;
+}
+
+TEST(Sling, StartsHangingAtTheBobbinAndIsSlackWithinItsLength) {
+    BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
+    rig.position[0] = 1234;
+    rig.position[1] = -777;
+    const auto first = rig.tick(0);
+    EXPECT_EQ(first.force[0], 0.0);
+    EXPECT_EQ(first.force[1], 0.0);
+    EXPECT_EQ(first.result.mass_position[0], 0.0f);
+    EXPECT_EQ(first.result.mass_position[1], 0.0f);
+    // Walk the handle 2900 units away (less than the string) over 1 s: nothing pulls, and
+    // the ball stays where it hung.
+    for (int i = 1; i <= 1000; ++i) {
+        rig.position[0] = static_cast<float>(1234 + 2.9 * i);
+        const auto t = rig.tick(kTick);
+        ASSERT_EQ(t.force[0], 0.0);
+        ASSERT_EQ(t.force[1], 0.0);
+        ASSERT_FALSE(t.result.finished);
+        EXPECT_DOUBLE_EQ(rig.state.ball.now.position[0], 1234.0);
+        EXPECT_DOUBLE_EQ(rig.state.ball.now.position[1], -777.0);
+    }
+}
+
+TEST(Sling, ATautStringPullsTheHandleTowardTheBall) {
+    // On the engine's first tick the force is the string's instantaneous pull, k·(|r| − L)
+    // along r. After that it is the mean pull over the coming tick: for a ball let go at
+    // rest the stretch s0 shrinks as s0·(1 − ½ω²t²), so the second tick (the mean over
+    // [T, 2T]) pulls k·s0·(1 − (7/6)·(ω·T)²), and the ball has fallen ½·(k·s0/m)·T².
+    for (const double bx : {-3000.0, 1000.0, 4000.0}) {
+        BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
+        const SlingPhysics s = physics_of(rig.params(), rig.config());
+        const double by = -2000;
+        place_ball(rig, bx, by, 0, 0);
+        const double r = norm2(bx, by);
+        const double pull = r > s.L ? s.k * (r - s.L) : 0.0;
+        const auto now = rig.tick(0);
+        EXPECT_NEAR(now.force[0], pull * bx / r, 1e-9 * (1 + pull)) << bx;
+        EXPECT_NEAR(now.force[1], pull * by / r, 1e-9 * (1 + pull)) << bx;
+        const auto next = rig.tick(kTick);
+        const double shrink = 7.0 / 6.0 * std::pow(s.omega() * kTick, 2);
+        EXPECT_NEAR(next.force[0], pull * (1 - shrink) * bx / r, 0.1 * shrink * pull + 1e-9) << bx;
+        EXPECT_NEAR(next.force[1], pull * (1 - shrink) * by / r, 0.1 * shrink * pull + 1e-9) << bx;
+        const double fallen = norm2(next.result.mass_position[0] - bx, next.result.mass_position[1] - by);
+        EXPECT_NEAR(fallen, 0.5 * pull / s.m * kTick * kTick, 0.05 * pull / s.m * kTick * kTick + 1e-3) << bx;
+    }
+}
+
+// A ball circling a still handle at speed u on radius R with k·(R − L) = m·u²/R.
+double orbit_radius(const SlingPhysics& s, double u) {
+    return (s.L + std::sqrt(s.L * s.L + 4 * s.m * u * u / s.k)) / 2;
+}
+
+TEST(Sling, CirclesAStillHandleWithTheCentripetalPull) {
+    BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
+    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const double u = 20000;
+    const double R = orbit_radius(s, u);
+    place_ball(rig, R, 0, 0, u);
+    const double centripetal = s.m * u * u / R;
+    double t = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const auto tick = rig.tick(kTick);
+        t += kTick;
+        EXPECT_NEAR(norm2(tick.force[0], tick.force[1]), centripetal, 1e-3 * centripetal) << t;
+        EXPECT_NEAR(norm2(tick.result.mass_position[0], tick.result.mass_position[1]), R, 1e-3 * (R - s.L));
+    }
+    // Uniform motion: after t the ball has turned u·t/R.
+    const double angle = std::atan2(rig.state.ball.now.position[1], rig.state.ball.now.position[0]);
+    EXPECT_NEAR(std::remainder(angle - u * t / R, 2 * kBallPi), 0.0, 1e-3);
+}
+
+TEST(Sling, SpinningFasterPullsHarder) {
+    double pull[2] = {};
+    const double speeds[2] = {15000, 30000};
+    for (int i = 0; i < 2; ++i) {
+        BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
+        const SlingPhysics s = physics_of(rig.params(), rig.config());
+        place_ball(rig, orbit_radius(s, speeds[i]), 0, 0, speeds[i]);
+        double sum = 0;
+        for (int n = 0; n < 1000; ++n) {
+            const auto t = rig.tick(kTick);
+            sum += norm2(t.force[0], t.force[1]);
+        }
+        pull[i] = sum / 1000;
+        EXPECT_NEAR(pull[i], s.m * speeds[i] * speeds[i] / orbit_radius(s, speeds[i]), 1e-3 * pull[i]);
+    }
+    // Twice the speed, a little more than twice the radius: close to four times the pull.
+    EXPECT_GT(pull[1], 3.5 * pull[0]);
+}
+
+TEST(Sling, AHandleCirclingDrivesTheBallOnALargerCircle) {
+    // No air resistance: the ball can turn with the handle (rate Ω, radius a) on the same
+    // ray, radius ρ, where the string's pull k·(ρ − a − L) is the centripetal m·Ω²·ρ:
+    // ρ = k·(a + L)/(k − m·Ω²).
+    BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
+    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const double a = 2000;
+    const double Omega = 2 * kBallPi * 1.0;
+    ASSERT_GT(s.k, s.m * Omega * Omega);
+    const double rho = s.k * (a + s.L) / (s.k - s.m * Omega * Omega);
+    rig.position[0] = static_cast<float>(a);
+    rig.velocity[1] = static_cast<float>(a * Omega);
+    place_ball(rig, rho, 0, 0, Omega * rho);
+    const double pull = s.m * Omega * Omega * rho;
+    for (int i = 1; i <= 3000; ++i) {
+        const double t = i * kTick;
+        rig.position[0] = static_cast<float>(a * std::cos(Omega * t));
+        rig.position[1] = static_cast<float>(a * std::sin(Omega * t));
+        rig.velocity[0] = static_cast<float>(-a * Omega * std::sin(Omega * t));
+        rig.velocity[1] = static_cast<float>(a * Omega * std::cos(Omega * t));
+        const auto tick = rig.tick(kTick);
+        EXPECT_NEAR(norm2(tick.force[0], tick.force[1]), pull, 2e-3 * pull) << t;
+        // Radially outward, toward the ball on the handle's ray: the mean over the coming
+        // tick, so along the ray half a tick ahead (the handle's path between ticks is a
+        // chord of its circle, and the coming tick is predicted along the last chord).
+        EXPECT_NEAR(tick.force[0] / pull, std::cos(Omega * (t + kTick / 2)), 2e-3) << t;
+        EXPECT_NEAR(tick.force[1] / pull, std::sin(Omega * (t + kTick / 2)), 2e-3) << t;
+    }
+}
+
+TEST(Sling, TheHandleFeelsEveryImpulseTheStringGives) {
+    // Newton's third law: over any stretch of ticks the force the motor holds, times the
+    // tick, is minus the momentum the string gave the ball; without air that is the
+    // ball's whole change of momentum. Exact while the hand moves steadily, as the
+    // prediction assumes: here it drags the ball from hanging, across the travel.
+    BallRig rig(detail::sling_dynamic, sling_params(3000, 1500, 7000, 0));
+    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const double ux = 6000, uy = -3500;  // position units/s
+    rig.position[0] = -6000;
+    rig.position[1] = 3500;
+    rig.velocity[0] = static_cast<float>(ux);
+    rig.velocity[1] = static_cast<float>(uy);
+    rig.tick(0);
+    double start[2] = {}, impulse[2] = {};
+    for (int i = 1; i <= 2000; ++i) {
+        // Steps of 6 and 3.5 units, which float holds exactly: a perfectly steady hand.
+        rig.position[0] = static_cast<float>(-6000 + ux * i * kTick);
+        rig.position[1] = static_cast<float>(3500 + uy * i * kTick);
+        const auto tick = rig.tick(kTick);
+        if (i == 1) {
+            start[0] = rig.state.ball.now.velocity[0];
+            start[1] = rig.state.ball.now.velocity[1];
+        }
+        if (i < 2000) {  // the force of tick i acts until tick i + 1
+            impulse[0] += tick.force[0] * kTick;
+            impulse[1] += tick.force[1] * kTick;
+        }
+    }
+    for (int a = 0; a < 2; ++a) {
+        const double change = s.m * (rig.state.ball.now.velocity[a] - start[a]);
+        EXPECT_NEAR(impulse[a], -change, 1e-6 * s.m * 6000) << a;
+    }
+    EXPECT_GT(rig.state.ball.now.position[0], 0.0) << "the string dragged the ball across";
+}
+
+TEST(Sling, EnergyIsKeptWithAStillHandleAndNoAirResistance) {
+    // A stiff string on a light ball (ω·tick ≈ 0.45, so the tick is cut into steps), thrown
+    // so that it swings through slack and taut for 60 s. Verlet keeps a shadow energy
+    // exactly; the true energy ripples about it by about (ω·h)²/2 = 3e-4 (h·ω <= 0.025),
+    // and does not drift.
+    BallRig rig(detail::sling_dynamic, sling_params(100, 2000, 10000, 0));
+    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    ASSERT_GT(s.omega() * kTick, 0.1);
+    place_ball(rig, 1.3 * s.L, 0, 3000, 9000);
+    const double e0 = energy(s, rig.state.ball);
+    double worst = 0;
+    double first_10s = 0, last_10s = 0;
+    int taut_ticks = 0;
+    for (int i = 0; i < 60000; ++i) {
+        const auto t = rig.tick(kTick);
+        taut_ticks += t.force[0] != 0 || t.force[1] != 0;
+        const double e = energy(s, rig.state.ball) / e0 - 1;
+        worst = std::max(worst, std::fabs(e));
+        if (i < 10000) first_10s += e / 10000;
+        if (i >= 50000) last_10s += e / 10000;
+    }
+    EXPECT_LT(worst, 1e-3);
+    EXPECT_LT(std::fabs(last_10s - first_10s), 1e-4) << "no drift";
+    EXPECT_GT(taut_ticks, 1000);
+    EXPECT_LT(taut_ticks, 59000) << "the ball should also fly slack";
+}
+
+TEST(Sling, AirResistanceSlowsAFreeBallExponentially) {
+    // Inside its string's reach the ball only feels the air: v(t) = u·e^{−c·t/m} exactly.
+    BallRig rig(detail::sling_dynamic, sling_params(5000, 9000, 5000, 2000));
+    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const double u = 10000;
+    ASSERT_LT(u * s.m / s.c, s.L) << "the ball must stay inside the string's reach";
+    place_ball(rig, 0, 0, u, 0);
+    for (int i = 1; i <= 200; ++i) {
+        const auto t = rig.tick(kTick);
+        EXPECT_EQ(t.force[0], 0.0);
+        EXPECT_NEAR(rig.state.ball.now.velocity[0], u * std::exp(-s.c / s.m * i * kTick), 1e-9 * u);
+        // Position: the integral, to the splitting's (c·h/m)²/24.
+        const double x = u * s.m / s.c * (1 - std::exp(-s.c / s.m * i * kTick));
+        EXPECT_NEAR(rig.state.ball.now.position[0], x, 1e-4 * x);
+    }
+}
+
+TEST(Sling, TheTickRateDoesNotChangeTheMotion) {
+    // Spun up from hanging at the bobbin by a handle circling at 1.5 Hz, with some air:
+    // the ball after 2 s at three tick rates. The handle's path between ticks is a chord of
+    // its circle, (Ω·dt)²/8 of its radius off; the ball's error is of that order.
+    double x[3] = {}, y[3] = {};
+    const double dts[3] = {1e-3, 0.5e-3, 0.25e-3};
+    for (int k = 0; k < 3; ++k) {
+        BallRig rig(detail::sling_dynamic, sling_params(4000, 2500, 6000, 300));
+        const double a = 3000, Omega = 2 * kBallPi * 1.5;
+        rig.position[0] = static_cast<float>(a);
+        rig.tick(0);
+        const int n = static_cast<int>(std::lround(2.0 / dts[k]));
+        for (int i = 1; i <= n; ++i) {
+            const double t = i * dts[k];
+            rig.position[0] = static_cast<float>(a * std::cos(Omega * t));
+            rig.position[1] = static_cast<float>(a * std::sin(Omega * t));
+            rig.velocity[0] = static_cast<float>(-a * Omega * std::sin(Omega * t));
+            rig.velocity[1] = static_cast<float>(a * Omega * std::cos(Omega * t));
+            rig.tick(dts[k]);
+        }
+        x[k] = rig.state.ball.now.position[0];
+        y[k] = rig.state.ball.now.position[1];
+    }
+    EXPECT_GT(norm2(x[2], y[2]), 3000.0) << "spun out beyond the handle's circle";
+    EXPECT_NEAR(x[0], x[2], 0.2);
+    EXPECT_NEAR(y[0], y[2], 0.2);
+    EXPECT_NEAR(x[1], x[2], 0.1);
+    EXPECT_NEAR(y[1], y[2], 0.1);
+}
+
+TEST(Sling, OnOneAxisItIsABallOnALine) {
+    // A ball thrown along x from the bobbin flies the string's length, stretches it by
+    // u·√(m/k) and comes back; the handle feels k·stretch toward the ball.
+    EffectParams p = sling_params(5000, 2000, 5000, 0);
+    p.axis_count = 1;
+    BallRig rig(detail::sling_dynamic, p);
+    const SlingPhysics s = physics_of(p, rig.config());
+    const double u = 15000;
+    place_ball(rig, 0, 0, u, 0);
+    double reach = 0, pull = 0;
+    for (int i = 0; i < 400; ++i) {
+        const auto t = rig.tick(kTick);
+        EXPECT_EQ(t.force[1], 0.0);
+        EXPECT_EQ(t.result.mass_position[1], 0.0f);
+        reach = std::max(reach, static_cast<double>(t.result.mass_position[0]));
+        pull = std::max(pull, t.force[0]);
+    }
+    const double stretch = u * std::sqrt(s.m / s.k);
+    EXPECT_NEAR(reach, s.L + stretch, 1e-3 * stretch);
+    EXPECT_NEAR(pull, s.k * stretch, 1e-3 * s.k * stretch);
+}
+
+TEST(Sling, TheOrderOfTheAxesDoesNotMatter) {
+    EffectParams yx = sling_params(5000, 2000, 5000, 100);
+    yx.axes[0] = Axis::y;
+    yx.axes[1] = Axis::x;
+    BallRig a(detail::sling_dynamic, sling_params(5000, 2000, 5000, 100));
+    BallRig b(detail::sling_dynamic, yx);
+    for (int i = 0; i < 1500; ++i) {
+        const double t = i * kTick;
+        for (BallRig* r : {&a, &b}) {
+            r->position[0] = static_cast<float>(3000 * std::sin(9 * t));
+            r->position[1] = static_cast<float>(2000 * std::cos(5 * t) - 2000);
+        }
+        const auto ta = a.tick(i == 0 ? 0 : kTick);
+        const auto tb = b.tick(i == 0 ? 0 : kTick);
+        ASSERT_NEAR(ta.force[0], tb.force[0], 1e-9 * (1 + std::fabs(ta.force[0])));
+        ASSERT_NEAR(ta.force[1], tb.force[1], 1e-9 * (1 + std::fabs(ta.force[1])));
+        ASSERT_FALSE(ta.result.finished);
+    }
+}
+
+// Random parameters across their whole ranges, and a random hand: jumps across the
+// travel, jitter, stalls, repeated timestamps. Nothing may become NaN or infinite. (The
+// force is the mean pull over the coming tick, along a string that turns during it, so it
+// need not point at the ball of now.)
+RC_GTEST_PROP(SlingProperty, StaysFiniteForAnyParametersAndHand, ()) {
+    EffectParams p = sling_params(*rc::gen::inRange(1, 10001), *rc::gen::inRange(0, 10001),
+                                  *rc::gen::inRange(1, 10001), *rc::gen::inRange(0, 10001));
+    p.axis_count = *rc::gen::inRange(1, 4);
+    p.axes[2] = Axis::z;
+    BallRig rig(detail::sling_dynamic, p);
+    const int ticks = *rc::gen::inRange(50, 400);
+    for (int i = 0; i < ticks; ++i) {
+        const int kind = *rc::gen::inRange(0, 20);
+        double dt = *rc::gen::inRange(50, 20000) * 1e-6;
+        if (kind == 0) dt = 0;
+        if (kind == 1) dt = 0.5;
+        for (int a = 0; a < 3; ++a) {
+            if (kind < 6) rig.position[a] = static_cast<float>(*rc::gen::inRange(-10000, 10001));
+            rig.velocity[a] = static_cast<float>(*rc::gen::inRange(-300000, 300001));
+        }
+        const auto t = rig.tick(i == 0 ? 0 : dt);
+        for (int a = 0; a < kMaxAxes; ++a) {
+            RC_ASSERT(std::isfinite(t.force[a]));
+            RC_ASSERT(std::isfinite(t.result.mass_position[a]));
+            RC_ASSERT(std::isfinite(t.result.mass_velocity[a]));
+        }
+        RC_ASSERT(!t.result.finished);
+    }
+}
+
+}  // namespace
+}  // namespace feel::test
