@@ -51,10 +51,36 @@ void add_devices(CLI::App& app) {
     app.add_subcommand("devices", "List the simulated device profiles")->footer(kExitCodes);
 }
 
-// "feel render" when the error came from a subcommand, else "feel".
+void add_bench(CLI::App& app, BenchLoopArgs& a) {
+    CLI::App* bench = app.add_subcommand("bench", "Measure the device runtime's performance");
+    bench->require_subcommand(1);
+    bench->footer(kExitCodes);
+    CLI::App* loop = bench->add_subcommand(
+        "loop", "Run the real-time loop with a busy mix of effects on the simulated joystick and "
+                "report its period jitter; the last line is p50=..us p99=..us p99.9=..us "
+                "overruns=N ticks=N");
+    loop->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..20000")->capture_default_str();
+    loop->add_option("--seconds", a.seconds, "Seconds to run, 1..3600")->capture_default_str();
+    loop->footer(kExitCodes);
+}
+
+// The chain of subcommands the command line selected, outermost first.
+std::vector<const CLI::App*> chosen(const CLI::App& app) {
+    std::vector<const CLI::App*> chain;
+    const CLI::App* scope = &app;
+    for (;;) {
+        const auto subs = scope->get_subcommands();
+        if (subs.empty()) return chain;
+        scope = subs.front();
+        chain.push_back(scope);
+    }
+}
+
+// "feel render" or "feel bench loop" when the error came from a subcommand, else "feel".
 std::string who(const CLI::App& app) {
-    for (const CLI::App* sub : app.get_subcommands()) return "feel " + sub->get_name();
-    return "feel";
+    std::string name = "feel";
+    for (const CLI::App* sub : chosen(app)) name += " " + sub->get_name();
+    return name;
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -69,23 +95,26 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
                                 const CLI::ParseError& e) {
     std::vector<std::string> unknown_flags;
     std::vector<std::string> leftovers;
-    const CLI::App* scope = &app;
-    for (const CLI::App* sub : app.get_subcommands()) scope = sub;
-    for (const CLI::App* a : {&app, scope}) {
+    std::vector<const CLI::App*> scopes = chosen(app);
+    scopes.insert(scopes.begin(), &app);
+    for (const CLI::App* a : scopes) {
         for (const std::string& s : a->remaining()) {
             (s.size() > 1 && s[0] == '-' ? unknown_flags : leftovers).push_back(s);
         }
-        if (scope == &app) break;
     }
     if (!unknown_flags.empty()) {
         return (unknown_flags.size() == 1 ? "unknown option " : "unknown options ") +
                join(unknown_flags);
     }
     if (app.get_subcommands().empty()) {
-        if (args.size() <= 1) return "no command given (available: render, check, devices)";
+        if (args.size() <= 1) return "no command given (available: render, check, devices, bench)";
         if (!args[1].empty() && args[1][0] != '-') {
-            return "unknown command \"" + args[1] + "\" (available: render, check, devices)";
+            return "unknown command \"" + args[1] + "\" (available: render, check, devices, bench)";
         }
+    }
+    if (scopes.back()->get_name() == "bench") {  // "feel bench" without a benchmark
+        if (leftovers.empty()) return "no benchmark given (available: loop)";
+        return "unknown benchmark \"" + leftovers.front() + "\" (available: loop)";
     }
     return e.what();
 }
@@ -102,11 +131,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
 
     RenderArgs render_args;
     CheckArgs check_args;
+    BenchLoopArgs bench_loop_args;
     double duration_s = 0;
     CLI::Option* duration = nullptr;
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
     add_devices(app);
+    add_bench(app, bench_loop_args);
 
     try {
         std::vector<const char*> argv;
@@ -129,6 +160,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_check(check_args, out, err);
         } else if (app.got_subcommand("devices")) {
             run_devices(out);
+        } else if (app.got_subcommand("bench")) {
+            run_bench_loop(bench_loop_args, out, err);  // "loop" is bench's only subcommand
         }
         return kExitOk;
     } catch (const UsageError& e) {

@@ -43,10 +43,17 @@ struct CheckArgs {
     std::string file;
 };
 
+struct BenchLoopArgs {
+    double rate_hz = 1000;  // whole Hz, runtime::kMinLoopRateHz..kMaxLoopRateHz
+    double seconds = 60;    // 1..3600
+};
+
 // Each writes its results to `out` and its diagnostics to `err`, and throws on error.
 void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err);
 void run_check(const CheckArgs& args, std::ostream& out, std::ostream& err);
 void run_devices(std::ostream& out);
+// feel bench loop: the real-time loop's period jitter under a busy mix (docs/runtime.md).
+void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& err);
 
 // The whole command line: args[0] is the program name. Never throws; returns the exit code.
 [[nodiscard]] int run(std::span<const std::string> args, std::ostream& out, std::ostream& err);

@@ -2,16 +2,18 @@
 //
 // The engine is the part of feel that runs on the device's local processor (§2.2). It is
 // built with -fno-exceptions -fno-rtti and allocates only in its constructor: every
-// capacity (effect slots, force-profile sample memory) is fixed there, and a create that
-// does not fit reports ErrorCode::device_full instead of growing.
+// capacity (effect slots, parameter bytes, force-profile sample memory) is fixed there, and
+// a create that does not fit reports ErrorCode::device_full instead of growing.
 //
 // Time is an input. tick() takes the time and the sensor state and returns the force on
 // each axis; effect math never reads a clock, so the same inputs give bit-identical
 // outputs.
 //
-// Real-time safety: tick(), start(), stop(), set_gain(), status() never allocate, lock or
-// throw. create() and destroy() do not allocate either, but copy sample data, so call them
-// from the loop's command queue, not from an interrupt.
+// Real-time safety: every method but the constructor and destructor is noexcept and never
+// allocates or locks. tick(), start(), stop(), stop_all(), status(), set_gain(), pause(),
+// resume(), set_actuators_enabled() and pool() take constant or O(slots) time. create(),
+// update() and destroy() may copy or compact sample data (O(sample memory)), and reset()
+// frees every slot, so call them from the loop's command queue, not from an interrupt.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +30,11 @@ struct EngineConfig {
     int32_t axis_count = 2;         // 1..6: the device's axes are x, y, z, rx, ry, rz in order
     int32_t max_effects = 64;       // effect slots (the "memory pool" of §2.2), 1..65535
     int32_t max_samples = 1 << 16;  // force-profile sample memory, in samples
+    // Parameter memory, in bytes, 0..2^30 (§2.2): every resident effect costs the bytes of
+    // the blocks it holds (effect_pool_bytes() below, docs/runtime.md), force-profile
+    // samples 2 each. 0 sizes it to hold max_effects of the largest effect plus max_samples
+    // samples, so only the slots and the sample memory limit creation.
+    int32_t pool_bytes = 0;
 
     // What the engine knows of the device, in normalized units (docs/conventions.md).
     // feel::sim::engine_config_for(profile) fills these from a device profile.
@@ -92,11 +99,91 @@ enum class EffectState : uint8_t {
     playing,   // playing, producing force
 };
 
+// How an effect's last play ended.
+enum class PlayEnd : uint8_t {
+    none,      // never started, or its current play has not ended
+    stopped,   // stopped by a command: stop, stop_all, a solo start of another effect
+    finished,  // ran to its end by itself: all iterations done, or a dynamic that ended
+};
+
+// What Engine::status() tells of one effect (DirectInput's GetEffectStatus, and more).
+struct EffectStatus {
+    EffectState state = EffectState::free;
+    // The iteration count of the current or last play: 1..255 or kInfiniteIterations (the
+    // effect's own, or the count Engine::start was given); 0 if it was never started.
+    int32_t iterations = 0;
+    // Iterations of the current or last play that ran to their end, 0..iterations. While
+    // playing it is also the 0-based index of the iteration that plays.
+    int32_t completed_iterations = 0;
+    // Effect time since the current or last play began, µs, >= 0: it excludes the time the
+    // device was paused. 0 while pending. An endless effect's reading grows without bound.
+    int64_t elapsed_us = 0;
+    uint32_t starts = 0;              // times started since it was created (wraps at 2^32)
+    PlayEnd last_end = PlayEnd::none;
+};
+
+// Which fields of EffectParams Engine::update() changes (DirectInput's DIEP_* flags). Fields
+// outside the mask keep their values; the effect's type never changes.
+namespace effect_field {
+inline constexpr uint32_t kDuration = 1u << 0;       // duration_us
+inline constexpr uint32_t kStartDelay = 1u << 1;     // start_delay_us
+inline constexpr uint32_t kGain = 1u << 2;           // gain
+inline constexpr uint32_t kIterations = 1u << 3;     // iterations
+inline constexpr uint32_t kAxes = 1u << 4;           // axis_count and axes
+inline constexpr uint32_t kDirection = 1u << 5;      // direction
+inline constexpr uint32_t kTrigger = 1u << 6;        // trigger (button or hat)
+inline constexpr uint32_t kTriggerRepeat = 1u << 7;  // trigger_repeat_interval_us
+inline constexpr uint32_t kEnvelope = 1u << 8;       // has_envelope and envelope
+// The blocks of the effect's type (conditions, periodic, constant, ramp, custom, texture,
+// wall, barrier, dynamic); a force profile's samples come with it.
+inline constexpr uint32_t kTypeSpecific = 1u << 9;
+inline constexpr uint32_t kAll = (1u << 10) - 1;
+}  // namespace effect_field
+
+// The parameter memory (§2.2), from Engine::pool().
+struct PoolInfo {
+    int32_t total_bytes = 0;    // parameter memory, bytes (EngineConfig::pool_bytes or derived)
+    int32_t free_bytes = 0;     // bytes no resident effect holds
+    int32_t max_effects = 0;    // effect slots: the most effects resident (and playing) at once
+    int32_t free_effects = 0;   // slots free
+    int32_t total_samples = 0;  // force-profile sample storage, samples (EngineConfig::max_samples)
+    int32_t free_samples = 0;
+};
+
+// The cost table of the parameter memory, in bytes. The sizes of the I-FORCE protocol's
+// parameter blocks where it has one (as the Linux iforce driver allocates them: effect
+// 14, envelope 14, periodic 12, magnitude 2, condition 8 per axis); the blocks it lacks
+// count 2 bytes per 16-bit field. docs/runtime.md explains each.
+namespace pool_cost {
+inline constexpr int32_t kEffect = 14;            // every effect: the Effect Structure (§6.3)
+inline constexpr int32_t kEnvelope = 14;          // has_envelope (§6.3 Envelope Struct)
+inline constexpr int32_t kConstant = 2;           // constant, vector_force, smart_pop (§6.6.c)
+inline constexpr int32_t kPeriodic = 12;          // sine .. saw_down (§6.6.b)
+inline constexpr int32_t kAdvancedPeriodic = 16;  // sweeps: periodic + angles and sense (§6.6.i)
+inline constexpr int32_t kRamp = 4;               // start, end (§6.6.e)
+inline constexpr int32_t kCustom = 8;             // channels, sample period, count, where (§6.6.d)
+inline constexpr int32_t kSample = 2;             // each force-profile sample
+inline constexpr int32_t kCondition = 8;          // per condition block: per axis, angle_spring 1
+inline constexpr int32_t kTexture = 8;            // §6.6.j
+inline constexpr int32_t kWall = 12;              // §6.6.h
+inline constexpr int32_t kBarrier = 14;           // §6.6.g
+inline constexpr int32_t kDynamicAxis = 20;       // per axis: the control law (§6.6.f, §8.4)
+}  // namespace pool_cost
+
+// The bytes of parameter memory an effect costs (the table above). Assumes params passed
+// validate_effect(). Real-time safe.
+[[nodiscard]] int32_t effect_pool_bytes(const EffectParams& params) noexcept;
+
 // What the engine is told each tick. Positions come from the device's quantized sensors.
 struct TickInput {
     int64_t t_us = 0;                   // time of this tick, µs, non-decreasing
     float position[kMaxAxes] = {};      // normalized, ±10000 of each axis's travel
     uint32_t buttons = 0;               // bit i = button i+1 pressed
+    uint32_t hats = 0;                  // bit h-1 = hat switch h (1..4) pushed off center
+    // The dead-man switch (§2.2): true while a hand properly engages the handle. A device
+    // without such a switch reports true. The engine ignores it; the runtime's
+    // SafetyMonitor (feel/runtime/safety.hpp) cuts every force while it is false.
+    bool handle_held = true;
 };
 
 struct TickOutput {
@@ -134,6 +221,43 @@ struct DynamicReport {
     float handle_velocity[kMaxAxes] = {};  // position units/s
 };
 
+// What the engine played at its last tick, for the device's own filters: Intelligent
+// Disturbance Filtering (§1.2.d, feel/runtime/idf.hpp) removes from the reported position
+// the displacement these known forces cause. Plain fixed-size data, no heap.
+enum class DisturbanceClass : uint8_t {
+    periodic,  // vibrations: periodic and sweep waves, force profiles that loop
+    impulse,   // jolts: constant, vector_force, smart_pop, ramp and one-shot force profiles
+               // whose single play lasts at most kImpulseMaxUs
+    other,     // known forces that are neither, e.g. an endless constant push
+};
+inline constexpr int kDisturbanceClassCount = 3;
+// The longest single play of a jolt, µs: a gun's recoil or an asteroid's hit (§1.2.d) lasts
+// tens of milliseconds; a push longer than a quarter second is a steady force, not a jolt.
+inline constexpr int64_t kImpulseMaxUs = 250'000;
+inline constexpr int kMaxActivityEffects = 32;
+
+struct EffectActivity {
+    EffectId id{};
+    EffectType type = EffectType::constant;
+    DisturbanceClass kind = DisturbanceClass::other;
+    // periodic: the period of the vibration, µs (a periodic or sweep's period, a looping
+    // force profile's loop length), 1..65e6; 0 for the other classes.
+    int64_t period_us = 0;
+    // Its force at the last tick on each device axis, normalized ±10000 units, physical
+    // sign, after the effect's and the device's gain, before the engine's clamp.
+    float force[kMaxAxes] = {};
+};
+
+struct EngineActivity {
+    int64_t t_us = 0;      // the tick described: the last tick() (0 before the first)
+    int32_t count = 0;     // entries of effects[] in use, 0..kMaxActivityEffects
+    int32_t omitted = 0;   // playing waves beyond kMaxActivityEffects, left out of effects[]
+    EffectActivity effects[kMaxActivityEffects] = {};  // playing waves, in slot order
+    // Per class, the summed force of every playing wave of that class on each device axis,
+    // omitted ones included: normalized units, after gains, before the clamp.
+    float class_force[kDisturbanceClassCount][kMaxAxes] = {};
+};
+
 class Engine {
 public:
     explicit Engine(const EngineConfig& config);
@@ -150,13 +274,49 @@ public:
     // Starts the effect at the next tick, from its beginning. Restarting a playing effect
     // restarts it.
     Error start(EffectId id) noexcept;
+    // The same, playing `iterations` times (1..255 or kInfiniteIterations) instead of the
+    // effect's own count, for this play only. solo stops every other effect first
+    // (DirectInput's DIES_SOLO). A bad count changes nothing.
+    Error start(EffectId id, int32_t iterations, bool solo) noexcept;
     Error stop(EffectId id) noexcept;
     void stop_all() noexcept;
     [[nodiscard]] EffectState state(EffectId id) const noexcept;
+    // State and progress of one effect; state free for a stale handle.
+    [[nodiscard]] EffectStatus status(EffectId id) const noexcept;
+    // Copies the effect's parameters into `out` (what update() merges into).
+    Error params(EffectId id, EffectParams& out) const noexcept;
+
+    // Changes the fields of `field_mask` (effect_field::k*) to those of `params`. The merged
+    // parameters are checked (validate_effect, the device's axes, the pool) before anything
+    // changes: on any error the effect is exactly as it was. The type cannot change
+    // (params.type must be the effect's when kTypeSpecific is set). A force profile updating
+    // kTypeSpecific passes its new samples. Without restart a playing effect keeps its
+    // clock (time since it began) and its state, and plays on with the new parameters; a
+    // stopped one stays stopped. With restart it (re)starts from its beginning, as start(id)
+    // (DirectInput's DIEP_START).
+    Error update(EffectId id, const EffectParams& params, uint32_t field_mask, bool restart,
+                 std::span<const int16_t> samples = {}) noexcept;
 
     // Device gain, 0..10000, scales the summed force of every effect.
     Error set_gain(int32_t gain) noexcept;
     [[nodiscard]] int32_t gain() const noexcept;
+
+    // Device control (DirectInput's DISFFC_*).
+    // pause: every effect's clock stops where it is and the output is zero; resume lets
+    // them go on from there. Effects started while paused begin at the first tick after
+    // resume. Reflexes do not fire while paused (feel/runtime/reflexes.hpp).
+    void pause() noexcept;
+    void resume() noexcept;
+    [[nodiscard]] bool paused() const noexcept;
+    // Actuators off: effects play on (clocks run), but the output force is zero.
+    void set_actuators_enabled(bool enabled) noexcept;
+    [[nodiscard]] bool actuators_enabled() const noexcept;
+    // The power-on state: every effect freed (handles go stale), device gain 10000, not
+    // paused, actuators on, the dynamics report queue emptied.
+    void reset() noexcept;
+
+    // The parameter memory: bytes in all and free, effect slots in all and free.
+    [[nodiscard]] PoolInfo pool() const noexcept;
 
     // Renders one tick. Never allocates, locks or throws; never outputs NaN or inf.
     void tick(const TickInput& in, TickOutput& out) noexcept;
@@ -165,6 +325,13 @@ public:
     [[nodiscard]] bool pop_report(DynamicReport& report) noexcept;
     // Reports lost because the queue was full since the engine was made.
     [[nodiscard]] uint64_t dropped_reports() const noexcept;
+
+    // What the last tick played: each playing wave's disturbance class, period and force
+    // (EngineActivity). Call it after tick(); real-time safe (no allocation, lock or throw).
+    // Conditions are left out: their forces answer the handle's motion, so a filter sees
+    // them as part of the mechanism. Dynamics are left out too: their force is not kept
+    // between ticks.
+    void activity(EngineActivity& out) const noexcept;
 
     [[nodiscard]] const EngineConfig& config() const noexcept;
 

@@ -3,6 +3,10 @@
 namespace feel::detail {
 
 ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noexcept {
+    return read_clock(params, params.iterations, since_start_us);
+}
+
+ClockReading read_clock(const EffectParams& params, int32_t iterations, int64_t since_start_us) noexcept {
     ClockReading r;
     const int64_t t = since_start_us - params.start_delay_us;
     if (t < 0) return r;
@@ -12,7 +16,7 @@ ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noex
         return r;
     }
     const int64_t iteration = t / params.duration_us;
-    if (params.iterations != kInfiniteIterations && iteration >= params.iterations) {
+    if (iterations != kInfiniteIterations && iteration >= iterations) {
         r.phase = ClockPhase::finished;
         return r;
     }

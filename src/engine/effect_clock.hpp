@@ -23,6 +23,9 @@ struct ClockReading {
 };
 
 [[nodiscard]] ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noexcept;
+// The same with the iteration count of this play (Engine::start may override the effect's).
+[[nodiscard]] ClockReading read_clock(const EffectParams& params, int32_t iterations,
+                                      int64_t since_start_us) noexcept;
 
 // The total time from start to finish, or kInfiniteUs.
 [[nodiscard]] int64_t total_length_us(const EffectParams& params) noexcept;

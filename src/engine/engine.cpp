@@ -8,7 +8,10 @@
 //
 // Slots live in one array sized at construction; handles carry a generation so a handle
 // to a freed slot is refused instead of reaching its successor. Nothing here reads a clock,
-// allocates or throws: time arrives in TickInput.
+// allocates or throws: time arrives in TickInput. While the device is paused the loop
+// above is skipped and every running effect's start time moves with the clock, so effect
+// time stands still; with the actuators off it runs and only the output is zeroed
+// (engine_commands.cpp has the other commands and the parameter memory).
 #include "feel/engine.hpp"
 
 #include "engine_impl.hpp"
@@ -36,6 +39,7 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
     if (!Range{1, kMaxAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kMaxAxes});
     if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
     if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
+    if (!Range{0, 1 << 30}.contains(c.pool_bytes)) return Error::out_of_range("pool_bytes", c.pool_bytes, {0, 1 << 30});
     if (!(c.velocity_ref > 0) || !std::isfinite(c.velocity_ref))
         return Error::invalid("velocity_ref", "must be a finite number > 0");
     if (!(c.acceleration_ref > 0) || !std::isfinite(c.acceleration_ref))
@@ -102,6 +106,10 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
         }
     }
     if (index < 0) return {{}, Error::of(ErrorCode::device_full, "", "every effect slot is in use")};
+    const int32_t bytes = effect_pool_bytes(params);
+    if (bytes > m.pool_total_bytes - m.pool_used_bytes) {
+        return {{}, detail::pool_full_error(bytes, m.pool_total_bytes - m.pool_used_bytes)};
+    }
     const bool is_profile = params.type == EffectType::force_profile;
     if (is_profile && !m.samples.allocate(index, samples.data(), static_cast<int32_t>(samples.size()))) {
         return {{}, Error::of(ErrorCode::device_full, "custom.samples", "not enough free sample memory")};
@@ -115,6 +123,13 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.condition = {};
     s.dynamic = {};
     s.next_interim_us = 0;
+    s.iterations_override = 0;
+    s.completed_iterations = 0;
+    s.elapsed_us = 0;
+    s.starts = 0;
+    s.last_end = PlayEnd::none;
+    s.pool_bytes = bytes;
+    m.pool_used_bytes += bytes;
     detail::direction_factors(params, s.direction);
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
@@ -122,35 +137,26 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
 Error Engine::destroy(EffectId id) noexcept {
     Slot* s = impl_->find(id);
     if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
-    impl_->samples.release(id.index);
-    s->state = EffectState::free;
-    ++s->generation;
+    impl_->free_slot(*s, id.index);
     return {};
 }
 
 Error Engine::start(EffectId id) noexcept {
     Slot* s = impl_->find(id);
     if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
-    s->state = EffectState::pending;
-    s->began_playing = false;
-    s->condition = {};
-    s->dynamic = {};
-    s->next_interim_us = 0;
+    impl_->begin_play(*s, 0);
     return {};
 }
 
 Error Engine::stop(EffectId id) noexcept {
     Slot* s = impl_->find(id);
     if (!s) return Error::of(ErrorCode::invalid_handle, "", "no such effect");
-    s->state = EffectState::stopped;
+    Impl::stop_play(*s);
     return {};
 }
 
 void Engine::stop_all() noexcept {
-    for (int32_t i = 0; i < impl_->slot_count; ++i) {
-        Slot& s = impl_->slots[i];
-        if (s.state != EffectState::free) s.state = EffectState::stopped;
-    }
+    for (int32_t i = 0; i < impl_->slot_count; ++i) Impl::stop_play(impl_->slots[i]);
 }
 
 EffectState Engine::state(EffectId id) const noexcept {
@@ -173,7 +179,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // The handle's motion as the conditions see it: sensed position, estimated velocity
     // and acceleration. The reported position starts as the sensed one; clipping walls
     // may hold it at their surface.
-    const double dt_s = m.have_previous ? static_cast<double>(in.t_us - m.previous_t_us) * 1e-6 : 0.0;
+    const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
+    const double dt_s = static_cast<double>(dt_us) * 1e-6;
     m.motion.update(in.t_us, in.position, axes);
     float velocity[kMaxAxes] = {};
     float acceleration[kMaxAxes] = {};
@@ -183,22 +190,40 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         out.velocity[a] = velocity[a];
         out.acceleration[a] = acceleration[a];
         out.reported_position[a] = a < axes ? in.position[a] : 0.0f;
+        out.mass_position[a] = 0.0f;
+        out.mass_velocity[a] = 0.0f;
     }
+    out.has_mass = false;
     m.previous_t_us = in.t_us;
     m.have_previous = true;
 
     double sum[kMaxAxes] = {};
     int32_t playing = 0;
-    for (int32_t i = 0; i < m.slot_count; ++i) {
+    if (m.paused) {
+        // Pause freezes every effect's clock (§2.2 device control): each running effect's
+        // start moves forward by the time that passed, so its elapsed time stands still and
+        // it resumes exactly where it was. Pending effects wait for the first running tick.
+        // Nothing renders, so conditions and dynamics keep their state too.
+        for (int32_t i = 0; i < m.slot_count; ++i) {
+            Slot& s = m.slots[i];
+            if (s.state == EffectState::delayed || s.state == EffectState::playing) s.start_t_us += dt_us;
+        }
+    }
+    for (int32_t i = 0; i < m.slot_count && !m.paused; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
         if (s.state == EffectState::pending) s.start_t_us = in.t_us;
 
-        const detail::ClockReading clock = detail::read_clock(s.params, in.t_us - s.start_t_us);
+        s.elapsed_us = in.t_us - s.start_t_us;
+        const int32_t iterations = s.play_iterations();
+        const detail::ClockReading clock = detail::read_clock(s.params, iterations, s.elapsed_us);
         if (clock.phase == ClockPhase::finished) {
             s.state = EffectState::stopped;
+            s.last_end = PlayEnd::finished;
+            s.completed_iterations = iterations;
             continue;
         }
+        s.completed_iterations = clock.iteration;
         if (clock.phase == ClockPhase::delayed) {
             s.state = EffectState::delayed;
             continue;
@@ -220,6 +245,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;
+                s.last_end = PlayEnd::finished;
                 --playing;
                 continue;  // its last force is not applied: the event is over
             }
@@ -239,10 +265,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         for (int a = 0; a < axes; ++a) sum[a] += force[a] * effect_gain;
     }
 
+    // Paused or actuators off: the motors get nothing (sum is zero while paused anyway).
+    const bool output_on = m.actuators_enabled && !m.paused;
     const double device_gain = m.device_gain / static_cast<double>(kFullScale);
     out.saturated = false;
     for (int a = 0; a < kMaxAxes; ++a) {
-        double f = a < axes ? sum[a] * device_gain : 0.0;
+        double f = a < axes && output_on ? sum[a] * device_gain : 0.0;
         if (!std::isfinite(f)) f = 0.0;  // never pass NaN or inf to a motor
         if (f > kFullScale || f < -kFullScale) {
             f = f > 0 ? kFullScale : -kFullScale;

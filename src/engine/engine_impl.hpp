@@ -27,11 +27,33 @@ struct Slot {
     detail::ConditionState condition{};    // conditions' memory between ticks
     detail::DynamicState dynamic{};        // dynamics' simulated mass between ticks
     int64_t next_interim_us = 0;           // when the next interim report is due
+
+    // Commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
+    int32_t iterations_override = 0;       // this play's count from start(id, n, solo); 0 = the effect's
+    int32_t completed_iterations = 0;      // of the current or last play, set by the tick
+    int64_t elapsed_us = 0;                // effect time of the current or last play, set by the tick
+    uint32_t starts = 0;                   // times started since created
+    PlayEnd last_end = PlayEnd::none;      // how the last play ended
+    int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
+
+    // The iteration count of the current play: Engine::start's override, else the effect's.
+    // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
+    [[nodiscard]] int32_t play_iterations() const noexcept {
+        return iterations_override != 0 ? iterations_override : params.iterations;
+    }
 };
 
 // Checks every field of an EngineConfig; an invalid config makes an engine that refuses
 // every create with this error.
 [[nodiscard]] Error check_engine_config(const EngineConfig& c) noexcept;
+
+// The parameter memory of an engine made with c (EngineConfig::pool_bytes, or when that is
+// 0 the bytes of max_effects of the largest effect plus max_samples samples), in bytes.
+[[nodiscard]] int64_t pool_capacity_bytes(const EngineConfig& c) noexcept;
+
+// The device_full error of an effect that needs `needed` bytes where `free_bytes` are free:
+// value = needed, allowed = 0..free_bytes, for a host that wants the numbers.
+[[nodiscard]] Error pool_full_error(int32_t needed, int32_t free_bytes) noexcept;
 
 }  // namespace detail
 
@@ -45,6 +67,40 @@ struct Engine::Impl {
           report_capacity(config_error ? 1 : c.report_capacity),
           reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
+        pool_total_bytes = config_error ? 0 : static_cast<int32_t>(detail::pool_capacity_bytes(c));
+    }
+
+    // Puts a slot at the beginning of a new play (start, a restarting update, a reflex): it
+    // begins at the next tick that is not paused.
+    void begin_play(detail::Slot& s, int32_t iterations_override) noexcept {
+        s.state = EffectState::pending;
+        s.began_playing = false;
+        s.condition = {};
+        s.dynamic = {};
+        s.next_interim_us = 0;
+        s.iterations_override = iterations_override;
+        s.completed_iterations = 0;
+        s.elapsed_us = 0;
+        s.last_end = PlayEnd::none;
+        ++s.starts;
+    }
+
+    // Frees a slot: its samples and bytes return to the pool, its handles go stale.
+    void free_slot(detail::Slot& s, int32_t index) noexcept {
+        samples.release(index);
+        pool_used_bytes -= s.pool_bytes;
+        s.pool_bytes = 0;
+        s.state = EffectState::free;
+        ++s.generation;
+    }
+
+    // Stops a slot by command; a play that was under way ends as `stopped`.
+    static void stop_play(detail::Slot& s) noexcept {
+        if (s.state == EffectState::pending || s.state == EffectState::delayed ||
+            s.state == EffectState::playing) {
+            s.last_end = PlayEnd::stopped;
+        }
+        if (s.state != EffectState::free) s.state = EffectState::stopped;
     }
 
     // The report queue: a ring the tick writes and the host drains (single thread for now;
@@ -112,6 +168,12 @@ struct Engine::Impl {
     uint64_t reports_dropped = 0;
     bool have_previous = false;
     int64_t previous_t_us = 0;
+
+    // Device control and the parameter memory (engine_commands.cpp).
+    int32_t pool_total_bytes = 0;
+    int32_t pool_used_bytes = 0;
+    bool paused = false;             // effect clocks frozen, output zero
+    bool actuators_enabled = true;   // false: effects run, output zero
 };
 
 }  // namespace feel

@@ -96,6 +96,9 @@ EngineConfig engine_config_for(const format::Sensation& sensation, const sim::De
                            kMaxSlots));
     config.max_samples = static_cast<int32_t>(std::clamp<size_t>(
         samples, static_cast<size_t>(config.max_samples), static_cast<size_t>(INT32_MAX)));
+    // A render shows what a sensation feels like, so it sizes the parameter memory to fit
+    // (0: every slot and sample); the device's own byte budget is the runtime's concern.
+    config.pool_bytes = 0;
     return config;
 }
 

@@ -83,6 +83,7 @@ constexpr DeviceProfile kProfiles[] = {
         .axis_count = 2,
         .axes = {joystick_axis(Axis::x), joystick_axis(Axis::y)},
         .button_count = 4,
+        .dead_man_switch = true,  // an optical hand sensor in the grip
         .velocity_ref = 1e5,  // 0.5 m/s at the grip: full travel in 0.2 s reads 10000
         .loose = kLinearLoose,
         .firm = kLinearFirm,
@@ -95,6 +96,7 @@ constexpr DeviceProfile kProfiles[] = {
         .axis_count = 1,
         .axes = {wheel_axis()},
         .button_count = 8,
+        .dead_man_switch = false,  // wheels of this class have none
         .velocity_ref = 2e4,  // 900°/s: lock to lock in one second reads 10000
         .loose = GripModel{.stiffness = 3, .damping = 0.12, .added_mass = 0.01},
         .firm = GripModel{.stiffness = 12, .damping = 0.35, .added_mass = 0.03},
@@ -108,6 +110,7 @@ constexpr DeviceProfile kProfiles[] = {
         .axes = {three_axis_axis(Axis::x), three_axis_axis(Axis::y),
                  three_axis_axis(Axis::z)},
         .button_count = 4,
+        .dead_man_switch = false,  // the Falcon class has none
         .velocity_ref = 1e5,  // 0.508 m/s: full travel in 0.2 s reads 10000
         .loose = kLinearLoose,
         .firm = kLinearFirm,

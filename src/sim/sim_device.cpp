@@ -48,6 +48,14 @@
 // target lies within the travel, and the integrator is stable, so positions and
 // velocities stay finite for any input.
 //
+// Hand presence: set_hand_present(false) takes the hand away (the grip's spring, damper and
+// added mass vanish; the handle is free) and set_hand_present(true) brings it back. The
+// free handle is lighter than the held one, so its substep rate is computed separately.
+// A hand grabs the handle where it finds it rather than yanking it onto a target that may
+// be the whole travel away (a firm grip stretched over the wheel's 450° would pull with
+// 94 N·m): the tether's target carries the grab's offset, which decays back to the motion
+// (hand_target).
+//
 // Kinematic grip: the hand prescribes the motion. At the end of the step the handle is at
 // the target with the target's velocity, and hand_force() reports the force the hand had
 // to apply to make it so (Newton's law solved for F_hand, friction included).
@@ -102,14 +110,17 @@ SimDevice::SimDevice(const DeviceProfile& profile, Grip grip, TargetMotion motio
                                     std::string(profile.name) + "\" has " +
                                     std::to_string(profile.axis_count));
     }
-    if (grip_ != Grip::kinematic) {
-        for (int a = 0; a < profile.axis_count; ++a) {
-            const AxisModel& ax = profile.axes[a];
+    for (int a = 0; a < profile.axis_count; ++a) {
+        const AxisModel& ax = profile.axes[a];
+        if (grip_ != Grip::kinematic) {
             const double m = ax.mass + grip_model_.added_mass;
             const double k = grip_model_.stiffness + ax.end_stop_stiffness;
             const double b = ax.viscous + grip_model_.damping + ax.end_stop_damping;
             rate_ = std::max({rate_, std::sqrt(k / m), b / m});
         }
+        const double b_free = ax.viscous + ax.end_stop_damping;
+        rate_free_ = std::max({rate_free_, std::sqrt(ax.end_stop_stiffness / ax.mass),
+                               b_free / ax.mass});
     }
     // The hand puts the handle where the motion starts; a holding hand is already moving
     // with the target, so the tether starts unstretched.
@@ -123,7 +134,8 @@ SimDevice::SimDevice(const DeviceProfile& profile, Grip grip, TargetMotion motio
 
 int32_t SimDevice::substeps(double dt_s) const noexcept {
     if (!(dt_s > 0) || !(dt_s <= kMaxStepS)) return 1;
-    const double n = std::ceil(rate_ * dt_s / kSubstepRateH);
+    const double rate = handle_held() ? rate_ : rate_free_;
+    const double n = std::ceil(rate * dt_s / kSubstepRateH);
     return static_cast<int32_t>(std::clamp(n, 1.0, static_cast<double>(kMaxSubsteps)));
 }
 
@@ -134,7 +146,51 @@ void SimDevice::sense(TickInput& in) const noexcept {
         const double reading = step * std::round(position(a) / step);
         in.position[a] = static_cast<float>(std::clamp(reading, -kScale, kScale));
     }
-    in.buttons = 0;
+    in.buttons = buttons_;
+    in.handle_held = profile_->dead_man_switch ? handle_held() : true;
+}
+
+TargetMotion::Sample SimDevice::hand_target(double t_s) const noexcept {
+    TargetMotion::Sample target = motion_.at(t_s);
+    bool offset = false;
+    for (int a = 0; a < profile_->axis_count; ++a) offset = offset || grab_offset_[a] != 0;
+    if (!offset) return target;
+    const double s = std::max(0.0, t_s - grab_t_s_) / kRegrabReturnS;
+    const double decay = std::exp(-s);
+    for (int a = 0; a < profile_->axis_count; ++a) {
+        target.position[a] += grab_offset_[a] * (1 + s) * decay;
+        target.velocity[a] -= grab_offset_[a] * s / kRegrabReturnS * decay;
+    }
+    return target;
+}
+
+void SimDevice::set_hand_present(bool present) noexcept {
+    const bool grabs = present && !hand_present_;
+    hand_present_ = present;
+    if (!grabs || grip_ == Grip::none) return;
+    // The hand takes the handle where it is ...
+    const TargetMotion::Sample motion = motion_.at(t_s_);
+    grab_t_s_ = t_s_;
+    for (int a = 0; a < profile_->axis_count; ++a) {
+        grab_offset_[a] = position(a) - motion.position[a];
+    }
+    if (grip_ == Grip::kinematic) return;
+    // ... and its added mass arrives moving with the motion: an inelastic collision.
+    const TargetMotion::Sample target = motion;
+    for (int a = 0; a < profile_->axis_count; ++a) {
+        const double m_handle = profile_->axes[a].mass;
+        const double m_hand = grip_model_.added_mass;
+        const double v_hand = target.velocity[a] * profile_->axes[a].half_travel / kScale;
+        v_[a] = (m_handle * v_[a] + m_hand * v_hand) / (m_handle + m_hand);
+    }
+}
+
+bool SimDevice::set_buttons(uint32_t pressed) noexcept {
+    const int32_t count = profile_->button_count;
+    const uint32_t allowed = count >= 32 ? 0xFFFFFFFFu : (uint32_t{1} << count) - 1u;
+    if ((pressed & ~allowed) != 0) return false;
+    buttons_ = pressed;
+    return true;
 }
 
 void SimDevice::step(const float force[kMaxAxes], double dt_s) noexcept {
@@ -151,7 +207,7 @@ void SimDevice::step(const float force[kMaxAxes], double dt_s) noexcept {
         }
         motor[a] = std::clamp(f / kScale, -1.0, 1.0) * profile_->axes[a].max_force;
     }
-    if (grip_ == Grip::kinematic) {
+    if (grip_ == Grip::kinematic && hand_present_) {
         step_kinematic(motor, dt_s);
     } else {
         step_tethered(motor, dt_s);
@@ -162,12 +218,12 @@ void SimDevice::step(const float force[kMaxAxes], double dt_s) noexcept {
 void SimDevice::step_tethered(const double motor[kMaxAxes], double dt_s) noexcept {
     const int32_t n = substeps(dt_s);
     const double h = dt_s / n;
-    const bool backward_springs = rate_ * h > 1.0;
-    const bool held = grip_ != Grip::none;
-    const GripModel& g = grip_model_;
+    const bool held = handle_held();
+    const bool backward_springs = (held ? rate_ : rate_free_) * h > 1.0;
+    const GripModel g = held ? grip_model_ : GripModel{};
     double hand_sum[kMaxAxes] = {};
     for (int32_t i = 0; i < n; ++i) {
-        const TargetMotion::Sample target = held ? motion_.at(t_s_ + i * h)
+        const TargetMotion::Sample target = held ? hand_target(t_s_ + i * h)
                                                  : TargetMotion::Sample{};
         for (int a = 0; a < profile_->axis_count; ++a) {
             const AxisModel& ax = profile_->axes[a];
@@ -200,7 +256,7 @@ void SimDevice::step_tethered(const double motor[kMaxAxes], double dt_s) noexcep
 }
 
 void SimDevice::step_kinematic(const double motor[kMaxAxes], double dt_s) noexcept {
-    const TargetMotion::Sample target = motion_.at(t_s_ + dt_s);
+    const TargetMotion::Sample target = hand_target(t_s_ + dt_s);
     for (int a = 0; a < profile_->axis_count; ++a) {
         const AxisModel& ax = profile_->axes[a];
         const double scale = ax.half_travel / kScale;

@@ -49,6 +49,10 @@ struct DeviceProfile {
     int32_t axis_count = 0;        // 1..6; axes[i].axis must be axis i (x, y, z, rx, ry, rz)
     AxisModel axes[kMaxAxes] = {};
     int32_t button_count = 0;      // 0..32
+    // Whether the handle has a dead-man switch (§2.2) that senses the hand. Without one,
+    // sense() reports handle_held = true whatever the hand does, and only the runtime's
+    // hands-off detector can tell a free handle.
+    bool dead_man_switch = true;
     double velocity_ref = 1e5;     // normalized position units/s that read as velocity 10000
     GripModel loose{}, firm{}, stiff{};  // per axis, same on every axis of the device
 };

@@ -26,6 +26,9 @@ inline constexpr int32_t kMaxSubsteps = 4096;
 // (normalized units/s: ten thousand travels a second, far beyond any hand).
 inline constexpr double kMaxTeleport = 20000;
 inline constexpr double kMaxSetSpeed = 1e8;
+// How long a hand that grabs the handle takes to bring it back to its target motion, s:
+// the time constant of the return (most of the way in 3τ, 0.6 s), an unhurried reach.
+inline constexpr double kRegrabReturnS = 0.2;
 
 class SimDevice {
 public:
@@ -35,11 +38,12 @@ public:
     // outlive the device.
     SimDevice(const DeviceProfile& profile, Grip grip, TargetMotion motion);
 
-    // Fills the sensor fields of `in` (quantized positions, buttons) from the current
-    // state. The caller sets in.t_us. Positions are rounded to the sensor's step,
-    // 20000 / sensor_counts, and read at most ±10000 (a handle pressed into an end stop
-    // reads the end of the travel). Axes the device does not have read 0; no button is
-    // ever pressed.
+    // Fills the sensor fields of `in` (quantized positions, buttons, the dead-man switch)
+    // from the current state. The caller sets in.t_us. Positions are rounded to the
+    // sensor's step, 20000 / sensor_counts, and read at most ±10000 (a handle pressed into
+    // an end stop reads the end of the travel). Axes the device does not have read 0.
+    // buttons is what set_buttons() last set. handle_held is handle_held() on a profile
+    // with a dead-man switch, and always true on one without.
     void sense(TickInput& in) const noexcept;
 
     // Applies the motor forces (normalized, ±10000, clamped again to the motor limit) for
@@ -68,13 +72,39 @@ public:
     [[nodiscard]] Grip grip() const noexcept { return grip_; }
     [[nodiscard]] const TargetMotion& motion() const noexcept { return motion_; }
 
-    // The substeps step(dt_s) will take; h = dt_s / substeps(dt_s).
+    // The hand lets go (false) or grabs the handle again (true); it starts present. While
+    // it is away the grip's spring, damper and added mass vanish and the handle moves
+    // freely, as with Grip::none, and the target motion keeps running. A hand grabs the
+    // handle where it finds it: its target becomes the motion's plus the offset d0 of the
+    // handle from it at the grab, and it brings the handle back to the motion smoothly,
+    // the offset decaying as d0·(1 + s/τ)·e^(−s/τ), τ = kRegrabReturnS, s the time since
+    // the grab (critically damped: it starts and ends at rest relative to the motion). A
+    // grab is an inelastic collision: the hand's added mass, moving with the motion, joins
+    // the handle and momentum is conserved. With Grip::none there is no hand, and this
+    // only records the flag. Real-time safe; call it between steps.
+    void set_hand_present(bool present) noexcept;
+    [[nodiscard]] bool hand_present() const noexcept { return hand_present_; }
+    // A hand holds the handle: a grip other than none, and the hand present.
+    [[nodiscard]] bool handle_held() const noexcept {
+        return grip_ != Grip::none && hand_present_;
+    }
+    // The buttons pressed from now on, bit i = button i+1 (TickInput::buttons). Returns
+    // false and changes nothing when a bit names a button the profile lacks (bit i with
+    // i >= button_count). Real-time safe.
+    bool set_buttons(uint32_t pressed) noexcept;
+    [[nodiscard]] uint32_t buttons() const noexcept { return buttons_; }
+
+    // The substeps step(dt_s) will take now (they depend on whether the hand is present);
+    // h = dt_s / substeps(dt_s).
     [[nodiscard]] int32_t substeps(double dt_s) const noexcept;
     // Diagnostics for the robustness rules of step().
     [[nodiscard]] int64_t nonfinite_forces() const noexcept { return nonfinite_forces_; }
     [[nodiscard]] int64_t rejected_steps() const noexcept { return rejected_steps_; }
 
 private:
+    // Where the hand wants the handle at t_s: the motion plus what is left of the offset
+    // of the last grab. Normalized units.
+    [[nodiscard]] TargetMotion::Sample hand_target(double t_s) const noexcept;
     void step_tethered(const double motor[kMaxAxes], double dt_s) noexcept;
     void step_kinematic(const double motor[kMaxAxes], double dt_s) noexcept;
 
@@ -82,7 +112,13 @@ private:
     Grip grip_;
     TargetMotion motion_;
     GripModel grip_model_{};  // zero for Grip::none and Grip::kinematic
-    double rate_ = 0;         // 1/s: the fastest spring ω or damping b/m of any axis
+    double rate_ = 0;         // 1/s: the fastest spring ω or damping b/m of any axis, held
+    double rate_free_ = 0;    // 1/s: the same for the handle without its hand
+    bool hand_present_ = true;
+    uint32_t buttons_ = 0;    // bit i = button i+1 pressed
+    // The last grab: when, and the handle's offset from the motion then (normalized).
+    double grab_t_s_ = 0;
+    double grab_offset_[kMaxAxes] = {};
     double t_s_ = 0;
     double x_[kMaxAxes] = {};  // physical position
     double v_[kMaxAxes] = {};  // physical velocity
