@@ -21,7 +21,8 @@ void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& 
                   "CSV (and optionally a plot) and print a summary");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
     cmd->add_option("--sensation", a.sensation, "Name of the sensation to render")->required();
-    cmd->add_option("--device", a.device, "Simulated device: joystick, wheel or 3axis")
+    cmd->add_option("--device", a.device,
+                    "Simulated device: joystick, wheel, 3axis, iforce1 or iforce2 (feel devices)")
         ->capture_default_str();
     cmd->add_option("--motion", a.motion,
                     "Target motion of the hand: hold:X[,Y[,Z]], ramp:AXIS:FROM:TO, "
@@ -49,6 +50,16 @@ void add_check(CLI::App& app, CheckArgs& a) {
 
 void add_devices(CLI::App& app) {
     app.add_subcommand("devices", "List the simulated device profiles")->footer(kExitCodes);
+}
+
+void add_caps(CLI::App& app, CapsArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "caps", "Print a device's capabilities: axes, buttons, forces, effect types, memory, "
+                "loop rate, firmware and protocol versions");
+    cmd->add_option("--device", a.device,
+                    "Simulated device: joystick, wheel, 3axis, iforce1 or iforce2 (feel devices)")
+        ->capture_default_str();
+    cmd->footer(kExitCodes);
 }
 
 void add_bench(CLI::App& app, BenchLoopArgs& a) {
@@ -107,9 +118,9 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
                join(unknown_flags);
     }
     if (app.get_subcommands().empty()) {
-        if (args.size() <= 1) return "no command given (available: render, check, devices, bench)";
+        if (args.size() <= 1) return "no command given (available: render, check, devices, caps, bench)";
         if (!args[1].empty() && args[1][0] != '-') {
-            return "unknown command \"" + args[1] + "\" (available: render, check, devices, bench)";
+            return "unknown command \"" + args[1] + "\" (available: render, check, devices, caps, bench)";
         }
     }
     if (scopes.back()->get_name() == "bench") {  // "feel bench" without a benchmark
@@ -132,11 +143,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     RenderArgs render_args;
     CheckArgs check_args;
     BenchLoopArgs bench_loop_args;
+    CapsArgs caps_args;
     double duration_s = 0;
     CLI::Option* duration = nullptr;
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
     add_devices(app);
+    add_caps(app, caps_args);
     add_bench(app, bench_loop_args);
 
     try {
@@ -160,6 +173,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_check(check_args, out, err);
         } else if (app.got_subcommand("devices")) {
             run_devices(out);
+        } else if (app.got_subcommand("caps")) {
+            run_caps(caps_args, out);
         } else if (app.got_subcommand("bench")) {
             run_bench_loop(bench_loop_args, out, err);  // "loop" is bench's only subcommand
         }

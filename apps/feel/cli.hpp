@@ -43,6 +43,10 @@ struct CheckArgs {
     std::string file;
 };
 
+struct CapsArgs {
+    std::string device = "joystick";
+};
+
 struct BenchLoopArgs {
     double rate_hz = 1000;  // whole Hz, runtime::kMinLoopRateHz..kMaxLoopRateHz
     double seconds = 60;    // 1..3600
@@ -52,6 +56,8 @@ struct BenchLoopArgs {
 void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err);
 void run_check(const CheckArgs& args, std::ostream& out, std::ostream& err);
 void run_devices(std::ostream& out);
+// feel caps: a device's capabilities (docs/cli.md, docs/runtime.md).
+void run_caps(const CapsArgs& args, std::ostream& out);
 // feel bench loop: the real-time loop's period jitter under a busy mix (docs/runtime.md).
 void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& err);
 

@@ -1,4 +1,4 @@
-// feel devices: the simulated device profiles that --device accepts.
+// feel devices: the simulated device profiles that --device accepts, with their class.
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -15,8 +15,9 @@ void run_devices(std::ostream& out) {
             if (!axes.empty()) axes += ',';
             axes += axis_name(p.axes[a].axis);
         }
-        char head[96];
-        std::snprintf(head, sizeof head, "%-10s %-8s ", std::string(p.name).c_str(), axes.c_str());
+        char head[128];
+        std::snprintf(head, sizeof head, "%-10s %-8s %-12s ", std::string(p.name).c_str(),
+                      axes.c_str(), std::string(sim::device_class_name(p.device_class)).c_str());
         out << head << p.description << '\n';
     }
 }

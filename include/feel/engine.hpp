@@ -20,11 +20,20 @@
 #include <memory>
 #include <span>
 
+#include <string_view>
+
 #include "feel/axis.hpp"
 #include "feel/effect.hpp"
+#include "feel/effect_type.hpp"
 #include "feel/status.hpp"
 
 namespace feel {
+
+// A set of effect types as a bit mask: bit effect_type_bit(t) for each type t in the set.
+[[nodiscard]] constexpr uint64_t effect_type_bit(EffectType t) noexcept {
+    return uint64_t{1} << static_cast<unsigned>(t);
+}
+inline constexpr uint64_t kAllEffectTypes = (uint64_t{1} << kEffectTypeCount) - 1;
 
 struct EngineConfig {
     int32_t axis_count = 2;         // 1..6: the device's axes are x, y, z, rx, ry, rz in order
@@ -76,6 +85,15 @@ struct EngineConfig {
     // renders h/10000 of it. engine_config_for() sets it per profile to a multiple of the
     // profile's naive passivity bound 2b/T; the default is the joystick's (docs/stability.md).
     float wall_stiffness = 56.18f;
+
+    // The effect types the device plays (EnumEffects, §6.2; an I-FORCE 1.x-class device has
+    // no Dynamics, §5.1): effect_type_bit(t) set for each. create() refuses any other type
+    // with ErrorCode::not_supported. Bits beyond the kEffectTypeCount types are invalid.
+    // feel::sim::engine_config_for(profile) takes it from the profile. Default: all 33.
+    uint64_t supported_types = kAllEffectTypes;
+    // The device's class, named in not_supported errors, e.g. "I-FORCE 1.x"; empty for none.
+    // Must outlive the engine (the profiles' names are static).
+    std::string_view device_class = {};
 };
 
 // A handle to an effect slot. The generation makes a handle to a freed slot stale.

@@ -22,6 +22,7 @@
 #include "direction.hpp"
 #include "dynamics/dynamic.hpp"
 #include "effect_clock.hpp"
+#include "engine_support.hpp"
 #include "feel/effect_validation.hpp"
 #include "motion_estimator.hpp"
 #include "sample_pool.hpp"
@@ -60,6 +61,7 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
         return Error::invalid("interim_report_hz", "must be between 1 and 1000 Hz");
     if (!Range{1, 65535}.contains(c.report_capacity))
         return Error::out_of_range("report_capacity", c.report_capacity, {1, 65535});
+    if (Error e = detail::check_supported_types(c)) return e;
     return {};
 }
 
@@ -97,6 +99,7 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
         }
     }
     if (Error e = check_renderable(params.type)) return {{}, e};
+    if (Error e = detail::check_supported(m.config, params.type)) return {{}, e};
 
     int32_t index = -1;
     for (int32_t i = 0; i < m.slot_count; ++i) {

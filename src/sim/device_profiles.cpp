@@ -21,6 +21,11 @@
 namespace feel::sim {
 namespace {
 
+// The control loop's rates the runtime can run (runtime::kMinLoopRateHz..kMaxLoopRateHz in
+// feel/runtime/realtime_loop.hpp; feel_sim does not depend on the runtime).
+constexpr int32_t kMinLoopRateHz = 100;
+constexpr int32_t kMaxLoopRateHz = 20000;
+
 // A linear grip axis, used by the joystick and the 3-axis device.
 constexpr GripModel kLinearLoose{.stiffness = 100, .damping = 2, .added_mass = 0.05};
 constexpr GripModel kLinearFirm{.stiffness = 400, .damping = 6, .added_mass = 0.15};
@@ -75,6 +80,26 @@ constexpr AxisModel three_axis_axis(Axis axis) {
     };
 }
 
+// The local processors (§2.2, §5.1, §6.1). The I-FORCE 2.0 class is DeviceProfile's
+// default: 32 effect slots (the Linux iforce driver's IFORCE_EFFECTS_MAX), 16 KiB of
+// parameter memory and a sample store as large as the pool, every type of the master set
+// (§6.4), local reflexes. An I-FORCE 1.x-class core "supported the basic notions of
+// Conditions and Waves but did not enable Dynamic Sensations" (§5.1). How many effects and
+// bytes such a device holds varies by product: the iforce driver asks the device (its 'N'
+// and 'B' queries) and assumes 10 effects and 200 bytes until it answers. feel's 1.x class
+// takes half the 2.0 slots and a quarter of its memory: 16 slots of the largest wave (an
+// enveloped sweep, 44 bytes) take 704 bytes, and the rest holds about 1.7 s of a one-axis
+// force profile at 1 kHz. It does not run reflexes: the host emulates them (§1.2.c). Its
+// loop runs at the 1 kHz the primer asks for (§2.2, rule ii) and no faster: a processor
+// of that generation has no headroom beyond it (§2.2, "Local Bandwidth Limitations").
+// docs/runtime.md, "Capabilities and device classes", tabulates both.
+constexpr uint64_t kConditionsAndWaves = (effect_type_bit(EffectType::ramp) << 1) - 1;
+static_assert(static_cast<int>(EffectType::ramp) + 1 == static_cast<int>(EffectType::dynamic_recoil),
+              "kConditionsAndWaves relies on EffectType listing conditions, then waves, then dynamics");
+constexpr int32_t kIforce1Slots = 16;
+constexpr int32_t kIforce1PoolBytes = 4 * 1024;
+constexpr int32_t kIforce1LoopRateHz = 1000;
+
 constexpr DeviceProfile kProfiles[] = {
     DeviceProfile{
         .name = "joystick",
@@ -88,6 +113,7 @@ constexpr DeviceProfile kProfiles[] = {
         .loose = kLinearLoose,
         .firm = kLinearFirm,
         .stiff = kLinearStiff,
+        .hat_count = 1,  // a four-way hat on the grip
     },
     DeviceProfile{
         .name = "wheel",
@@ -115,6 +141,48 @@ constexpr DeviceProfile kProfiles[] = {
         .loose = kLinearLoose,
         .firm = kLinearFirm,
         .stiff = kLinearStiff,
+    },
+    // The two classes side by side on the same stick: iforce1 and iforce2 have the
+    // joystick's mechanics, buttons and hat, and differ only in their processor, so that a
+    // sensation can be compared on both.
+    DeviceProfile{
+        .name = "iforce1",
+        .description = "2-axis joystick with an I-FORCE 1.x-class processor: the joystick's "
+                       "mechanics; Conditions and Waves, no Dynamics; 16 effects, 4 KiB; "
+                       "reflexes emulated by the host",
+        .axis_count = 2,
+        .axes = {joystick_axis(Axis::x), joystick_axis(Axis::y)},
+        .button_count = 4,
+        .dead_man_switch = true,
+        .velocity_ref = 1e5,
+        .loose = kLinearLoose,
+        .firm = kLinearFirm,
+        .stiff = kLinearStiff,
+        .device_class = DeviceClass::iforce1,
+        .hat_count = 1,
+        .effect_slots = kIforce1Slots,
+        .pool_bytes = kIforce1PoolBytes,
+        .sample_memory = kIforce1PoolBytes / pool_cost::kSample,
+        .supported_types = kConditionsAndWaves,
+        .local_reflexes = false,
+        .default_loop_rate_hz = kIforce1LoopRateHz,
+        .max_loop_rate_hz = kIforce1LoopRateHz,
+    },
+    DeviceProfile{
+        .name = "iforce2",
+        .description = "2-axis joystick with an I-FORCE 2.0-class processor: the joystick's "
+                       "mechanics; every effect type, Dynamics included; 32 effects, 16 KiB; "
+                       "local reflexes",
+        .axis_count = 2,
+        .axes = {joystick_axis(Axis::x), joystick_axis(Axis::y)},
+        .button_count = 4,
+        .dead_man_switch = true,
+        .velocity_ref = 1e5,
+        .loose = kLinearLoose,
+        .firm = kLinearFirm,
+        .stiff = kLinearStiff,
+        .device_class = DeviceClass::iforce2,
+        .hat_count = 1,
     },
 };
 
@@ -174,7 +242,52 @@ std::string check_axis(int i, const AxisModel& a) {
     return {};
 }
 
+// The local processor's fields: budgets, effect types, loop rates, firmware.
+std::string check_processor(const DeviceProfile& p) {
+    if (p.device_class != DeviceClass::iforce1 && p.device_class != DeviceClass::iforce2) {
+        return "device_class = " + std::to_string(static_cast<int>(p.device_class)) +
+               " is out of range (allowed iforce1, iforce2)";
+    }
+    struct IntField {
+        const char* name;
+        int64_t value, lo, hi;
+    };
+    const IntField fields[] = {
+        {"hat_count", p.hat_count, 0, 4},
+        {"effect_slots", p.effect_slots, 1, 65535},
+        {"pool_bytes", p.pool_bytes, 1, int64_t{1} << 30},
+        {"sample_memory", p.sample_memory, 0, int64_t{1} << 24},
+        {"max_loop_rate_hz", p.max_loop_rate_hz, kMinLoopRateHz, kMaxLoopRateHz},
+        {"default_loop_rate_hz", p.default_loop_rate_hz, kMinLoopRateHz, p.max_loop_rate_hz},
+    };
+    for (const IntField& f : fields) {
+        if (f.value < f.lo || f.value > f.hi) {
+            return std::string(f.name) + " = " + std::to_string(f.value) +
+                   " is out of range (allowed " + std::to_string(f.lo) + ".." +
+                   std::to_string(f.hi) + ")";
+        }
+    }
+    if ((p.supported_types & ~kAllEffectTypes) != 0 || p.supported_types == 0) {
+        char buf[24];
+        std::snprintf(buf, sizeof buf, "0x%llx", static_cast<unsigned long long>(p.supported_types));
+        return std::string("supported_types = ") + buf +
+               " is out of range (allowed a non-empty set of the " +
+               std::to_string(kEffectTypeCount) + " effect types, bits 0.." +
+               std::to_string(kEffectTypeCount - 1) + ")";
+    }
+    if (p.firmware_version.empty()) return "firmware_version is empty (allowed a non-empty name)";
+    return {};
+}
+
 }  // namespace
+
+std::string_view device_class_name(DeviceClass c) noexcept {
+    switch (c) {
+        case DeviceClass::iforce1: return "I-FORCE 1.x";
+        case DeviceClass::iforce2: return "I-FORCE 2.0";
+    }
+    return "unknown device class";
+}
 
 std::span<const DeviceProfile> device_profiles() noexcept { return kProfiles; }
 
@@ -204,7 +317,8 @@ std::string check_device_profile(const DeviceProfile& profile) {
     }
     if (std::string e = check_grip("loose", profile.loose); !e.empty()) return e;
     if (std::string e = check_grip("firm", profile.firm); !e.empty()) return e;
-    return check_grip("stiff", profile.stiff);
+    if (std::string e = check_grip("stiff", profile.stiff); !e.empty()) return e;
+    return check_processor(profile);
 }
 
 }  // namespace feel::sim

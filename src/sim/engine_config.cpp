@@ -28,20 +28,17 @@ constexpr double kMinWallStiffness = 10.0;
 constexpr double kTetherStiffnessOverBound = 2.0;
 constexpr double kMinTetherStiffness = 2.0;
 
-// The local memory of an I-FORCE 2.0-class device (§2.2, docs/runtime.md): 32 effect slots
-// (the Linux iforce driver's IFORCE_EFFECTS_MAX) and 16 KiB of parameter memory, room for
-// every slot to hold a large effect (a sweep with an envelope costs 44 bytes) plus several
-// seconds of force profile at 2 bytes a sample. The sample store can hold the whole pool,
-// so the byte budget is the one limit profiles meet.
-constexpr int32_t kProfileEffectSlots = 32;
-constexpr int32_t kProfilePoolBytes = 16 * 1024;
-
 EngineConfig engine_config_for(const DeviceProfile& profile) noexcept {
     EngineConfig c;
     c.axis_count = profile.axis_count;
-    c.max_effects = kProfileEffectSlots;
-    c.pool_bytes = kProfilePoolBytes;
-    c.max_samples = kProfilePoolBytes / pool_cost::kSample;
+    // The local processor's memory and effect set come from the profile (device_profiles.cpp:
+    // the I-FORCE 2.0 class has 32 slots and 16 KiB, the 1.x class 16 slots and 4 KiB and
+    // no Dynamics), so the engine enforces what the device's capabilities report.
+    c.max_effects = profile.effect_slots;
+    c.pool_bytes = profile.pool_bytes;
+    c.max_samples = profile.sample_memory;
+    c.supported_types = profile.supported_types;
+    c.device_class = device_class_name(profile.device_class);
     const AxisModel& axis = profile.axes[0];
     c.velocity_ref = static_cast<float>(profile.velocity_ref);
     c.acceleration_ref = static_cast<float>(profile.velocity_ref / kTimeToFullSpeed_s);

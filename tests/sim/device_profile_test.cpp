@@ -14,12 +14,14 @@ namespace {
 
 constexpr double kNewtonsPerPoundForce = 4.4482216152605;
 
-TEST(DeviceProfiles, TheBuiltInsAreJoystickWheelAnd3Axis) {
+TEST(DeviceProfiles, TheBuiltInsAreJoystickWheel3AxisAndTheTwoIforceClasses) {
     const auto profiles = device_profiles();
-    ASSERT_EQ(profiles.size(), 3u);
+    ASSERT_EQ(profiles.size(), 5u);
     EXPECT_EQ(profiles[0].name, "joystick");
     EXPECT_EQ(profiles[1].name, "wheel");
     EXPECT_EQ(profiles[2].name, "3axis");
+    EXPECT_EQ(profiles[3].name, "iforce1");
+    EXPECT_EQ(profiles[4].name, "iforce2");
     for (const DeviceProfile& p : profiles) {
         EXPECT_EQ(find_device_profile(p.name), &p);
         EXPECT_EQ(check_device_profile(p), "") << p.name;

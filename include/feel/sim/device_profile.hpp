@@ -43,8 +43,16 @@ struct GripModel {
     double added_mass = 0;  // kg or kg·m²
 };
 
+// The generation of the device's local processor (§2.2, §5.1, §6.1). An I-FORCE 1.x-class
+// core plays Conditions and Waves but no Dynamics, holds fewer effects and does not run
+// reflexes (the host emulates them, §1.2.c); an I-FORCE 2.0-class core plays the whole
+// master set of §6.4 and runs reflexes. docs/runtime.md, "Capabilities and device classes".
+enum class DeviceClass : uint8_t { iforce1, iforce2 };
+// "I-FORCE 1.x", "I-FORCE 2.0".
+[[nodiscard]] std::string_view device_class_name(DeviceClass c) noexcept;
+
 struct DeviceProfile {
-    std::string_view name;         // "joystick", "wheel", "3axis"
+    std::string_view name;         // "joystick", "wheel", "3axis", "iforce1", "iforce2"
     std::string_view description;
     int32_t axis_count = 0;        // 1..6; axes[i].axis must be axis i (x, y, z, rx, ry, rz)
     AxisModel axes[kMaxAxes] = {};
@@ -55,16 +63,32 @@ struct DeviceProfile {
     bool dead_man_switch = true;
     double velocity_ref = 1e5;     // normalized position units/s that read as velocity 10000
     GripModel loose{}, firm{}, stiff{};  // per axis, same on every axis of the device
+
+    // The local processor (§2.2): what it plays and how much it holds. The defaults are the
+    // I-FORCE 2.0 class; check_device_profile() states each range.
+    DeviceClass device_class = DeviceClass::iforce2;
+    int32_t hat_count = 0;            // 0..4 hat switches (TickInput::hats, reflex triggers)
+    int32_t effect_slots = 32;        // 1..65535: effects resident at once
+    int32_t pool_bytes = 16 * 1024;   // 1..2^30: parameter memory, bytes (engine.hpp pool_cost)
+    int32_t sample_memory = 8 * 1024; // 0..2^24: force-profile sample storage, samples
+    // The effect types it plays: effect_type_bit(t) for each (engine.hpp); no bit beyond
+    // the kEffectTypeCount types.
+    uint64_t supported_types = kAllEffectTypes;
+    bool local_reflexes = true;       // runs trigger-button reflexes itself (§1.2.c)
+    int32_t default_loop_rate_hz = 1000;  // Hz, 100..max_loop_rate_hz: the control loop (§2.2)
+    int32_t max_loop_rate_hz = 20000;     // Hz, 100..20000 (the runtime's loop limits)
+    std::string_view firmware_version = "feel-sim 0.1.0";  // not empty
 };
 
-// The built-in profiles, in the order "joystick", "wheel", "3axis".
+// The built-in profiles, in the order "joystick", "wheel", "3axis", "iforce1", "iforce2".
 [[nodiscard]] std::span<const DeviceProfile> device_profiles() noexcept;
 // nullptr when no built-in profile has this name.
 [[nodiscard]] const DeviceProfile* find_device_profile(std::string_view name) noexcept;
 
 // What the engine needs to know of a device, in normalized units: its axes, velocity and
 // acceleration scales, sensor resolution and mechanical damping (from axis 0, the profiles'
-// axes share them). See docs/conventions.md.
+// axes share them), and its local processor's budgets and effect types (effect_slots,
+// pool_bytes, sample_memory, supported_types, device_class). See docs/conventions.md.
 [[nodiscard]] EngineConfig engine_config_for(const DeviceProfile& profile) noexcept;
 
 // Empty when the profile is usable by SimDevice; otherwise a sentence naming the first bad

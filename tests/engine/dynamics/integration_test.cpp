@@ -255,6 +255,7 @@ std::vector<ControlLawBlock> extreme_laws() {
 
 TEST(CoupledLoop, StableOnEveryProfileAtTheExtremesFreeAndGripped) {
     for (const sim::DeviceProfile& profile : sim::device_profiles()) {
+        if (!(profile.supported_types & effect_type_bit(EffectType::dynamic_control_law))) continue;  // I-FORCE 1.x: no Dynamics
         const double count = sim::engine_config_for(profile).sensor_step;
         for (sim::Grip grip : {sim::Grip::none, sim::Grip::loose, sim::Grip::firm, sim::Grip::stiff}) {
             for (const ControlLawBlock& law : extreme_laws()) {
@@ -283,6 +284,7 @@ TEST(CoupledLoop, AFullRecoilOnTheHeaviestMassSettlesWithAFreeHandle) {
     // holding the handle.
     for (const sim::DeviceProfile& profile : sim::device_profiles()) {
         if (profile.axis_count < 2) continue;  // recoil plays on x and y
+        if (!(profile.supported_types & effect_type_bit(EffectType::dynamic_recoil))) continue;  // I-FORCE 1.x: no Dynamics
         const LoopRun run = run_loop(profile, sim::Grip::none, recoil_params(4500, 10000, 10000, 10000, 0));
         ASSERT_TRUE(run.finite) << profile.name;
         EXPECT_LE(run.last_swing, std::max(3.0 * sim::engine_config_for(profile).sensor_step, 0.25 * run.first_swing))
