@@ -19,6 +19,7 @@
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/realtime_loop.hpp"
 #include "feel/sim/device_profile.hpp"
+#include "support/valid_effects.hpp"
 
 namespace feel::runtime {
 namespace {
@@ -29,131 +30,10 @@ const sim::DeviceProfile& profile(const char* name) {
     return *p;
 }
 
-void set_axes(EffectParams& p, std::initializer_list<Axis> axes) {
-    p.axis_count = static_cast<int32_t>(axes.size());
-    int i = 0;
-    for (Axis a : axes) p.axes[i++] = a;
-}
-
-// A small valid effect of each type, from the primer's examples and ranges (§6.6, §7.5).
-EffectParams valid_effect(EffectType t) {
-    EffectParams p;
-    p.type = t;
-    p.duration_us = 1'000'000;
-    set_axes(p, {Axis::x});
-    const ConditionBlock spring{1000, 1000, 0, 10000, 10000, 0};
-    switch (effect_class(t)) {
-        case EffectClass::condition:
-            set_axes(p, {Axis::x, Axis::y});
-            p.conditions[0] = spring;
-            p.conditions[1] = spring;
-            break;
-        case EffectClass::wave:
-        case EffectClass::dynamic: break;
-    }
-    switch (t) {
-        case EffectType::angle_spring:
-            p.direction = {DirectionKind::polar, {4500, 0, 0}};
-            break;
-        case EffectType::texture:
-            set_axes(p, {Axis::y});
-            p.texture = {5000, 5000, 2000, 7500};
-            break;
-        case EffectType::axis_wall:
-            set_axes(p, {Axis::x});
-            p.wall.hardness = 8000;
-            p.wall.offset = 5000;
-            break;
-        case EffectType::angle_wall:
-            p.wall.hardness = 8000;
-            p.wall.angle = 4500;
-            break;
-        case EffectType::axis_barrier:
-            set_axes(p, {Axis::x});
-            p.barrier = {5000, 5000, 1000, 0, 0, 0, 0};
-            break;
-        case EffectType::angle_barrier:
-            p.barrier = {5000, 5000, 1000, 0, 13500, 0, 0};
-            break;
-        case EffectType::vector_force:
-        case EffectType::constant:
-        case EffectType::smart_pop: p.constant.magnitude = 7500; break;
-        case EffectType::sine:
-        case EffectType::square:
-        case EffectType::triangle:
-        case EffectType::saw_up:
-        case EffectType::saw_down:
-            p.periodic.magnitude = 2000;
-            p.periodic.period_us = 10'000;
-            break;
-        case EffectType::sweep_sine:
-        case EffectType::sweep_square:
-        case EffectType::sweep_triangle:
-        case EffectType::sweep_saw_up:
-        case EffectType::sweep_saw_down:
-            set_axes(p, {Axis::x, Axis::y});
-            p.periodic.magnitude = -3000;
-            p.periodic.period_us = 50'000;
-            p.periodic.sweep_end_angle = 18000;
-            break;
-        case EffectType::force_profile: p.custom = {1, 10'000, 4}; break;
-        case EffectType::ramp: p.ramp = {0, -6000}; break;
-        case EffectType::dynamic_recoil:
-            set_axes(p, {Axis::x, Axis::y});
-            p.dynamic.blast_direction = 18000;
-            p.dynamic.blast_intensity = 8000;
-            p.dynamic.dynamic_mass = 500;
-            p.dynamic.blast_resonance = 3000;
-            p.dynamic.blast_decay = 200;
-            break;
-        case EffectType::dynamic_impact:
-            set_axes(p, {Axis::x, Axis::y});
-            p.dynamic.impact_direction = 9000;
-            p.dynamic.impact_intensity = -4000;
-            p.dynamic.dynamic_mass = 800;
-            p.dynamic.elasticity = 6000;
-            p.dynamic.collision_absorption = 300;
-            break;
-        case EffectType::dynamic_liquid:
-            p.dynamic.density = 400;
-            p.dynamic.settle = 2000;
-            p.dynamic.viscosity = 700;
-            break;
-        case EffectType::dynamic_inertia:
-            p.dynamic.inertia = 900;
-            p.dynamic.play = 100;
-            break;
-        case EffectType::dynamic_center_drift:
-            p.dynamic.stiffness = 3000;
-            p.dynamic.drift_resistance = 500;
-            break;
-        case EffectType::dynamic_control_law:
-            p.dynamic.control_law[0] = {100, 2000, 2000, 10, 0, 0, 0, 0, 0, 0};
-            break;
-        case EffectType::dynamic_sling:
-            set_axes(p, {Axis::x, Axis::y});
-            p.dynamic.ball_mass = 300;
-            p.dynamic.string_length = 4000;
-            p.dynamic.string_compliance = 2000;
-            p.dynamic.ball_damping = 100;
-            break;
-        case EffectType::dynamic_paddle:
-            set_axes(p, {Axis::x, Axis::y});
-            p.dynamic.ball_mass = 300;
-            p.dynamic.initial_velocity = 6000;
-            p.dynamic.paddle_compliance = 4000;
-            p.dynamic.paddle_damping = 100;
-            p.dynamic.gravity = -2000;
-            break;
-        default: break;
-    }
-    return p;
-}
-
-const std::vector<int16_t> kFourSamples = {1000, -1000, 5000, 0};
+using test::valid_effect;
 
 CreateResult create(Engine& engine, const EffectParams& p) {
-    if (p.type == EffectType::force_profile) return engine.create(p, kFourSamples);
+    if (p.type == EffectType::force_profile) return engine.create(p, test::kFourSamples);
     return engine.create(p);
 }
 

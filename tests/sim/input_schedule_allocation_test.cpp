@@ -8,37 +8,27 @@
 
 #include "feel/sim/input_schedule.hpp"
 #include "feel/sim/sim_device.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/counting_allocator.hpp"
 
 namespace feel::sim {
 namespace {
 
 TEST(InputScheduleAllocation, ApplyNeverAllocates) {
+    counting = true;  // this binary counts from here to its end
     const DeviceProfile& joystick = *find_device_profile("joystick");
     InputSchedule schedule(joystick);
     {  // The counter sees allocations: adding events grows the list.
-        const long before = g_allocations.load();
+        const long before = allocations.load();
         for (int64_t t = 0; t < 2'000'000; t += 1'000) {
             schedule.press(t, 1 + static_cast<int32_t>(t / 1000 % 4));
             if (t % 7000 == 0) schedule.let_go(t);
             if (t % 7000 == 3000) schedule.grab(t);
             if (t % 5000 == 0) schedule.set_buttons(t, 0);
         }
-        ASSERT_GT(g_allocations.load() - before, 0);
+        ASSERT_GT(allocations.load() - before, 0);
     }
     SimDevice device(joystick, Grip::firm, TargetMotion::parse("circle:5000:1", 2, 2));
-    const long before = g_allocations.load();
+    const long before = allocations.load();
     int64_t applied = 0;
     for (int64_t t = 0; t < 2'000'000; t += 1'000) {
         applied += schedule.apply(device, t);
@@ -47,7 +37,7 @@ TEST(InputScheduleAllocation, ApplyNeverAllocates) {
         const float force[kMaxAxes] = {in.handle_held ? 5000.0f : 0.0f, -in.position[0]};
         device.step(force, 1e-3);
     }
-    EXPECT_EQ(g_allocations.load() - before, 0);
+    EXPECT_EQ(allocations.load() - before, 0);
     EXPECT_EQ(applied, static_cast<int64_t>(schedule.size()));
 }
 

@@ -10,43 +10,33 @@
 #include <string>
 
 #include "feel/sim/sim_device.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/counting_allocator.hpp"
 
 namespace feel::sim {
 namespace {
 
 TEST(StepAllocation, StepAndSenseNeverAllocate) {
+    counting = true;  // this binary counts from here to its end
     const std::string csv =
         (std::filesystem::path(::testing::TempDir()) / "alloc_motion.csv").string();
     std::ofstream(csv) << "t_us,x,y\n0,0,0\n500000,5000,-5000\n1000000,0,0\n";
     const DeviceProfile& joystick = *find_device_profile("joystick");
     {  // The counter sees allocations: building a csv motion allocates its table.
-        const long before = g_allocations.load();
+        const long before = allocations.load();
         const TargetMotion table = TargetMotion::parse("csv:" + csv, 1, 2);
-        ASSERT_GT(g_allocations.load() - before, 0);
+        ASSERT_GT(allocations.load() - before, 0);
     }
     for (Grip grip : {Grip::none, Grip::loose, Grip::firm, Grip::stiff, Grip::kinematic}) {
         for (const std::string& motion : {std::string("circle:5000:1"), "csv:" + csv}) {
             SimDevice device(joystick, grip, TargetMotion::parse(motion, 1, 2));
-            const long before = g_allocations.load();
+            const long before = allocations.load();
             for (int n = 0; n < 2000; ++n) {
                 TickInput in;
                 device.sense(in);
                 const float force[kMaxAxes] = {n % 2 ? 10000.0f : -10000.0f, in.position[0]};
                 device.step(force, n % 5 == 0 ? 1e-2 : 1e-3);
             }
-            EXPECT_EQ(g_allocations.load() - before, 0) << grip_name(grip) << " " << motion;
+            EXPECT_EQ(allocations.load() - before, 0) << grip_name(grip) << " " << motion;
         }
     }
 }

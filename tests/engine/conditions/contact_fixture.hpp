@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 
+#include "conditions/condition_fixture.hpp"
 #include "feel/engine.hpp"
 
 namespace feel::test::contact {
@@ -92,40 +93,15 @@ inline double push_back(double k, double depth) {
     return depth > 0 ? std::clamp(k * depth, -10000.0, 10000.0) : 0.0;
 }
 
-class ContactFixture : public ::testing::Test {
+// The condition fixture, configured for contacts, with a shorter name for a tick.
+class ContactFixture : public ConditionFixture {
 protected:
     ContactFixture() { reset(contact_config()); }
 
-    void reset(const EngineConfig& config) {
-        config_ = config;
-        engine_ = std::make_unique<Engine>(config_);
-        t_us_ = 0;
-    }
-
-    EffectId play(const EffectParams& p) {
-        const CreateResult r = engine_->create(p);
-        EXPECT_TRUE(r.error.ok()) << r.error.message();
-        EXPECT_TRUE(engine_->start(r.id).ok());
-        return r.id;
-    }
-
     // One tick with the handle at (x, y, z); advances the clock by one tick.
-    TickOutput at(double x, double y = 0, double z = 0) {
-        TickInput in;
-        in.t_us = t_us_;
-        in.position[0] = static_cast<float>(x);
-        in.position[1] = static_cast<float>(y);
-        in.position[2] = static_cast<float>(z);
-        TickOutput out;
-        engine_->tick(in, out);
-        t_us_ += kTickUs;
-        return out;
-    }
+    TickOutput at(double x, double y = 0, double z = 0) { return tick_at(x, y, z); }
 
-    static constexpr int64_t kTickUs = 1000;
-    EngineConfig config_;
-    std::unique_ptr<Engine> engine_;
-    int64_t t_us_ = 0;
+    static constexpr int64_t kTickUs = 1000;  // ConditionFixture's default tick
 };
 
 }  // namespace feel::test::contact
