@@ -11,6 +11,7 @@ packages=(
   libbenchmark-dev     # benchmarks
   librapidcheck-dev    # property tests
   libcairo2-dev        # plots (SVG and PNG)
+  libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
 )
 
 missing=()

@@ -1,0 +1,92 @@
+// feel::peripheral — the simulated device as a USB-like peripheral.
+//
+// A Peripheral is what sits at the far end of the cable: the device runtime (the primer's
+// local processor, feel/runtime/device_runtime.hpp) on its simulated device and hand,
+// plus its "USB side": a service thread that reads the host's reports from a transport
+// Connection, turns them into runtime commands (DeviceSession), and sends the runtime's
+// acks, state and dynamics' reports back as HID input reports (docs/protocol.md).
+//
+//   host process                         device process (`feel device --sim`) or in-process
+//   ------------                         ---------------------------------------------------
+//   feel::host::Device --Connection--> Peripheral: service thread -> DeviceSession
+//                                                    -> SPSC queues -> 1 kHz RealtimeLoop
+//
+// One host at a time, like a USB device: a second connection while a host is attached gets
+// a `busy` frame and is closed. When the host goes away (disconnect, or silence past the
+// safety watchdog), the runtime fades the forces out and stops every effect; the next host
+// finds a reset device.
+//
+// Threads. The constructor builds and starts the runtime's loop; attach() and serve() start
+// service threads; stop() and the destructor join them. Every public call is for one owner
+// thread (a CLI's main, a test), except stats(), capabilities() and host_attached(), which
+// any thread may call. Nothing here runs on the real-time loop.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "feel/runtime/capabilities.hpp"
+#include "feel/runtime/device_runtime.hpp"
+#include "feel/sim/hand.hpp"
+#include "feel/transport/transport.hpp"
+
+namespace feel::peripheral {
+
+struct PeripheralOptions {
+    std::string profile = "iforce2";   // a device profile name (feel devices)
+    std::string hand = "firm";         // none, loose, firm, stiff, kinematic (sim::Grip)
+    std::string motion = "hold:0";     // the hand's target motion (feel render --motion)
+    int32_t loop_rate_hz = 0;          // 0: the profile's default; else 100..20000
+    runtime::DeviceRuntimeOptions runtime{};  // SCHED_FIFO / mlockall wishes
+};
+
+struct PeripheralStats {
+    runtime::DeviceRuntimeStats runtime{};
+    uint64_t hosts_served = 0;       // connections attached since construction
+    uint64_t reports_received = 0;   // host reports decoded
+    uint64_t reports_refused = 0;    // of those, answered with an error status
+    uint64_t frames_sent = 0;
+    bool host_attached = false;
+};
+
+class Peripheral {
+public:
+    // Builds the device and starts its loop. Throws std::invalid_argument naming the option
+    // that is wrong (an unknown profile lists the known ones).
+    explicit Peripheral(const PeripheralOptions& options);
+    // Detaches the host (its connection is closed), stops the service threads and the loop.
+    ~Peripheral();
+    Peripheral(const Peripheral&) = delete;
+    Peripheral& operator=(const Peripheral&) = delete;
+
+    // Serves one host over this connection on a service thread until the host disconnects
+    // or stop(). While a host is attached, a new connection gets `busy` and is closed.
+    void attach(std::unique_ptr<transport::Connection> host);
+    // Accepts hosts from the listener on a thread of its own until stop(), attaching each.
+    void serve(std::unique_ptr<transport::Listener> listener);
+    // Stops accepting, detaches the host, joins the threads; the loop keeps running until
+    // destruction. Harmless when already stopped.
+    void stop();
+
+    [[nodiscard]] bool host_attached() const noexcept;
+    [[nodiscard]] const runtime::Capabilities& capabilities() const noexcept;
+    [[nodiscard]] PeripheralStats stats() const noexcept;
+    // Where serve() listens (valid after serve()).
+    [[nodiscard]] transport::Address address() const;
+
+    // The device's runtime, e.g. for a test to reach the simulated device while the loop is
+    // stopped (runtime().stop(); ...; runtime().start()).
+    [[nodiscard]] runtime::DeviceRuntime& runtime() noexcept;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Opens an in-process simulated device and returns the host's end of its connection: the
+// Peripheral lives as long as the returned connection (the connection owns it). What
+// feel::host::Device::open("sim:PROFILE") uses.
+[[nodiscard]] std::unique_ptr<transport::Connection> open_in_process(const PeripheralOptions& options);
+
+}  // namespace feel::peripheral

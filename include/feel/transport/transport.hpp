@@ -1,0 +1,152 @@
+// feel::transport — the cable between a host and a feel device.
+//
+// A feel device is a USB HID PID peripheral (docs/protocol.md). What travels between host
+// and device is what travels over USB: output reports, input reports, feature reports set
+// and got, and the report descriptor. A Frame is one of those, tagged with its kind; a
+// Connection carries frames both ways, in order, whole or not at all.
+//
+// Three transports carry the same frames:
+//   sim:PROFILE         in-process: a pair of queues, for tests and for embedding the
+//                       simulated device in the host process (the default device)
+//   unix:PATH           a framed byte stream over a Unix domain socket
+//   tcp:HOST:PORT       the same framed stream over TCP (loopback by default)
+// On a byte stream each frame is [kind: u8][length: u16 little-endian][payload: length
+// bytes], length <= kMaxFramePayload. A frame of an unknown kind or an oversized length is
+// a protocol violation: the receiver closes the connection (a device never trusts its host).
+//
+// Threads. One thread may send while another receives on the same Connection; close() may
+// be called from any thread and wakes a blocked receive(). Nothing here is real-time safe:
+// transports run on the host's I/O thread and on the device's "USB side" service thread,
+// never on the device's 1 kHz loop (which only sees the runtime's SPSC queues).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace feel::transport {
+
+enum class FrameKind : uint8_t {
+    output_report = 1,     // host -> device: an output report (payload[0] = report id)
+    input_report = 2,      // device -> host: an input report (payload[0] = report id)
+    set_feature = 3,       // host -> device: SET_REPORT(Feature) (payload[0] = report id)
+    get_feature = 4,       // host -> device: GET_REPORT(Feature); payload = {report id}
+    feature_reply = 5,     // device -> host: the feature report asked for (payload[0] = id)
+    get_descriptor = 6,    // host -> device: GET_DESCRIPTOR(Report); empty payload
+    descriptor_reply = 7,  // device -> host: the HID report descriptor bytes
+    busy = 8,              // device -> host: another host holds the device; then it closes
+};
+inline constexpr int kFrameKindCount = 8;
+[[nodiscard]] std::string_view frame_kind_name(FrameKind kind) noexcept;
+
+// The largest payload a frame may carry, bytes (the report descriptor is the largest).
+inline constexpr std::size_t kMaxFramePayload = 4096;
+// Bytes of a frame's header on a byte stream: kind + length.
+inline constexpr std::size_t kFrameHeaderBytes = 3;
+
+struct Frame {
+    FrameKind kind = FrameKind::output_report;
+    std::vector<uint8_t> payload;  // 0..kMaxFramePayload bytes
+
+    friend bool operator==(const Frame&, const Frame&) = default;
+};
+
+// Why a transport gave up. what() says it in words, naming the address.
+class TransportError : public std::runtime_error {
+public:
+    enum class Kind : uint8_t {
+        disconnected,  // the peer closed, or the connection was closed here
+        refused,       // nothing listens at the address, or it cannot be bound
+        bad_frame,     // the peer sent bytes that are not a frame (the connection is closed)
+        timeout,       // connect() found no peer in time
+    };
+    TransportError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    [[nodiscard]] Kind kind() const noexcept { return kind_; }
+
+private:
+    Kind kind_;
+};
+
+// Where a device is. Parsed from and printed as "sim:PROFILE", "unix:PATH" or
+// "tcp:HOST:PORT" (every command's --device and `feel device --listen`).
+struct Address {
+    enum class Kind : uint8_t { sim, unix_socket, tcp };
+    Kind kind = Kind::sim;
+    std::string profile = "iforce2";  // sim: a device profile name (feel devices)
+    std::string path;                 // unix_socket: the socket's file path
+    std::string host = "127.0.0.1";   // tcp: a host name or address
+    uint16_t port = 0;                // tcp: 1..65535 (0 only to listen on any free port)
+
+    // Throws std::invalid_argument naming what is wrong and the forms allowed, e.g.
+    //   "tcp:localhost" is not an address: the port is missing (allowed sim:PROFILE,
+    //   unix:PATH or tcp:HOST:PORT with PORT 1..65535)
+    // A bare profile name ("iforce1") is read as sim:iforce1. The profile is not checked
+    // here (the device checks it when it is built).
+    [[nodiscard]] static Address parse(std::string_view text);
+    [[nodiscard]] std::string to_string() const;
+
+    friend bool operator==(const Address&, const Address&) = default;
+};
+
+// One end of a connection. Frames arrive whole and in the order sent.
+class Connection {
+public:
+    virtual ~Connection() = default;
+    // Sends one frame. Throws std::invalid_argument for a payload over kMaxFramePayload,
+    // TransportError(disconnected) when the connection is gone.
+    virtual void send(const Frame& frame) = 0;
+    // Waits up to `timeout` for the next frame: std::nullopt when none came in time.
+    // Throws TransportError(disconnected) once the peer closed (after every frame it sent
+    // was received) or close() was called, TransportError(bad_frame) when the peer sent
+    // something that is not a frame (the connection is then closed).
+    virtual std::optional<Frame> receive(std::chrono::milliseconds timeout) = 0;
+    // Closes both directions; a receive() blocked in another thread returns at once (by
+    // throwing disconnected). Harmless when already closed.
+    virtual void close() noexcept = 0;
+    // The peer, for messages: "sim:iforce2", "unix:/run/user/1000/feel/sim.sock", ...
+    [[nodiscard]] virtual std::string peer() const = 0;
+};
+
+// A place devices wait for hosts.
+class Listener {
+public:
+    virtual ~Listener() = default;
+    // Waits up to `timeout` for a host: nullptr when none came. Throws TransportError
+    // (disconnected) after close().
+    virtual std::unique_ptr<Connection> accept(std::chrono::milliseconds timeout) = 0;
+    // Stops listening (a Unix socket's file is removed); a blocked accept() returns.
+    virtual void close() noexcept = 0;
+    // The address hosts connect to: for tcp with port 0, the port actually bound.
+    [[nodiscard]] virtual Address address() const = 0;
+};
+
+// Listens at a unix: or tcp: address. A Unix socket path whose file exists but where no
+// one listens is taken over (a stale socket of a device that crashed); one where a device
+// listens is refused. Throws TransportError(refused) naming the address and the reason,
+// std::invalid_argument for a sim: address (in-process devices need no listener).
+[[nodiscard]] std::unique_ptr<Listener> listen(const Address& address);
+
+// Connects to a unix: or tcp: address, waiting up to `timeout`. Throws
+// TransportError(refused or timeout) naming the address; std::invalid_argument for sim:
+// (open those with feel::peripheral, see feel/host/device.hpp).
+[[nodiscard]] std::unique_ptr<Connection> connect(const Address& address,
+                                                  std::chrono::milliseconds timeout);
+
+// Two connected in-process ends: what one sends, the other receives. `name` is what peer()
+// says on both ends.
+struct ConnectionPair {
+    std::unique_ptr<Connection> host;
+    std::unique_ptr<Connection> device;
+};
+[[nodiscard]] ConnectionPair in_process_pair(std::string name = "sim");
+
+// Where devices put their Unix sockets when no --listen path is given, and where
+// enumeration looks for them: $XDG_RUNTIME_DIR/feel, else /tmp/feel-UID. Not created here.
+[[nodiscard]] std::string default_socket_dir();
+
+}  // namespace feel::transport
