@@ -6,7 +6,7 @@ BUILD_TYPE ?= RelWithDebInfo
 # CI (which sets CI=true) turns warnings into errors.
 WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
-FUZZ_SECONDS ?= 30
+FUZZ_SECONDS ?= 15
 
 .PHONY: all deps build demo plots test unit-tests fuzz bench clean
 
@@ -37,15 +37,21 @@ test: build fuzz unit-tests
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
 
-# The sensation-file parser under libFuzzer (clang), for a bounded time. New inputs go to
-# the build tree; the committed seeds in fuzz/corpus are only read.
+# Every parser and decoder under libFuzzer (clang), each for a bounded time: the
+# sensation-file reader, the protocol's report decoder and the device's protocol session.
+# New inputs go to the build tree; the committed seeds in fuzz/corpus/<target> are only read.
+FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session
 fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DFEEL_WERROR=$(WERROR) -DFEEL_BUILD_FUZZ=ON -DFEEL_BUILD_TESTS=OFF -DFEEL_BUILD_BENCH=OFF
-	cmake --build $(BUILD)-fuzz --target fuzz_sensation_file
-	@mkdir -p $(BUILD)-fuzz/corpus
-	$(BUILD)-fuzz/fuzz/fuzz_sensation_file -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
-	    -dict=fuzz/sensation_file.dict $(BUILD)-fuzz/corpus fuzz/corpus/sensation_file
+	cmake --build $(BUILD)-fuzz --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	    mkdir -p $(BUILD)-fuzz/corpus/$$t; \
+	    dict=; [ -f fuzz/$$t.dict ] && dict=-dict=fuzz/$$t.dict; \
+	    echo "fuzz_$$t: $(FUZZ_SECONDS) s"; \
+	    $(BUILD)-fuzz/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $$dict \
+	        $(BUILD)-fuzz/corpus/$$t fuzz/corpus/$$t; \
+	done
 
 # Every sensation of every example file, rendered and plotted under out/examples/.
 plots: build

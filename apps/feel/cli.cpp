@@ -1,11 +1,16 @@
 // The command-line grammar (CLI11) and the one place that turns errors into exit codes.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <exception>
+#include <iostream>
+#include <optional>
 #include <ostream>
 #include <vector>
 
 #include "cli.hpp"
+#include "device_command.hpp"
+#include "interrupt.hpp"
 
 namespace feel::cli {
 namespace {
@@ -48,17 +53,91 @@ void add_check(CLI::App& app, CheckArgs& a) {
     cmd->footer(kExitCodes);
 }
 
-void add_devices(CLI::App& app) {
-    app.add_subcommand("devices", "List the simulated device profiles")->footer(kExitCodes);
+constexpr const char* kDeviceHelp =
+    "The device: sim:PROFILE (in process; PROFILE joystick, wheel, 3axis, iforce1 or iforce2), "
+    "unix:PATH or tcp:HOST:PORT (a `feel device` process); a bare PROFILE means sim:PROFILE";
+
+void add_devices(CLI::App& app, DevicesArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "devices", "List the devices a host can open: the in-process simulated devices and the "
+                   "`feel device` processes listening on Unix sockets");
+    cmd->add_option("--socket-dir", a.socket_dirs,
+                    "Directory whose Unix sockets are probed (repeatable; default: "
+                    "$XDG_RUNTIME_DIR/feel, else /tmp/feel-UID)");
+    cmd->footer(kExitCodes);
 }
 
 void add_caps(CLI::App& app, CapsArgs& a) {
     CLI::App* cmd = app.add_subcommand(
         "caps", "Print a device's capabilities: axes, buttons, forces, effect types, memory, "
                 "loop rate, firmware and protocol versions");
-    cmd->add_option("--device", a.device,
-                    "Simulated device: joystick, wheel, 3axis, iforce1 or iforce2 (feel devices)")
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    cmd->footer(kExitCodes);
+}
+
+void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds_option) {
+    CLI::App* cmd = app.add_subcommand(
+        "play", "Load a sensation file onto a device and play one sensation, showing the elapsed "
+                "time, the force on each axis and the effects' states live, then the peaks");
+    cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
+    cmd->add_option("--sensation", a.sensation, "Name of the sensation to play")->required();
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    seconds_option = cmd->add_option("--seconds", seconds,
+                                     "Stop after this many seconds, 0 < s <= 3600 (default: when the "
+                                     "sensation ends, at most 10 s for one that never ends)");
+    cmd->add_option("--iterations", a.iterations,
+                    "Play each effect this many times: a whole number 1..254 or infinite (default: "
+                    "each effect's own count)");
+    cmd->footer(kExitCodes);
+}
+
+void add_stream(CLI::App& app, StreamArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "stream", "Force streaming demo (§2.4): the host sends a force waveform on x sample by "
+                  "sample; shows the samples next to the force the device applied and how "
+                  "faithfully it reconstructed them");
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    cmd->add_option("--rate", a.rate_hz, "Samples per second, a whole number of Hz 1..1000")
         ->capture_default_str();
+    cmd->add_option("--seconds", a.seconds, "Seconds to stream, 0 < s <= 600")->capture_default_str();
+    cmd->add_option("--shape", a.shape, "Waveform: sine, square, or step (0, then the amplitude "
+                                        "from half-way)")
+        ->capture_default_str();
+    cmd->add_option("--amplitude", a.amplitude, "Amplitude, normalized force 0..10000")->capture_default_str();
+    cmd->add_option("--frequency", a.frequency_hz, "Frequency of sine and square, 0 < Hz <= rate / 2")
+        ->capture_default_str();
+    cmd->footer(kExitCodes);
+}
+
+void add_monitor(CLI::App& app, MonitorArgs& a, double& seconds, CLI::Option*& seconds_option) {
+    CLI::App* cmd = app.add_subcommand(
+        "monitor", "Watch a device live: its effects, the force on each axis, the loop rate it "
+                   "measures, overruns and the safety state, refreshed 5 times a second");
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    seconds_option = cmd->add_option("--seconds", seconds,
+                                     "Stop after this many seconds, 0 < s <= 86400 (default: run until "
+                                     "Ctrl-C)");
+    cmd->add_option("--sensation", a.sensation,
+                    "FILE:NAME: load the sensation file and play this sensation while watching");
+    cmd->footer(kExitCodes);
+}
+
+void add_device(CLI::App& app, DeviceArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "device", "Run the simulated device and its runtime as a process of its own, like a "
+                  "peripheral on a cable: it listens for one host at a time until Ctrl-C or SIGTERM");
+    cmd->add_flag("--sim", a.sim, "Run the simulated device (required)");
+    cmd->add_option("--profile", a.profile, "Device profile: joystick, wheel, 3axis, iforce1 or iforce2")
+        ->capture_default_str();
+    cmd->add_option("--listen", a.listen,
+                    "Where hosts connect: unix:PATH or tcp:HOST:PORT (port 0: any free port) "
+                    "(default: unix:<socket dir>/<profile>.sock, the socket dir as for feel devices)");
+    cmd->add_option("--hand", a.hand, "How the simulated hand holds the handle: none, loose, firm, stiff or "
+                                      "kinematic")
+        ->capture_default_str();
+    cmd->add_option("--motion", a.motion, "The hand's target motion, as for feel render")->capture_default_str();
+    cmd->add_option("--rate", a.rate_hz, "Loop rate, a whole number of Hz 100..the profile's maximum "
+                                         "(default: the profile's rate)");
     cmd->footer(kExitCodes);
 }
 
@@ -74,6 +153,8 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->add_option("--seconds", a.seconds, "Seconds to run, 1..3600")->capture_default_str();
     loop->footer(kExitCodes);
 }
+
+constexpr const char* kCommands = "render, check, devices, caps, play, stream, monitor, device, bench";
 
 // The chain of subcommands the command line selected, outermost first.
 std::vector<const CLI::App*> chosen(const CLI::App& app) {
@@ -118,9 +199,9 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
                join(unknown_flags);
     }
     if (app.get_subcommands().empty()) {
-        if (args.size() <= 1) return "no command given (available: render, check, devices, caps, bench)";
+        if (args.size() <= 1) return std::string("no command given (available: ") + kCommands + ")";
         if (!args[1].empty() && args[1][0] != '-') {
-            return "unknown command \"" + args[1] + "\" (available: render, check, devices, caps, bench)";
+            return "unknown command \"" + args[1] + "\" (available: " + kCommands + ")";
         }
     }
     if (scopes.back()->get_name() == "bench") {  // "feel bench" without a benchmark
@@ -130,11 +211,22 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
     return e.what();
 }
 
+// Whether the command runs until its work ends or it is asked to stop (signals matter).
+bool long_running(const CLI::App& app) {
+    for (const char* name : {"device", "play", "stream", "monitor"}) {
+        if (app.got_subcommand(name)) return true;
+    }
+    return false;
+}
+
+// Set by run_main: SIGINT and SIGTERM stop the long-running commands cleanly.
+bool g_handle_stop_signals = false;
+
 }  // namespace
 
 int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     CLI::App app{"feel renders force-feedback sensations (I-FORCE 2.0 / DirectX 5 effects) on a "
-                 "simulated device.",
+                 "simulated device and plays them on devices through the host API.",
                  "feel"};
     app.set_version_flag("--version", kVersion);
     app.require_subcommand(1);
@@ -143,14 +235,31 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     RenderArgs render_args;
     CheckArgs check_args;
     BenchLoopArgs bench_loop_args;
+    DevicesArgs devices_args;
     CapsArgs caps_args;
+    PlayArgs play_args;
+    StreamArgs stream_args;
+    MonitorArgs monitor_args;
+    DeviceArgs device_args;
     double duration_s = 0;
     CLI::Option* duration = nullptr;
+    double play_seconds = 0;
+    CLI::Option* play_seconds_option = nullptr;
+    double monitor_seconds = 0;
+    CLI::Option* monitor_seconds_option = nullptr;
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
-    add_devices(app);
+    add_devices(app, devices_args);
     add_caps(app, caps_args);
+    add_play(app, play_args, play_seconds, play_seconds_option);
+    add_stream(app, stream_args);
+    add_monitor(app, monitor_args, monitor_seconds, monitor_seconds_option);
+    add_device(app, device_args);
     add_bench(app, bench_loop_args);
+
+    // Progress is redrawn in place only on a terminal (live_output.hpp).
+    const bool terminal = &out == &std::cout && ::isatty(STDOUT_FILENO) == 1;
+    play_args.terminal = stream_args.terminal = monitor_args.terminal = terminal;
 
     try {
         std::vector<const char*> argv;
@@ -166,15 +275,29 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             return kExitUsage;
         }
 
+        stop_requested().store(false);
+        std::optional<ScopedStopSignals> signals;
+        if (g_handle_stop_signals && long_running(app)) signals.emplace();
+
         if (app.got_subcommand("render")) {
             if (duration->count() > 0) render_args.duration_s = duration_s;
             run_render(render_args, out, err);
         } else if (app.got_subcommand("check")) {
             run_check(check_args, out, err);
         } else if (app.got_subcommand("devices")) {
-            run_devices(out);
+            run_devices(devices_args, out);
         } else if (app.got_subcommand("caps")) {
             run_caps(caps_args, out);
+        } else if (app.got_subcommand("play")) {
+            if (play_seconds_option->count() > 0) play_args.seconds = play_seconds;
+            run_play(play_args, out, err);
+        } else if (app.got_subcommand("stream")) {
+            run_stream(stream_args, out, err);
+        } else if (app.got_subcommand("monitor")) {
+            if (monitor_seconds_option->count() > 0) monitor_args.seconds = monitor_seconds;
+            run_monitor(monitor_args, out, err);
+        } else if (app.got_subcommand("device")) {
+            return run_device(device_args, out, err, stop_requested());
         } else if (app.got_subcommand("bench")) {
             run_bench_loop(bench_loop_args, out, err);  // "loop" is bench's only subcommand
         }
@@ -192,6 +315,11 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
         err << who(app) << ": error: unexpected failure\n";
         return kExitFailure;
     }
+}
+
+int run_main(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    g_handle_stop_signals = true;
+    return run(args, out, err);
 }
 
 }  // namespace feel::cli

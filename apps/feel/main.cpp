@@ -1,4 +1,4 @@
-// feel: render, check and inspect force-feedback sensations from the command line.
+// feel: render, check, inspect and play force-feedback sensations from the command line.
 #include <exception>
 #include <iostream>
 #include <string>
@@ -9,7 +9,7 @@
 int main(int argc, char** argv) {
     try {
         const std::vector<std::string> args(argv, argv + argc);
-        return feel::cli::run(args, std::cout, std::cerr);
+        return feel::cli::run_main(args, std::cout, std::cerr);
     } catch (const std::exception& e) {  // run() catches everything; this is the last guard
         std::cerr << "feel: internal error: " << e.what() << '\n';
     } catch (...) {

@@ -91,4 +91,8 @@ std::optional<uint32_t> HostLink::set_report_rate(int32_t hz) noexcept {
     return send_numbered(make_value_command(CommandKind::set_report_rate, 0, hz));
 }
 
+std::optional<uint32_t> HostLink::stream_force(std::span<const int16_t> force) noexcept {
+    return send_numbered(make_stream_force(0, force));
+}
+
 }  // namespace feel::runtime

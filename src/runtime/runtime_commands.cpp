@@ -104,6 +104,8 @@ Error RuntimePipeline::apply(const Command& c, CommandAck& ack) noexcept {
             return apply_set_report_rate(c, ack.t_us);
         case CommandKind::stage_samples:
             return apply_stage_samples(c, ack);
+        case CommandKind::stream_force:
+            return apply_stream_force(c);
     }
     return Error::out_of_range("command.kind", static_cast<int64_t>(c.kind), {0, kCommandKindCount - 1});
 }
@@ -193,9 +195,11 @@ Error RuntimePipeline::apply_device_control(const Command& c, CommandAck& ack) n
         }
         case DeviceControl::stop_all:
             engine_.stop_all();
+            force_stream_.clear();  // the streamed force is one more playing force
             return {};
         case DeviceControl::reset:
             engine_.reset();
+            force_stream_.clear();
             reflexes_.clear();
             untrack_all();
             staged_ = 0;
@@ -257,6 +261,21 @@ Error RuntimePipeline::apply_stage_samples(const Command& c, CommandAck& ack) no
     std::copy(c.samples, c.samples + c.sample_count, stage_.get() + c.sample_offset);
     staged_ = c.sample_offset + c.sample_count;
     ack.staged_samples = staged_;
+    return {};
+}
+
+Error RuntimePipeline::apply_stream_force(const Command& c) noexcept {
+    const int32_t axes = config_.engine.axis_count;
+    if (c.stream_axis_count != axes) return Error::out_of_range("stream.axis_count", c.stream_axis_count, {axes, axes});
+    static constexpr const char* kForceFields[kMaxAxes] = {"stream.force[0]", "stream.force[1]", "stream.force[2]",
+                                                           "stream.force[3]", "stream.force[4]", "stream.force[5]"};
+    for (int32_t a = 0; a < axes; ++a) {
+        if (!range::kSignedLevel.contains(c.stream_force[a])) {
+            return Error::out_of_range(kForceFields[a], c.stream_force[a], range::kSignedLevel);
+        }
+    }
+    // Commands are applied in the tick that takes them (last_tick_ is already this tick).
+    force_stream_.push(last_tick_, c.stream_force);
     return {};
 }
 

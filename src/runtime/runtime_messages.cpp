@@ -21,6 +21,7 @@ const char* command_kind_name(CommandKind kind) noexcept {
         case CommandKind::configure_safety: return "configure_safety";
         case CommandKind::set_report_rate: return "set_report_rate";
         case CommandKind::stage_samples: return "stage_samples";
+        case CommandKind::stream_force: return "stream_force";
     }
     return "unknown command";
 }

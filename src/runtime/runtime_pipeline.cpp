@@ -107,6 +107,7 @@ RuntimePipeline::RuntimePipeline(const RuntimeConfig& config, std::unique_ptr<Ru
       // An effect has at most one reflex, so one per effect slot can never run out.
       reflexes_(config_.engine.max_effects),
       idf_(config_.idf),
+      force_stream_(config_.engine.axis_count, config_.loop_rate_hz),
       commands_(static_cast<std::size_t>(config_.command_capacity)),
       reports_(static_cast<std::size_t>(config_.report_capacity)),
       stage_capacity_(std::min(config_.engine.max_samples, kMaxProfileSamples)),
@@ -166,15 +167,20 @@ void RuntimePipeline::tick(int64_t tick_index) noexcept {
     // 3. Reflexes, before the engine: a press plays in this tick.
     reflexes_.on_tick(in_, engine_);
 
-    // 4. Render.
+    // 4. Render: the effects, and the host's streamed force added as one more effect.
     engine_.tick(in_, out_);
-
-    // 5. Safety, the last stage before the motors.
     float force[kMaxAxes];
     std::copy(std::begin(out_.force), std::end(out_.force), force);
+    force_stream_.output(tick_index, streamed_);
+    add_streamed_force(streamed_, config_.engine.axis_count, engine_.gain(),
+                       engine_.actuators_enabled() && !engine_.paused(), force);
+
+    // 5. Safety, the last stage before the motors. A lost host ends the stream too: the
+    // monitor has cut this tick's force, and nothing the host streamed comes back.
     const SafetyState& safety = safety_.process(safety_input(in_, out_, applied_, host_heard_us_), force);
     if (safety.host_lost_event) {
         engine_.stop_all();
+        force_stream_.clear();
         bump(counters_.host_losses);
     }
 

@@ -113,7 +113,7 @@ constexpr DeviceProfile kProfiles[] = {
         .loose = kLinearLoose,
         .firm = kLinearFirm,
         .stiff = kLinearStiff,
-        .hat_count = 1,  // a four-way hat on the grip
+        .hat_count = 2,  // a four-way hat on top of the grip, a second under the thumb
     },
     DeviceProfile{
         .name = "wheel",
@@ -143,7 +143,7 @@ constexpr DeviceProfile kProfiles[] = {
         .stiff = kLinearStiff,
     },
     // The two classes side by side on the same stick: iforce1 and iforce2 have the
-    // joystick's mechanics, buttons and hat, and differ only in their processor, so that a
+    // joystick's mechanics, buttons and hats, and differ only in their processor, so that a
     // sensation can be compared on both.
     DeviceProfile{
         .name = "iforce1",
@@ -159,7 +159,7 @@ constexpr DeviceProfile kProfiles[] = {
         .firm = kLinearFirm,
         .stiff = kLinearStiff,
         .device_class = DeviceClass::iforce1,
-        .hat_count = 1,
+        .hat_count = 2,
         .effect_slots = kIforce1Slots,
         .pool_bytes = kIforce1PoolBytes,
         .sample_memory = kIforce1PoolBytes / pool_cost::kSample,
@@ -182,7 +182,7 @@ constexpr DeviceProfile kProfiles[] = {
         .firm = kLinearFirm,
         .stiff = kLinearStiff,
         .device_class = DeviceClass::iforce2,
-        .hat_count = 1,
+        .hat_count = 2,
     },
 };
 

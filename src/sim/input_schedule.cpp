@@ -26,16 +26,29 @@ uint32_t InputSchedule::buttons_after(uint32_t buttons, const Event& e) noexcept
         return e.bits;
     case Kind::let_go:
     case Kind::grab:
+    case Kind::push_hat:
+    case Kind::center_hat:
         break;
     }
     return buttons;
 }
 
-InputSchedule::InputSchedule(const DeviceProfile& profile) : button_count_(profile.button_count) {
+uint32_t InputSchedule::hats_after(uint32_t hats, const Event& e) noexcept {
+    if (e.kind == Kind::push_hat) return hats | e.bits;
+    if (e.kind == Kind::center_hat) return hats & ~e.bits;
+    return hats;
+}
+
+InputSchedule::InputSchedule(const DeviceProfile& profile)
+    : button_count_(profile.button_count), hat_count_(profile.hat_count) {
     if (button_count_ < 0 || button_count_ > 32) {
         throw std::invalid_argument("input schedule: button_count = " +
                                     std::to_string(button_count_) +
                                     " is out of range (allowed 0..32)");
+    }
+    if (hat_count_ < 0 || hat_count_ > 4) {
+        throw std::invalid_argument("input schedule: hat_count = " + std::to_string(hat_count_) +
+                                    " is out of range (allowed 0..4)");
     }
 }
 
@@ -63,6 +76,23 @@ uint32_t InputSchedule::button_bit(const char* what, int32_t button) const {
                                     std::to_string(button_count_) + ", the device's buttons)");
     }
     return uint32_t{1} << (button - 1);
+}
+
+uint32_t InputSchedule::hat_bit(const char* what, int32_t hat) const {
+    if (hat < 1 || hat > hat_count_) {
+        throw std::invalid_argument(std::string("input schedule: ") + what + " hat = " +
+                                    std::to_string(hat) + " is out of range (allowed 1.." +
+                                    std::to_string(hat_count_) + ", the device's hat switches)");
+    }
+    return uint32_t{1} << (hat - 1);
+}
+
+InputSchedule& InputSchedule::push_hat(int64_t t_us, int32_t hat) {
+    return add({t_us, Kind::push_hat, hat_bit("push_hat", hat)});
+}
+
+InputSchedule& InputSchedule::center_hat(int64_t t_us, int32_t hat) {
+    return add({t_us, Kind::center_hat, hat_bit("center_hat", hat)});
 }
 
 InputSchedule& InputSchedule::let_go(int64_t t_us) { return add({t_us, Kind::let_go, 0}); }
@@ -105,6 +135,10 @@ int32_t InputSchedule::apply(SimDevice& device, int64_t t_us) noexcept {
         case Kind::set_buttons:
             if (!device.set_buttons(buttons_after(device.buttons(), e))) ++rejected_;
             break;
+        case Kind::push_hat:
+        case Kind::center_hat:
+            if (!device.set_hats(hats_after(device.hats(), e))) ++rejected_;
+            break;
         }
     }
     return applied;
@@ -127,6 +161,15 @@ uint32_t InputSchedule::buttons_at(int64_t t_us) const noexcept {
         buttons = buttons_after(buttons, e);
     }
     return buttons;
+}
+
+uint32_t InputSchedule::hats_at(int64_t t_us) const noexcept {
+    uint32_t hats = 0;
+    for (const Event& e : events_) {
+        if (e.t_us > t_us) break;
+        hats = hats_after(hats, e);
+    }
+    return hats;
 }
 
 }  // namespace feel::sim

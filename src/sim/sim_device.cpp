@@ -147,6 +147,7 @@ void SimDevice::sense(TickInput& in) const noexcept {
         in.position[a] = static_cast<float>(std::clamp(reading, -kScale, kScale));
     }
     in.buttons = buttons_;
+    in.hats = hats_;
     in.handle_held = profile_->dead_man_switch ? handle_held() : true;
 }
 
@@ -190,6 +191,14 @@ bool SimDevice::set_buttons(uint32_t pressed) noexcept {
     const uint32_t allowed = count >= 32 ? 0xFFFFFFFFu : (uint32_t{1} << count) - 1u;
     if ((pressed & ~allowed) != 0) return false;
     buttons_ = pressed;
+    return true;
+}
+
+bool SimDevice::set_hats(uint32_t pushed) noexcept {
+    const int32_t count = profile_->hat_count;  // 0..4 (check_device_profile)
+    const uint32_t allowed = (uint32_t{1} << count) - 1u;
+    if ((pushed & ~allowed) != 0) return false;
+    hats_ = pushed;
     return true;
 }
 

@@ -390,7 +390,7 @@ TEST(PrintCapabilities, TellsTheFactsOfAnIforce1) {
     EXPECT_EQ(value_of(text, "protocol"), "HID PID 1.0 + feel vendor 1") << text;
     EXPECT_EQ(value_of(text, "axes"), "2") << text;
     EXPECT_EQ(value_of(text, "buttons"), "4") << text;
-    EXPECT_EQ(value_of(text, "hats"), "1") << text;
+    EXPECT_EQ(value_of(text, "hats"), "2") << text;
     EXPECT_EQ(value_of(text, "effect slots"), "16") << text;
     EXPECT_EQ(value_of(text, "parameter memory"), "4096 bytes") << text;
     EXPECT_EQ(value_of(text, "sample memory"), "2048 samples") << text;

@@ -193,7 +193,7 @@ TEST(RuntimePipeline, RefusedCommandsNameTheFieldAndRange) {
     Command unknown = make_keep_alive(9001);
     unknown.kind = static_cast<CommandKind>(99);
     ASSERT_TRUE(host.send(unknown));
-    EXPECT_EQ(rig.ack(9001).error.message(), "command.kind = 99 is out of range (allowed 0..15)");
+    EXPECT_EQ(rig.ack(9001).error.message(), "command.kind = 99 is out of range (allowed 0..16)");
 
     // Nothing refused changed anything: the effect is still there, the gain full.
     EXPECT_EQ(rig.ok(host.status(id)).status.state, EffectState::stopped);

@@ -58,6 +58,43 @@ TEST(Buttons, AButtonTheDeviceLacksIsRefused) {
 
 // Stepping at 1 kHz and applying the schedule before each sense(): every tick sees exactly
 // what the script says at its time, including presses one tick apart.
+TEST(Hats, PushedHatsAppearInTickInputAndUnknownHatsAreRefused) {
+    // The joystick class has two hats (§1.2.c's reflex table names hat switch #2).
+    const DeviceProfile& profile = *find_device_profile("joystick");
+    ASSERT_EQ(profile.hat_count, 2);
+    SimDevice device(profile, Grip::firm, TargetMotion::hold_at({0}));
+    TickInput in;
+    in.hats = 0xFu;
+    device.sense(in);
+    EXPECT_EQ(in.hats, 0u);  // every hat centred at start
+    ASSERT_TRUE(device.set_hats(0b10));  // hat 2
+    device.sense(in);
+    EXPECT_EQ(in.hats, 0b10u);
+    EXPECT_FALSE(device.set_hats(0b100));  // hat 3: the profile has two
+    EXPECT_EQ(device.hats(), 0b10u);       // unchanged
+}
+
+TEST(InputSchedule, PlaysHatPushesAtTheirTicks) {
+    const DeviceProfile& profile = *find_device_profile("iforce2");
+    SimDevice device(profile, Grip::firm, TargetMotion::hold_at({0}));
+    InputSchedule script(profile);
+    script.push_hat(2000, 2).center_hat(5000, 2).push_hat(3000, 1);
+    EXPECT_EQ(script.hats_at(1999), 0u);
+    EXPECT_EQ(script.hats_at(3000), 0b11u);
+    EXPECT_EQ(script.hats_at(5000), 0b01u);
+    TickInput in;
+    for (int64_t t = 0; t <= 6000; t += 1000) {
+        script.apply(device, t);
+        device.sense(in);
+        EXPECT_EQ(in.hats, script.hats_at(t)) << "t = " << t;
+        EXPECT_EQ(in.buttons, 0u);
+    }
+    EXPECT_EQ(thrown_message([&] { script.push_hat(0, 3); }),
+              "input schedule: push_hat hat = 3 is out of range (allowed 1..2, the device's hat switches)");
+    EXPECT_EQ(thrown_message([&] { script.center_hat(0, 0); }),
+              "input schedule: center_hat hat = 0 is out of range (allowed 1..2, the device's hat switches)");
+}
+
 TEST(InputSchedule, TicksSeeTheScriptedButtonsAndHand) {
     const DeviceProfile& joystick = *find_device_profile("joystick");
     InputSchedule schedule(joystick);

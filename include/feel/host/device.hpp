@@ -16,9 +16,11 @@
 //
 // Host emulation (§1.2.c). Where the device lacks a feature the host can provide, the host
 // provides it and the effect's status says `emulated`. Today: trigger-button reflexes on a
-// device without local reflexes (an I-FORCE 1.x-class profile): the host watches the
-// buttons and hats in the device's input reports and starts the effect itself. The
-// latency is then one report period plus one round trip instead of zero ticks.
+// device without local reflexes (an I-FORCE 1.x-class profile): the effect goes down
+// without its trigger, and the host watches the buttons and hats in the device's input
+// reports and starts it itself on each press (and every trigger_repeat_interval_us while
+// held). The latency is then up to one report period plus one round trip instead of zero
+// ticks: about 4 ms (8 ms worst) in process, docs/host-api.md, "Host emulation".
 //
 // Threads. A Device and its Effects may be used from any one thread at a time (calls are
 // serialized inside; each waits for the device's answer, up to OpenOptions::timeout). Each
@@ -45,9 +47,14 @@
 #include "feel/runtime/runtime_messages.hpp"
 #include "feel/sim/device_profile.hpp"
 
+namespace feel::transport {
+class Connection;
+}
+
 namespace feel::host {
 
-struct DeviceCore;  // shared by a Device and its Effects (private)
+struct DeviceCore;    // shared by a Device and its Effects (private)
+struct EffectRecord;  // what the host keeps of one effect (private)
 
 // ---------------------------------------------------------------------------------------
 // Discovery.
@@ -218,7 +225,7 @@ private:
     friend class Device;
     friend struct DeviceCore;
     std::shared_ptr<DeviceCore> core_;
-    uint64_t key_ = 0;  // the core's record of this effect
+    std::shared_ptr<EffectRecord> record_;  // the core's record of this effect
 };
 
 // ---------------------------------------------------------------------------------------
@@ -243,6 +250,11 @@ public:
     // there, or busy with another host), timeout, protocol.
     [[nodiscard]] static Result<Device> open(std::string_view address = "sim:iforce2",
                                              const OpenOptions& options = {});
+    // Opens the device at the far end of a connection made elsewhere (a transport the
+    // caller built, an in-process pair whose device end a Peripheral serves, a test's raw
+    // pair). `name` is what address() and messages say. Same checks and errors as open().
+    [[nodiscard]] static Result<Device> attach(std::unique_ptr<transport::Connection> connection,
+                                               std::string name, const OpenOptions& options = {});
 
     [[nodiscard]] const DeviceCaps& capabilities() const noexcept;
     [[nodiscard]] std::string address() const;

@@ -106,8 +106,10 @@ struct SetEffectReport {
     uint8_t axis_count = 1;                    // 1..6 (PID Axes Enable, in feel's order)
     Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};  // 0..5
     DirectionKind direction_kind = DirectionKind::none;  // PID Direction Enable + vendor form
-    int32_t direction[3] = {0, 0, 0};          // PID Direction: see feel::Direction
+    int32_t direction[3] = {0, 0, 0};          // PID Direction, -10000..35999: see feel::Direction
     bool has_envelope = false;                 // vendor: use the block's Set Envelope
+
+    friend bool operator==(const SetEffectReport&, const SetEffectReport&) = default;
 };
 
 struct SetEnvelopeReport {
@@ -117,6 +119,8 @@ struct SetEnvelopeReport {
     uint32_t settle_time_us = 0; // PID Attack Time, 0..65e6
     uint16_t fade_level = 0;     // PID Fade Level, 0..10000
     uint32_t fade_time_us = 0;   // PID Fade Time, 0..65e6
+
+    friend bool operator==(const SetEnvelopeReport&, const SetEnvelopeReport&) = default;
 };
 
 struct SetConditionReport {
@@ -130,6 +134,8 @@ struct SetConditionReport {
     uint16_t neg_saturation = 10000;  // 0..10000
     uint16_t deadband = 0;       // 0..10000
     OffsetMode offset_mode = OffsetMode::absolute;  // vendor: relative = SpringAtCurrentLocation
+
+    friend bool operator==(const SetConditionReport&, const SetConditionReport&) = default;
 };
 
 struct SetPeriodicReport {
@@ -139,12 +145,16 @@ struct SetPeriodicReport {
     int16_t offset = 0;      // -10000..10000
     uint16_t phase = 0;      // 0..35999
     uint32_t period_us = 1;  // 1..65e6
+
+    friend bool operator==(const SetPeriodicReport&, const SetPeriodicReport&) = default;
 };
 
 struct SetConstantForceReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     int16_t magnitude = 0;  // -10000..10000
+
+    friend bool operator==(const SetConstantForceReport&, const SetConstantForceReport&) = default;
 };
 
 struct SetRampForceReport {
@@ -152,6 +162,8 @@ struct SetRampForceReport {
     uint16_t block = 1;
     int16_t start = 0;  // -10000..10000
     int16_t end = 0;    // -10000..10000
+
+    friend bool operator==(const SetRampForceReport&, const SetRampForceReport&) = default;
 };
 
 struct SetCustomForceReport {
@@ -160,6 +172,8 @@ struct SetCustomForceReport {
     uint8_t channels = 1;           // 1..6
     uint32_t sample_period_us = 1;  // 1..65e6
     uint16_t sample_count = 1;      // 1..65535 (PID Custom Force Data's count, in samples)
+
+    friend bool operator==(const SetCustomForceReport&, const SetCustomForceReport&) = default;
 };
 
 // Samples per Custom Force Data report.
@@ -173,6 +187,8 @@ struct CustomForceDataReport {
     uint16_t offset = 0;  // PID Custom Force Data Offset, in samples, 0..65534
     uint8_t count = 1;    // samples used, 1..kSamplesPerDataReport
     int16_t samples[kSamplesPerDataReport] = {};  // -10000..10000, interleaved by channel
+
+    friend bool operator==(const CustomForceDataReport&, const CustomForceDataReport&) = default;
 };
 
 // Download Force Sample: one sample of the host's force stream (§2.4). The device smooths
@@ -181,6 +197,8 @@ struct DownloadForceSampleReport {
     uint32_t sequence = 0;
     uint8_t axis_count = 1;            // 1..6, the device's axes in order
     int16_t force[kMaxAxes] = {};      // -10000..10000, physical sign
+
+    friend bool operator==(const DownloadForceSampleReport&, const DownloadForceSampleReport&) = default;
 };
 
 enum class EffectOperation : uint8_t { start = 1, start_solo = 2, stop = 3 };  // PID Op Effect *
@@ -190,11 +208,15 @@ struct EffectOperationReport {
     uint16_t block = 1;
     EffectOperation operation = EffectOperation::start;
     uint8_t loop_count = kLoopEffectOwn;  // 0..255, see kLoopEffectOwn/kLoopInfinite
+
+    friend bool operator==(const EffectOperationReport&, const EffectOperationReport&) = default;
 };
 
 struct BlockFreeReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
+
+    friend bool operator==(const BlockFreeReport&, const BlockFreeReport&) = default;
 };
 
 // PID Device Control: DC Enable Actuators .. DC Device Continue (runtime::DeviceControl).
@@ -206,11 +228,15 @@ enum class DeviceControlOp : uint8_t {
 struct DeviceControlReport {
     uint32_t sequence = 0;
     DeviceControlOp control = DeviceControlOp::stop_all_effects;
+
+    friend bool operator==(const DeviceControlReport&, const DeviceControlReport&) = default;
 };
 
 struct DeviceGainReport {
     uint32_t sequence = 0;
     uint16_t gain = 10000;  // 0..10000
+
+    friend bool operator==(const DeviceGainReport&, const DeviceGainReport&) = default;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -220,18 +246,24 @@ struct SetTextureReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     TextureBlock texture{};  // each field 1..10000
+
+    friend bool operator==(const SetTextureReport&, const SetTextureReport&) = default;
 };
 
 struct SetWallReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     WallBlock wall{};  // ranges of effect.hpp
+
+    friend bool operator==(const SetWallReport&, const SetWallReport&) = default;
 };
 
 struct SetBarrierReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     BarrierBlock barrier{};  // ranges of effect.hpp
+
+    friend bool operator==(const SetBarrierReport&, const SetBarrierReport&) = default;
 };
 
 struct SetSweepReport {
@@ -240,6 +272,8 @@ struct SetSweepReport {
     uint16_t start_angle = 0;  // 0..35999
     uint16_t end_angle = 0;    // 0..35999
     SweepSense sense = SweepSense::clockwise;
+
+    friend bool operator==(const SetSweepReport&, const SetSweepReport&) = default;
 };
 
 // The named dynamics' block. `dynamic.control_law` is not sent here (Set Control Law
@@ -248,6 +282,8 @@ struct SetDynamicReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     DynamicBlock dynamic{};  // ranges of effect.hpp
+
+    friend bool operator==(const SetDynamicReport&, const SetDynamicReport&) = default;
 };
 
 struct SetControlLawReport {
@@ -255,6 +291,8 @@ struct SetControlLawReport {
     uint16_t block = 1;
     uint8_t axis_index = 0;  // 0..5
     ControlLawBlock law{};   // ranges of effect.hpp
+
+    friend bool operator==(const SetControlLawReport&, const SetControlLawReport&) = default;
 };
 
 // Arms (assign) or disarms (remove) the block's reflex from its trigger fields (§1.2.c).
@@ -262,25 +300,38 @@ struct ReflexReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     bool assign = true;
+
+    friend bool operator==(const ReflexReport&, const ReflexReport&) = default;
 };
 
 struct IdfSettingsReport {
     uint32_t sequence = 0;
     runtime::IdfSettings settings{};
+
+    friend bool operator==(const IdfSettingsReport& a, const IdfSettingsReport& b) noexcept {
+        return a.sequence == b.sequence && a.settings.periodic == b.settings.periodic &&
+               a.settings.impulse == b.settings.impulse;
+    }
 };
 
 struct ReportRateReport {
     uint32_t sequence = 0;
     uint16_t rate_hz = 250;  // 100..1000 (the device refuses more than its loop rate)
+
+    friend bool operator==(const ReportRateReport&, const ReportRateReport&) = default;
 };
 
 struct KeepAliveReport {
     uint32_t sequence = 0;
+
+    friend bool operator==(const KeepAliveReport&, const KeepAliveReport&) = default;
 };
 
 struct EffectStatusRequestReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
+
+    friend bool operator==(const EffectStatusRequestReport&, const EffectStatusRequestReport&) = default;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -291,6 +342,8 @@ struct CreateNewEffectReport {
     uint32_t sequence = 0;
     EffectType type = EffectType::constant;
     uint16_t sample_count = 0;  // PID Byte Count, in samples: force_profile's, else 0
+
+    friend bool operator==(const CreateNewEffectReport&, const CreateNewEffectReport&) = default;
 };
 
 enum class BlockLoadStatus : uint8_t { success = 1, full = 2, error = 3 };  // PID Block Load *
@@ -300,6 +353,8 @@ struct BlockLoadReport {
     uint16_t block = 0;                        // the new block (0 unless success)
     BlockLoadStatus status = BlockLoadStatus::error;
     uint32_t ram_pool_available = 0;           // PID RAM Pool Available, bytes
+
+    friend bool operator==(const BlockLoadReport&, const BlockLoadReport&) = default;
 };
 
 // Get: the device's effect memory (PID Pool Report, plus feel's sample store).
@@ -308,10 +363,12 @@ struct PidPoolReport {
     uint16_t simultaneous_effects_max = 0;
     bool device_managed_pool = true;      // PID Device Managed Pool: the device allocates
     bool shared_parameter_blocks = false; // PID Shared Parameter Blocks
-    uint32_t ram_pool_available = 0;      // vendor: bytes free
+    uint32_t ram_pool_available = 0;      // PID RAM Pool Available: bytes free
     uint16_t free_effects = 0;            // vendor: blocks free
     uint32_t sample_memory = 0;           // vendor: force-profile samples in all
     uint32_t free_samples = 0;            // vendor: samples free
+
+    friend bool operator==(const PidPoolReport&, const PidPoolReport&) = default;
 };
 
 // Text fields are NUL-padded, not necessarily NUL-terminated when full.
@@ -320,22 +377,25 @@ inline constexpr int kNameBytes = 24;
 struct AxisInfo {
     Axis axis = Axis::x;
     uint8_t rotary = 0;              // 0 linear (m, N), 1 rotary (rad, N·m)
+    // The physical figures are 0 for the entries beyond the device's axis_count.
     uint32_t half_travel_micro = 0;  // half travel in µm or µrad, 1..2^31-1
     uint32_t max_force_milli = 0;    // force at ±10000, mN or mN·m, 1..2^31-1
     uint32_t sensor_counts = 0;      // 2..2^24
+
+    friend bool operator==(const AxisInfo&, const AxisInfo&) = default;
 };
 
 // Get: what the device is and can do (runtime::Capabilities on the wire).
 struct DeviceInfoReport {
     char device[kNameBytes] = {};         // profile name, e.g. "iforce2"
-    char description[64] = {};
+    char description[192] = {};           // one line about the hardware
     uint8_t device_class = 0;             // sim::DeviceClass: 0 I-FORCE 1.x, 1 I-FORCE 2.0
     uint8_t axis_count = 0;               // 1..6
     AxisInfo axes[kMaxAxes] = {};
     uint8_t button_count = 0;             // 0..32
     uint8_t hat_count = 0;                // 0..4
     bool dead_man_switch = false;
-    uint16_t max_force = 10000;
+    uint16_t max_force = 10000;           // 0..10000, the force the motors can give
     uint64_t supported_types = 0;         // bit per EffectType (effect_type_bit)
     uint16_t effect_slots = 0;
     uint32_t pool_bytes = 0;
@@ -348,6 +408,8 @@ struct DeviceInfoReport {
     uint16_t report_rate_hz = 0;          // the state report rate now
     char firmware_version[kNameBytes] = {};
     uint8_t vendor_revision = 1;          // runtime::kProtocolVendorRevision
+
+    friend bool operator==(const DeviceInfoReport&, const DeviceInfoReport&) = default;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -358,6 +420,8 @@ struct JoystickInputReport {
     int16_t position[kMaxAxes] = {};  // -10000..10000: the reported position (IDF, clipping)
     uint32_t buttons = 0;             // bit i = button i+1
     uint8_t hats = 0;                 // bit h-1 = hat h pushed off center
+
+    friend bool operator==(const JoystickInputReport&, const JoystickInputReport&) = default;
 };
 
 // PID State: the device's flags and one effect's playing state (sent when it changes).
@@ -369,6 +433,8 @@ struct PidStateReport {
     bool actuator_power = true;
     bool effect_playing = false;
     uint16_t block = 0;               // 0 when the report names no effect
+
+    friend bool operator==(const PidStateReport&, const PidStateReport&) = default;
 };
 
 // The outcome of one command (vendor). For an error, `error` names the field, the value
@@ -390,6 +456,8 @@ struct CommandStatusReport {
     uint8_t completed_iterations = 0;
     uint32_t elapsed_us = 0;                   // since the start, saturating
     uint8_t last_end = 0;                      // feel::PlayEnd of the last play
+
+    friend bool operator==(const CommandStatusReport&, const CommandStatusReport&) = default;
 };
 
 // The device's state at the report rate (vendor): what `feel monitor` shows.
@@ -408,9 +476,11 @@ struct DeviceStatusReport {
     uint32_t overruns = 0;             // loop overruns since the device started
     uint32_t measured_rate_millihz = 0;// ticks per second measured over the last second, mHz
     uint64_t dropped_reports = 0;
-    uint8_t page = 0, pages = 1, effect_count = 0;  // effect_count 0..kEffectsPerStatusReport
+    uint8_t page = 0, pages = 1, effect_count = 0;  // 0..255, 1..255, 0..kEffectsPerStatusReport
     uint16_t effect_block[kEffectsPerStatusReport] = {};
     uint8_t effect_state[kEffectsPerStatusReport] = {};  // runtime::ReportedEffectState
+
+    friend bool operator==(const DeviceStatusReport&, const DeviceStatusReport&) = default;
 };
 
 // A dynamic's interim or final report (vendor, §5.2, §6.6.f).
@@ -418,11 +488,13 @@ struct DynamicReportReport {
     uint16_t block = 0;
     uint8_t final_report = 0;          // 0 interim, 1 final
     uint64_t t_us = 0;
-    uint8_t axis_count = 0;            // the effect's axes
+    uint8_t axis_count = 0;            // the effect's axes, 0..6
     // Mass minus handle, hundredths of a position unit, and hundredths of units/s.
     int32_t position_centi[kMaxAxes] = {};
     int32_t velocity_centi[kMaxAxes] = {};
     int32_t handle_velocity_centi[kMaxAxes] = {};
+
+    friend bool operator==(const DynamicReportReport&, const DynamicReportReport&) = default;
 };
 
 // Any report.

@@ -60,6 +60,8 @@ public:
     std::optional<uint32_t> set_idf(IdfSettings settings) noexcept;
     std::optional<uint32_t> configure_safety(const SafetyConfig& config) noexcept;
     std::optional<uint32_t> set_report_rate(int32_t hz) noexcept;
+    // One sample of a streamed force (§2.4): `force` per device axis, in order, ±10000.
+    std::optional<uint32_t> stream_force(std::span<const int16_t> force) noexcept;
 
     // The number the next convenience call will use (starts at 1, wraps).
     [[nodiscard]] uint32_t next_sequence() const noexcept { return next_sequence_; }

@@ -23,7 +23,9 @@
 // HostLink (host_link.hpp) does the chunking.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <type_traits>
 
 #include "feel/axis.hpp"
@@ -55,8 +57,12 @@ enum class CommandKind : uint8_t {
     configure_safety,  // safety: a new SafetyConfig (restarts the monitor: a fade-in follows)
     set_report_rate,   // value = host report rate, Hz, 100..min(1000, loop rate)
     stage_samples,     // sample_offset, sample_count, samples: force-profile samples ahead
+    // stream_axis_count, stream_force: one sample of the force the host streams (§2.4,
+    // "closing the loop from the host"); the device reconstructs a smooth force from the
+    // samples and adds it to the effects' (force_stream.hpp). Sent at up to 1 kHz.
+    stream_force,
 };
-inline constexpr int kCommandKindCount = 16;
+inline constexpr int kCommandKindCount = 17;
 
 // DirectInput's DISFFC_* device commands.
 enum class DeviceControl : uint8_t {
@@ -98,6 +104,11 @@ struct Command {
     int32_t sample_offset = 0;
     int32_t sample_count = 0;
     int16_t samples[kSamplesPerCommand] = {};  // -10000..10000, interleaved by channel
+    // stream_force: the device's axis count (must be the device's, 1..kMaxAxes) and the
+    // streamed force on each axis in the device's order (x, y, z, rx, ry, rz), normalized
+    // -10000..10000, physical sign (+ pushes toward +axis). Entries past the count are 0.
+    int32_t stream_axis_count = 0;
+    int16_t stream_force[kMaxAxes] = {};
 };
 static_assert(std::is_trivially_copyable_v<Command>);
 
@@ -177,6 +188,20 @@ static_assert(std::is_trivially_copyable_v<Command>);
     c.kind = CommandKind::configure_safety;
     c.sequence = sequence;
     c.safety = config;
+    return c;
+}
+
+// One streamed force sample, `force` on each of the device's axes in order (±10000,
+// physical sign). More than kMaxAxes values cannot be carried: the count is kept as given
+// (so the device refuses it by name) and only the first kMaxAxes values are copied.
+[[nodiscard]] inline Command make_stream_force(uint32_t sequence, std::span<const int16_t> force) noexcept {
+    Command c;
+    c.kind = CommandKind::stream_force;
+    c.sequence = sequence;
+    c.stream_axis_count = static_cast<int32_t>(force.size());
+    for (std::size_t a = 0; a < force.size() && a < static_cast<std::size_t>(kMaxAxes); ++a) {
+        c.stream_force[a] = force[a];
+    }
     return c;
 }
 

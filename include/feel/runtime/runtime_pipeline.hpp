@@ -8,7 +8,8 @@
 //                 command queue, apply each to the engine, and post its ack
 //   2. sense      read positions, buttons, hats and the dead-man switch from the backend
 //   3. reflexes   start the effects whose trigger buttons were pressed (0 ticks latency)
-//   4. render     engine.tick(): every playing effect's force
+//   4. render     engine.tick(): every playing effect's force, plus the force the host
+//                 streams (force_stream.hpp), scaled by the device gain, clamped
 //   5. safety     dead-man, fade-in, hands-off, host watchdog scale the forces; a lost host
 //                 stops every effect
 //   6. actuate    the motors get the safe forces
@@ -35,6 +36,7 @@
 #include <span>
 
 #include "feel/engine.hpp"
+#include "feel/runtime/force_stream.hpp"
 #include "feel/runtime/idf.hpp"
 #include "feel/runtime/realtime_loop.hpp"
 #include "feel/runtime/reflexes.hpp"
@@ -142,6 +144,9 @@ public:
     [[nodiscard]] const SafetyMonitor& safety() const noexcept { return safety_; }
     [[nodiscard]] const IdfFilter& idf() const noexcept { return idf_; }
     [[nodiscard]] const ReflexTable& reflexes() const noexcept { return reflexes_; }
+    [[nodiscard]] const ForceStream& force_stream() const noexcept { return force_stream_; }
+    // The streamed force of the last tick, reconstructed, before gain and the sum's clamp.
+    [[nodiscard]] const float* streamed_force() const noexcept { return streamed_; }
     [[nodiscard]] const TickInput& last_input() const noexcept { return in_; }    // what was sensed
     [[nodiscard]] const TickOutput& last_output() const noexcept { return out_; }  // the engine's
     [[nodiscard]] const float* motor_force() const noexcept { return applied_; }   // after safety
@@ -172,6 +177,7 @@ private:
     Error apply_configure_safety(const Command& c) noexcept;
     Error apply_set_report_rate(const Command& c, int64_t t_us) noexcept;
     Error apply_stage_samples(const Command& c, CommandAck& ack) noexcept;
+    Error apply_stream_force(const Command& c) noexcept;
     [[nodiscard]] std::span<const int16_t> take_staged_samples() noexcept;
     void track(EffectId id) noexcept;
     void untrack(EffectId id) noexcept;
@@ -194,6 +200,7 @@ private:
     ReflexTable reflexes_;
     SafetyMonitor safety_;
     IdfFilter idf_;
+    ForceStream force_stream_;
     SpscQueue<Command> commands_;
     SpscQueue<Report> reports_;
 
@@ -210,6 +217,7 @@ private:
     TickOutput out_{};
     EngineActivity activity_{};
     float applied_[kMaxAxes] = {};   // the motors' force since the last actuate()
+    float streamed_[kMaxAxes] = {};  // the stream's reconstructed force at the last tick
     float reported_[kMaxAxes] = {};  // the position reported at the last tick
     Command command_{};
     Report report_{};

@@ -93,6 +93,11 @@ public:
     // i >= button_count). Real-time safe.
     bool set_buttons(uint32_t pressed) noexcept;
     [[nodiscard]] uint32_t buttons() const noexcept { return buttons_; }
+    // The hat switches pushed off center from now on, bit h-1 = hat h (TickInput::hats).
+    // Returns false and changes nothing when a bit names a hat the profile lacks.
+    // Real-time safe.
+    bool set_hats(uint32_t pushed) noexcept;
+    [[nodiscard]] uint32_t hats() const noexcept { return hats_; }
 
     // The substeps step(dt_s) will take now (they depend on whether the hand is present);
     // h = dt_s / substeps(dt_s).
@@ -116,6 +121,7 @@ private:
     double rate_free_ = 0;    // 1/s: the same for the handle without its hand
     bool hand_present_ = true;
     uint32_t buttons_ = 0;    // bit i = button i+1 pressed
+    uint32_t hats_ = 0;       // bit h-1 = hat h pushed off center
     // The last grab: when, and the handle's offset from the motion then (normalized).
     double grab_t_s_ = 0;
     double grab_offset_[kMaxAxes] = {};

@@ -43,6 +43,9 @@ enum class FrameKind : uint8_t {
 };
 inline constexpr int kFrameKindCount = 8;
 [[nodiscard]] std::string_view frame_kind_name(FrameKind kind) noexcept;
+// True for the byte values of the kinds above (1..kFrameKindCount): what a byte stream's
+// receiver accepts in a frame header.
+[[nodiscard]] constexpr bool is_frame_kind(uint8_t byte) noexcept { return byte >= 1 && byte <= kFrameKindCount; }
 
 // The largest payload a frame may carry, bytes (the report descriptor is the largest).
 inline constexpr std::size_t kMaxFramePayload = 4096;
@@ -88,6 +91,9 @@ struct Address {
     // A bare profile name ("iforce1") is read as sim:iforce1. The profile is not checked
     // here (the device checks it when it is built).
     [[nodiscard]] static Address parse(std::string_view text);
+    // The same forms for a place to listen (`feel device --listen`): tcp port 0 is allowed
+    // and means "any free port" (Listener::address() then says which).
+    [[nodiscard]] static Address parse_listen(std::string_view text);
     [[nodiscard]] std::string to_string() const;
 
     friend bool operator==(const Address&, const Address&) = default;

@@ -1,0 +1,39 @@
+// feel device: the simulated device as its own process, a peripheral hosts connect to.
+//
+//   feel device --sim [--profile NAME] [--listen ADDR] [--hand GRIP] [--motion SPEC] [--rate HZ]
+//
+// Builds the simulated device and its runtime (feel::peripheral::Peripheral), listens at
+// ADDR (unix:PATH or tcp:HOST:PORT; default unix:<socket dir>/<profile>.sock, the
+// directory created 0700), prints
+//   feel device: iforce2 (I-FORCE 2.0) listening on unix:/run/user/1000/feel/iforce2.sock, loop 1000 Hz
+// and serves one host at a time until the stop flag is set (SIGINT/SIGTERM through the
+// CLI's handlers), then prints its statistics, removes its socket and returns 0.
+#pragma once
+
+#include <atomic>
+#include <iosfwd>
+#include <string>
+
+namespace feel::cli {
+
+struct DeviceArgs {
+    // --sim: run the simulated device. Required: it is the only kind of device feel has
+    // (a real-hardware backend would run without it).
+    bool sim = false;
+    std::string profile = "iforce2";  // --profile: a device profile (feel devices)
+    std::string listen;               // --listen: unix:PATH or tcp:HOST:PORT; empty: the default socket
+    std::string hand = "firm";        // --hand: none, loose, firm, stiff, kinematic
+    std::string motion = "hold:0";    // --motion: the hand's target motion (as feel render)
+    double rate_hz = 0;               // --rate: loop rate, whole Hz 100..the profile's max; 0: its default
+};
+
+// Runs the device until `stop` becomes true (polled every 20 ms). Returns kExitOk after a
+// clean stop. Throws UsageError (exit 2) for a wrong option (no --sim, an unknown profile
+// or hand, a bad address or rate), and std::runtime_error / transport::TransportError
+// (exit 1) when it cannot listen.
+int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& err, std::atomic<bool>& stop);
+
+// The default listen address of a profile: unix:<transport::default_socket_dir()>/<profile>.sock.
+[[nodiscard]] std::string default_device_address(const std::string& profile);
+
+}  // namespace feel::cli

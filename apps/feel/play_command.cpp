@@ -1,0 +1,248 @@
+// feel play: the two calls of §9.5 — load a sensation file onto a device, play one of its
+// sensations — with the force shown live while it plays.
+//
+// Everything that can be checked without a device is checked first: the flags, the file
+// (the reader names the field and the range of anything wrong), the sensation's name.
+// Then the device is opened, asked for state reports at up to 1 kHz, and given the half
+// second its safety fade-in takes after power-on, so that the forces shown are the full
+// ones. SensationLibrary::load downloads every sensation of the file (a game loads its
+// file once, then plays from it), so every sensation of the file must fit the device.
+//
+// While it plays, each state report (one per device tick at 1 kHz) updates the peaks, and
+// ten times a second a progress line shows the elapsed time, the force on each axis and
+// the state of each effect of the sensation. The sensation has ended when a state report
+// shows no effect playing and every effect's status, asked over the protocol, says
+// stopped (a compound's delayed effect plays nothing yet but is not stopped). Without
+// --seconds, a sensation that never ends is stopped after kPlayDefaultCapS seconds.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "feel/effect.hpp"
+#include "feel/format/sensation_file.hpp"
+#include "feel/host/device.hpp"
+#include "feel/host/sensation_library.hpp"
+#include "feel/render/render.hpp"
+#include "feel/runtime/runtime_messages.hpp"
+#include "flag_checks.hpp"
+#include "host_device.hpp"
+#include "interrupt.hpp"
+#include "live_output.hpp"
+
+namespace feel::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kMaxSeconds = 3600;
+constexpr auto kProgressPeriod = std::chrono::milliseconds(100);
+constexpr auto kStatusCheckPeriod = std::chrono::milliseconds(10);
+constexpr auto kFadeInLimit = std::chrono::milliseconds(2000);
+
+double seconds_since(Clock::time_point t0, Clock::time_point t) {
+    return std::chrono::duration<double>(t - t0).count();
+}
+
+int32_t parse_iterations(const std::string& text) {
+    if (text.empty()) return runtime::kEffectIterations;
+    if (text == "infinite") return kInfiniteIterations;
+    double value = 0;
+    std::size_t used = 0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size()) {
+        throw UsageError("--iterations = " + text + " is not a number (allowed a whole number 1..254, or infinite)");
+    }
+    return checked_whole("--iterations", value, 1, 254);
+}
+
+const format::Sensation& sensation_by_name(const format::SensationFile& file, const std::string& name,
+                                           const std::string& path) {
+    if (const format::Sensation* s = file.find(name)) return *s;
+    std::string names;
+    for (const format::Sensation& s : file.sensations) names += (names.empty() ? "" : ", ") + s.name;
+    if (names.empty()) names = "none: the file holds no sensations";
+    throw UsageError("--sensation \"" + name + "\" is not in " + path + " (available: " + names + ")");
+}
+
+// The largest |force| each axis showed, with its sign and when.
+struct AxisPeak {
+    float force = 0;
+    double at_s = -1;  // seconds after play; < 0: never above 0
+};
+
+// Whether every effect's status says stopped; `states` gets each one's state name.
+bool all_stopped(std::span<host::Effect> effects, std::string& states) {
+    bool stopped = true;
+    states.clear();
+    for (host::Effect& e : effects) {
+        host::Result<host::EffectStatusInfo> status = e.status();
+        check(status.status(), "ask the status of effect block " + std::to_string(e.block()));
+        states += (states.empty() ? "" : " ");
+        states += runtime::reported_effect_state_name(status->state);
+        if (status->emulated) states += "(emulated)";
+        if (status->state != runtime::ReportedEffectState::stopped) stopped = false;
+    }
+    return stopped;
+}
+
+std::string progress_line(double elapsed_s, const host::InputState& s, const std::string& states) {
+    return format_elapsed(elapsed_s) + "   " + format_forces(s.force, s.axis_count) + "   " + states;
+}
+
+// How long the sensation plays with this --iterations: render's sensation length for the
+// effects' own counts; with N, the latest start delay + N × duration. nullopt: it never
+// ends by itself.
+std::optional<int64_t> play_length_us(const format::Sensation& sensation, int32_t iterations) {
+    if (iterations == runtime::kEffectIterations) return render::sensation_length_us(sensation);
+    if (iterations == kInfiniteIterations) return std::nullopt;
+    int64_t longest = 0;
+    for (const format::EffectSpec& e : sensation.effects) {
+        if (e.params.duration_us == kInfiniteUs) return std::nullopt;
+        longest = std::max(longest, e.params.start_delay_us + e.params.duration_us * iterations);
+    }
+    return longest;
+}
+
+std::string effect_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " effect" : " effects"); }
+
+}  // namespace
+
+void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
+    std::optional<double> limit_s;
+    if (args.seconds) limit_s = checked_range("--seconds", *args.seconds, 0, kMaxSeconds, "s", false);
+    const int32_t iterations = parse_iterations(args.iterations);
+    const format::SensationFile file = format::load_sensation_file(args.file);
+    const format::Sensation& sensation = sensation_by_name(file, args.sensation, args.file);
+    const std::optional<int64_t> length_us = play_length_us(sensation, iterations);
+    const bool endless = !length_us;
+
+    host::Device device = open_device(args.device);
+    const host::DeviceCaps& caps = device.capabilities();
+    const int32_t report_hz = use_fastest_reports(device);
+    host::Result<host::SensationLibrary> loaded = host::SensationLibrary::load(args.file, device);
+    if (!loaded) throw std::runtime_error("load " + args.file + " onto " + device.address() + ": " + loaded.status().message);
+    host::SensationLibrary& library = loaded.value();
+    std::span<host::Effect> effects = library.effects(sensation.name);
+    if (!wait_for_full_strength(device, kFadeInLimit)) {
+        err << "feel play: note: the device's forces are faded to " << number(device.input().fade_level)
+            << " of full strength (is the handle held?)\n";
+    }
+
+    const double cap_s = limit_s ? *limit_s : kPlayDefaultCapS;
+    out << "playing    " << sensation.name << " (" << effect_count(effects.size()) << ", "
+        << (endless ? std::string("endless") : format_elapsed(static_cast<double>(*length_us) * 1e-6)) << ") from "
+        << args.file << '\n'
+        << "on         " << device.address() << " (" << caps.device << ", " << caps.class_name
+        << "), state reports at " << report_hz << " Hz\n";
+    if (!limit_s && endless) {
+        out << "limit      " << number(kPlayDefaultCapS)
+            << " s: the sensation never ends by itself (--seconds S to change)\n";
+    }
+    out << std::flush;
+
+    const Clock::time_point t0 = Clock::now();
+    check(library.play(sensation.name, iterations), "play " + sensation.name);
+
+    LiveLine live(out, args.terminal);
+    AxisPeak peaks[kMaxAxes] = {};
+    const int32_t axes = caps.axis_count;
+    host::InputState last = device.input();
+    std::string states;
+    (void)all_stopped(effects, states);
+    live.show(progress_line(seconds_since(t0, Clock::now()), last, states));  // the states at the start
+    uint64_t reports = 0;
+    Clock::time_point next_line = t0 + kProgressPeriod;
+    Clock::time_point next_status_check = t0;
+    // The first report of the current run with nothing playing, s; < 0 while effects play.
+    // (Plain doubles, not std::optional: g++ 12 warns spuriously on an optional here.)
+    double quiet_since_s = -1;
+    double ended_s = -1;  // when every effect was seen stopped, s; < 0 until then
+    enum class Why { ended, limit, interrupted } why = Why::limit;
+    for (;;) {
+        if (stop_requested().load()) {
+            why = Why::interrupted;
+            break;
+        }
+        const Clock::time_point now = Clock::now();
+        if (seconds_since(t0, now) >= cap_s) break;
+        const host::Result<host::InputState> next = device.wait_input(std::chrono::milliseconds(20));
+        if (!next) {
+            if (next.status().kind == host::ErrorKind::timeout) continue;
+            check(next.status(), "read the device's state");
+        }
+        const Clock::time_point arrived = Clock::now();
+        const double t = seconds_since(t0, arrived);
+        last = next.value();
+        ++reports;
+        for (int32_t a = 0; a < axes; ++a) {
+            if (std::fabs(last.force[a]) > std::fabs(peaks[a].force)) peaks[a] = {last.force[a], t};
+        }
+        if (last.playing_effects > 0) {
+            quiet_since_s = -1;
+        } else {
+            if (quiet_since_s < 0) quiet_since_s = t;
+            if (arrived >= next_status_check) {
+                next_status_check = arrived + kStatusCheckPeriod;
+                if (all_stopped(effects, states)) {
+                    ended_s = quiet_since_s;
+                    why = Why::ended;
+                    break;
+                }
+            }
+        }
+        if (arrived >= next_line) {
+            while (next_line <= arrived) next_line += kProgressPeriod;
+            (void)all_stopped(effects, states);
+            live.show(progress_line(t, last, states));
+        }
+    }
+    const double elapsed_s = ended_s >= 0 ? ended_s : seconds_since(t0, Clock::now());
+    if (why != Why::ended) {
+        check(library.stop(sensation.name), "stop " + sensation.name);
+        (void)all_stopped(effects, states);
+    }
+    live.show(progress_line(elapsed_s, last, states));
+    live.finish();
+
+    switch (why) {
+        case Why::ended:
+            out << "ended      after " << format_elapsed(elapsed_s) << ": every effect stopped\n";
+            break;
+        case Why::limit:
+            out << "stopped    after " << format_elapsed(elapsed_s)
+                << (limit_s ? " (--seconds)" : " (the limit for a sensation that never ends)") << '\n';
+            break;
+        case Why::interrupted:
+            out << "stopped    after " << format_elapsed(elapsed_s) << " (interrupted)\n";
+            break;
+    }
+    out << "axis   peak force     at time\n";
+    for (int32_t a = 0; a < axes; ++a) {
+        char row[96];
+        if (peaks[a].at_s < 0) {
+            std::snprintf(row, sizeof row, "%-5s %11.1f     -\n", axis_label(a).c_str(), 0.0);
+        } else {
+            std::snprintf(row, sizeof row, "%-5s %+11.1f     %s\n", axis_label(a).c_str(),
+                          static_cast<double>(peaks[a].force), format_elapsed(peaks[a].at_s).c_str());
+        }
+        out << row;
+    }
+    out << "(force is normalized, ±10000 = the motor limit; peaks over the " << reports
+        << " state reports received)\n";
+    library.stop_all();
+    device.close();
+}
+
+}  // namespace feel::cli

@@ -1,0 +1,202 @@
+// feel.h: devices — open, close, capabilities, gain, commands, input, force streaming.
+#include <chrono>
+#include <cstdio>
+#include <span>
+
+#include "capi_internal.hpp"
+
+namespace feel::capi {
+namespace {
+
+template <std::size_t N>
+void copy_string(char (&dst)[N], const std::string& src) noexcept {
+    std::snprintf(dst, N, "%s", src.c_str());
+}
+
+void fill_caps(const host::DeviceCaps& c, feel_caps& out) noexcept {
+    out = feel_caps{};
+    copy_string(out.device, c.device);
+    copy_string(out.description, c.description);
+    copy_string(out.class_name, c.class_name);
+    copy_string(out.firmware_version, c.firmware_version);
+    copy_string(out.protocol_version, c.protocol_version);
+    out.device_class = c.device_class == sim::DeviceClass::iforce1 ? 1 : 2;
+    out.axis_count = c.axis_count;
+    for (int i = 0; i < kMaxAxes; ++i) {
+        out.axes[i].axis = axis_index(c.axes[i].axis);
+        out.axes[i].rotary = c.axes[i].rotary;
+        out.axes[i].half_travel = c.axes[i].half_travel;
+        out.axes[i].max_force = c.axes[i].max_force;
+        out.axes[i].sensor_counts = c.axes[i].sensor_counts;
+    }
+    out.button_count = c.button_count;
+    out.hat_count = c.hat_count;
+    out.dead_man_switch = c.dead_man_switch;
+    out.max_force = c.max_force;
+    out.supported_types = c.supported_types;
+    out.effect_slots = c.effect_slots;
+    out.pool_bytes = c.pool_bytes;
+    out.sample_memory = c.sample_memory;
+    out.local_reflexes = c.local_reflexes;
+    out.interim_reports = c.interim_reports;
+    out.loop_rate_hz = c.loop_rate_hz;
+    out.max_loop_rate_hz = c.max_loop_rate_hz;
+    out.interim_report_hz = c.interim_report_hz;
+    out.report_rate_hz = c.report_rate_hz;
+}
+
+void fill_input(const host::InputState& s, feel_input& out) noexcept {
+    out = feel_input{};
+    out.t_us = s.t_us;
+    out.axis_count = s.axis_count;
+    for (int i = 0; i < kMaxAxes; ++i) {
+        out.position[i] = s.position[i];
+        out.velocity[i] = s.velocity[i];
+        out.force[i] = s.force[i];
+    }
+    out.buttons = s.buttons;
+    out.hats = s.hats;
+    out.handle_held = s.handle_held;
+    out.hands_off = s.hands_off;
+    out.host_lost = s.host_lost;
+    out.fade_level = s.fade_level;
+    out.paused = s.paused;
+    out.actuators_enabled = s.actuators_enabled;
+    out.gain = s.gain;
+    out.playing_effects = s.playing_effects;
+    out.resident_effects = s.resident_effects;
+    out.loop_rate_hz = s.loop_rate_hz;
+    out.measured_loop_hz = s.measured_loop_hz;
+    out.overruns = s.overruns;
+    out.dropped_reports = s.dropped_reports;
+    out.reports_received = s.reports_received;
+}
+
+// The C enumeration of device commands is runtime::DeviceControl's order.
+static_assert(static_cast<int>(runtime::DeviceControl::actuators_on) == FEEL_COMMAND_ACTUATORS_ON);
+static_assert(static_cast<int>(runtime::DeviceControl::actuators_off) == FEEL_COMMAND_ACTUATORS_OFF);
+static_assert(static_cast<int>(runtime::DeviceControl::stop_all) == FEEL_COMMAND_STOP_ALL);
+static_assert(static_cast<int>(runtime::DeviceControl::reset) == FEEL_COMMAND_RESET);
+static_assert(static_cast<int>(runtime::DeviceControl::pause) == FEEL_COMMAND_PAUSE);
+static_assert(static_cast<int>(runtime::DeviceControl::resume) == FEEL_COMMAND_RESUME);
+static_assert(runtime::kDeviceControlCount == FEEL_COMMAND_RESUME + 1);
+
+static_assert(FEEL_MAX_AXES == kMaxAxes);
+static_assert(FEEL_INFINITE == kInfiniteUs);
+static_assert(FEEL_INFINITE_ITERATIONS == kInfiniteIterations);
+static_assert(FEEL_EFFECT_ITERATIONS == runtime::kEffectIterations);
+
+}  // namespace
+}  // namespace feel::capi
+
+using namespace feel::capi;
+
+extern "C" {
+
+feel_device* feel_open(const char* address) {
+    return guard_ptr<feel_device>("feel_open", [&]() -> feel_device* {
+        const std::string_view where = address && *address ? address : "sim:iforce2";
+        feel::host::Result<feel::host::Device> device = feel::host::Device::open(where);
+        if (!device) {
+            fail(device.status());
+            return nullptr;
+        }
+        return new feel_device{std::move(device).value(), false};
+    });
+}
+
+feel_device* feel_open_ex(const char* address, const feel_open_options* options) {
+    return guard_ptr<feel_device>("feel_open_ex", [&]() -> feel_device* {
+        if (!options) return no_handle(null_argument("feel_open_ex", "options"));
+        feel::host::OpenOptions o;
+        if (options->timeout_ms != 0) o.timeout = std::chrono::milliseconds(options->timeout_ms);
+        o.report_rate_hz = options->report_rate_hz;
+        if (options->sim_hand) o.sim_hand = options->sim_hand;
+        if (options->sim_motion) o.sim_motion = options->sim_motion;
+        const std::string_view where = address && *address ? address : "sim:iforce2";
+        feel::host::Result<feel::host::Device> device = feel::host::Device::open(where, o);
+        if (!device) return no_handle(fail(device.status()));
+        return new feel_device{std::move(device).value(), false};
+    });
+}
+
+void feel_close(feel_device* device) {
+    (void)guard("feel_close", [&] {
+        if (!device) return succeed();
+        if (device->borrowed) {
+            return fail(FEEL_ERROR_INVALID_PARAMETER,
+                        "feel_close: this device belongs to a library; feel_library_free closes it");
+        }
+        device->device.close();
+        delete device;
+        return succeed();
+    });
+}
+
+int feel_device_caps(const feel_device* device, feel_caps* out) {
+    return guard("feel_device_caps", [&] {
+        if (!device) return null_argument("feel_device_caps", "device");
+        if (!out) return null_argument("feel_device_caps", "out");
+        fill_caps(device->device.capabilities(), *out);
+        return succeed();
+    });
+}
+
+int feel_set_gain(feel_device* device, int32_t gain) {
+    return guard("feel_set_gain", [&] {
+        if (!device) return null_argument("feel_set_gain", "device");
+        return from_status(device->device.set_gain(gain));
+    });
+}
+
+int feel_device_command(feel_device* device, int32_t command) {
+    return guard("feel_device_command", [&] {
+        if (!device) return null_argument("feel_device_command", "device");
+        if (command < FEEL_COMMAND_ACTUATORS_ON || command > FEEL_COMMAND_RESUME) {
+            return out_of_range("feel_device_command", "command", command, FEEL_COMMAND_ACTUATORS_ON,
+                                FEEL_COMMAND_RESUME);
+        }
+        return from_status(device->device.command(static_cast<feel::runtime::DeviceControl>(command)));
+    });
+}
+
+int feel_poll_input(feel_device* device, feel_input* out) {
+    return guard("feel_poll_input", [&] {
+        if (!device) return null_argument("feel_poll_input", "device");
+        if (!out) return null_argument("feel_poll_input", "out");
+        if (!device->device.connected()) {
+            return fail(FEEL_ERROR_DISCONNECTED, "feel_poll_input: the device is not connected");
+        }
+        fill_input(device->device.input(), *out);
+        return succeed();
+    });
+}
+
+int feel_wait_input(feel_device* device, int32_t timeout_ms, feel_input* out) {
+    return guard("feel_wait_input", [&] {
+        if (!device) return null_argument("feel_wait_input", "device");
+        if (!out) return null_argument("feel_wait_input", "out");
+        if (timeout_ms < 1 || timeout_ms > 60000) {
+            return out_of_range("feel_wait_input", "timeout_ms", timeout_ms, 1, 60000);
+        }
+        feel::host::Result<feel::host::InputState> s =
+            device->device.wait_input(std::chrono::milliseconds(timeout_ms));
+        if (!s) return fail(s.status());
+        fill_input(s.value(), *out);
+        return succeed();
+    });
+}
+
+int feel_stream_force(feel_device* device, const int32_t* force, int32_t axis_count) {
+    return guard("feel_stream_force", [&] {
+        if (!device) return null_argument("feel_stream_force", "device");
+        if (!force) return null_argument("feel_stream_force", "force");
+        const int32_t axes = device->device.capabilities().axis_count;
+        if (axis_count != axes) {
+            return out_of_range("feel_stream_force", "axis_count", axis_count, axes, axes);
+        }
+        return from_status(device->device.stream_force(std::span<const int32_t>(force, static_cast<size_t>(axis_count))));
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,69 @@
+// What a host report means for an effect block: the checks a session can make alone, the
+// shadow parameters a type block fills, the Set Effect fields, and the update mask of a
+// commit. Pure functions of their arguments; the session (device_session.cpp) sequences
+// them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "block_table.hpp"
+#include "feel/effect.hpp"
+#include "feel/protocol/reports.hpp"
+#include "feel/runtime/runtime_messages.hpp"
+#include "feel/status.hpp"
+
+namespace feel::peripheral::detail {
+
+// Why the session refuses a report before the engine sees it. Like feel::Error, but its
+// words may be composed (the block, the effect type): they travel in a CommandStatus.
+struct Refusal {
+    ErrorCode code = ErrorCode::invalid_parameter;
+    std::string field;      // e.g. "set_condition.block"
+    std::string rule;       // a sentence when there is no range
+    bool has_range = false;
+    int64_t value = 0;
+    Range allowed{0, 0};
+
+    static Refusal out_of_range(std::string field, int64_t value, Range allowed);
+    static Refusal of(ErrorCode code, std::string field, std::string rule);
+};
+
+// The report's snake_case name, the prefix of the fields the session names ("set_effect").
+[[nodiscard]] std::string_view report_key(protocol::ReportId id) noexcept;
+
+// The block a report is about, 0 when it names none.
+[[nodiscard]] uint16_t report_block(const protocol::AnyReport& report) noexcept;
+// The report's sequence number, 0 for the reports without one (feature gets, input).
+[[nodiscard]] uint32_t report_sequence(const protocol::AnyReport& report) noexcept;
+
+// Whether a type block (Set Condition, Set Periodic, ...) fits an effect of this type.
+// std::nullopt when it fits; otherwise invalid_parameter naming the report.
+[[nodiscard]] std::optional<Refusal> check_type_block_fits(protocol::ReportId id, EffectType type,
+                                                           uint16_t block);
+
+// Writes a type block into the block's shadow and notes its arrival. The report must fit
+// (check_type_block_fits). Custom Force Data carries samples, not parameters: not here.
+void apply_type_block(const protocol::AnyReport& report, Block& block);
+
+// Writes Set Effect's Effect Structure into `params` (the type blocks stay).
+void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params);
+
+// For a block's first commit: std::nullopt when every type block the effect needs has
+// arrived, else a Refusal naming the first one missing.
+[[nodiscard]] std::optional<Refusal> check_blocks_complete(const Block& block, const EffectParams& next,
+                                                           uint16_t index);
+
+// The effect_field::k* bits whose fields differ between two parameter sets.
+[[nodiscard]] uint32_t changed_fields(const EffectParams& from, const EffectParams& to) noexcept;
+
+// Effect Operation's loop count as a runtime start's iterations: 0 the effect's own count
+// (runtime::kEffectIterations), 1..254 that many, 255 kInfiniteIterations.
+[[nodiscard]] int32_t iterations_of_loop_count(uint8_t loop_count) noexcept;
+
+// PID Device Control as the runtime's DISFFC_* command.
+[[nodiscard]] std::optional<runtime::DeviceControl> runtime_control(protocol::DeviceControlOp op) noexcept;
+
+}  // namespace feel::peripheral::detail

@@ -1,0 +1,152 @@
+// The input reports (device -> host): the joystick's state (Generic Desktop), PID State, and
+// feel's Command Status, Device Status and Dynamic Report.
+#include "feel/engine.hpp"
+#include "feel/runtime/runtime_messages.hpp"
+#include "hid_usages.hpp"
+#include "report_table.hpp"
+
+namespace feel::protocol::detail {
+namespace {
+
+using namespace usage;
+
+constexpr Range kBinary{0, 1};
+constexpr Range kHatBits{0, 0x0F};              // bit h-1 = hat h off center, four hats
+constexpr Range kErrorCode{0, 4};               // feel::ErrorCode
+constexpr Range kReportedState{0, 3};           // runtime::ReportedEffectState
+constexpr Range kPlayEnd{0, 2};                 // feel::PlayEnd
+constexpr Range kSafetyFlags{0, 0x1F};          // five flag bits
+constexpr Range kPages{1, 0xFF};
+constexpr Range kStatusEffects{0, kEffectsPerStatusReport};
+constexpr Range kAxisCountOrNone{0, kMaxAxes};
+constexpr Range kReportIds{0x01, 0x44};         // the lowest and highest ReportId
+static_assert(static_cast<int>(ErrorCode::invalid_handle) == kErrorCode.max, "ErrorCode's last");
+static_assert(static_cast<int>(runtime::ReportedEffectState::emulated) == kReportedState.max,
+              "ReportedEffectState's last");
+static_assert(static_cast<int>(PlayEnd::finished) == kPlayEnd.max, "PlayEnd's last");
+static_assert(static_cast<int>(ReportId::dynamic_report) == kReportIds.max, "the highest ReportId");
+
+constexpr uint32_t kButtonUsages[32] = {
+    button(1),  button(2),  button(3),  button(4),  button(5),  button(6),  button(7),
+    button(8),  button(9),  button(10), button(11), button(12), button(13), button(14),
+    button(15), button(16), button(17), button(18), button(19), button(20), button(21),
+    button(22), button(23), button(24), button(25), button(26), button(27), button(28),
+    button(29), button(30), button(31), button(32),
+};
+
+// The 32 buttons are one HID field of 32 one-bit elements (Button page 1..32); in the struct
+// they are the bits of one word, so this field has its own accessors.
+constexpr FieldSpec buttons_field() noexcept {
+    FieldSpec f = field(0, 1, kBinary).times(32).usages(kButtonUsages);
+    f.path = "buttons[i]";
+    f.get = [](const void* r, int i) noexcept -> int64_t {
+        return (static_cast<const JoystickInputReport*>(r)->buttons >> i) & 1u;
+    };
+    f.set = [](void* r, int i, int64_t v) noexcept {
+        uint32_t& word = static_cast<JoystickInputReport*>(r)->buttons;
+        const uint32_t bit = 1u << i;
+        word = v != 0 ? (word | bit) : (word & ~bit);
+    };
+    return f;
+}
+
+constexpr FieldSpec kJoystickInput[] = {
+    FEEL_FIELD(JoystickInputReport, position[i],
+               i16(0, range::kSignedLevel).times(kMaxAxes).usages(kAxisUsages)),
+    buttons_field(),
+    FEEL_FIELD(JoystickInputReport, hats, u8(vendor::kHats, kHatBits)),
+};
+
+constexpr FieldSpec kPidState[] = {
+    FEEL_FIELD(PidStateReport, device_paused, flag(pid::kDevicePaused)),
+    FEEL_FIELD(PidStateReport, actuators_enabled, flag(pid::kActuatorsEnabled)),
+    FEEL_FIELD(PidStateReport, safety_switch, flag(pid::kSafetySwitch)),
+    FEEL_FIELD(PidStateReport, actuator_override, flag(pid::kActuatorOverrideSwitch)),
+    FEEL_FIELD(PidStateReport, actuator_power, flag(pid::kActuatorPower)),
+    FEEL_FIELD(PidStateReport, effect_playing, flag(pid::kEffectPlaying)),
+    FEEL_FIELD(PidStateReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
+};
+
+bool names_a_report(int64_t v) noexcept {
+    return v >= 0 && v <= 0xFF && find_report(static_cast<uint8_t>(v)) != nullptr;
+}
+
+constexpr FieldSpec kCommandStatus[] = {
+    FEEL_FIELD(CommandStatusReport, sequence, u32(vendor::kSequence, kAnyU32)),
+    FEEL_FIELD(CommandStatusReport, command,
+               u8(vendor::kCommand, kReportIds).only(&names_a_report, "is not a report id")),
+    FEEL_FIELD(CommandStatusReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
+    FEEL_FIELD(CommandStatusReport, code, u8(vendor::kErrorCode, kErrorCode)),
+    FEEL_FIELD(CommandStatusReport, field[i], text(vendor::kErrorField, 48)),
+    FEEL_FIELD(CommandStatusReport, value, x64(vendor::kErrorValue)),
+    FEEL_FIELD(CommandStatusReport, allowed_min, x64(vendor::kAllowedMin)),
+    FEEL_FIELD(CommandStatusReport, allowed_max, x64(vendor::kAllowedMax)),
+    FEEL_FIELD(CommandStatusReport, has_range, flag(vendor::kHasRange)),
+    FEEL_FIELD(CommandStatusReport, rule[i], text(vendor::kErrorRule, 96)),
+    FEEL_FIELD(CommandStatusReport, effect_state, u8(vendor::kEffectState, kReportedState)),
+    FEEL_FIELD(CommandStatusReport, iterations, u8(vendor::kIterations, kAnyU8)),
+    FEEL_FIELD(CommandStatusReport, completed_iterations, u8(vendor::kCompletedIterations, kAnyU8)),
+    FEEL_FIELD(CommandStatusReport, elapsed_us,
+               u32(vendor::kElapsed, kAnyU32).in(FieldUnit::microseconds)),
+    FEEL_FIELD(CommandStatusReport, last_end, u8(vendor::kLastEnd, kPlayEnd)),
+};
+
+constexpr FieldSpec kDeviceStatus[] = {
+    FEEL_FIELD(DeviceStatusReport, t_us, x64(vendor::kDeviceTime).in(FieldUnit::microseconds)),
+    FEEL_FIELD(DeviceStatusReport, report_number, u32(vendor::kReportNumber, kAnyU32)),
+    FEEL_FIELD(DeviceStatusReport, force[i],
+               i16(vendor::kMotorForce, range::kSignedLevel).times(kMaxAxes)),
+    FEEL_FIELD(DeviceStatusReport, velocity[i],
+               i32(vendor::kHandleVelocity, kAnyI32).times(kMaxAxes)),
+    FEEL_FIELD(DeviceStatusReport, fade_level, u16(vendor::kSafetyFade, range::kLevel)),
+    FEEL_FIELD(DeviceStatusReport, safety_flags, u8(vendor::kSafetyFlags, kSafetyFlags)),
+    FEEL_FIELD(DeviceStatusReport, gain, u16(pid::kDeviceGain, range::kGain)),
+    FEEL_FIELD(DeviceStatusReport, playing_effects, u16(vendor::kPlayingEffects, kAnyU16)),
+    FEEL_FIELD(DeviceStatusReport, resident_effects, u16(vendor::kResidentEffects, kAnyU16)),
+    FEEL_FIELD(DeviceStatusReport, loop_rate_hz, u16(vendor::kLoopRate, kAnyU16).in(FieldUnit::hertz)),
+    FEEL_FIELD(DeviceStatusReport, overruns, u32(vendor::kOverruns, kAnyU32)),
+    FEEL_FIELD(DeviceStatusReport, measured_rate_millihz,
+               u32(vendor::kMeasuredRate, kAnyU32).in(FieldUnit::millihertz)),
+    FEEL_FIELD(DeviceStatusReport, dropped_reports, x64(vendor::kDroppedReports)),
+    FEEL_FIELD(DeviceStatusReport, page, u8(vendor::kPage, kAnyU8)),
+    FEEL_FIELD(DeviceStatusReport, pages, u8(vendor::kPages, kPages)),
+    FEEL_FIELD(DeviceStatusReport, effect_count, u8(vendor::kEffectCount, kStatusEffects)),
+    FEEL_FIELD(DeviceStatusReport, effect_block[i],
+               u16(pid::kEffectBlockIndex, kBlockOrNone).times(kEffectsPerStatusReport)),
+    FEEL_FIELD(DeviceStatusReport, effect_state[i],
+               u8(vendor::kEffectState, kReportedState).times(kEffectsPerStatusReport)),
+};
+
+constexpr FieldSpec kDynamicReport[] = {
+    FEEL_FIELD(DynamicReportReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
+    FEEL_FIELD(DynamicReportReport, final_report, flag(vendor::kFinalReport)),
+    FEEL_FIELD(DynamicReportReport, t_us, x64(vendor::kDeviceTime).in(FieldUnit::microseconds)),
+    FEEL_FIELD(DynamicReportReport, axis_count, u8(vendor::kAxisCount, kAxisCountOrNone)),
+    FEEL_FIELD(DynamicReportReport, position_centi[i],
+               i32(vendor::kMassPosition, kAnyI32).times(kMaxAxes)),
+    FEEL_FIELD(DynamicReportReport, velocity_centi[i],
+               i32(vendor::kMassVelocity, kAnyI32).times(kMaxAxes)),
+    FEEL_FIELD(DynamicReportReport, handle_velocity_centi[i],
+               i32(vendor::kHandleVelocity, kAnyI32).times(kMaxAxes)),
+};
+
+constexpr ReportKind kIn = ReportKind::input;
+
+constexpr ReportSpec kReports[] = {
+    report<JoystickInputReport>(ReportId::joystick_input, kIn, "Joystick Input", "joystick_input",
+                                gd::kPointer, kJoystickInput),
+    report<PidStateReport>(ReportId::pid_state, kIn, "PID State", "pid_state",
+                           pid::kPidStateReport, kPidState),
+    report<CommandStatusReport>(ReportId::command_status, kIn, "Command Status",
+                                "command_status", vendor::kCommandStatusReport, kCommandStatus),
+    report<DeviceStatusReport>(ReportId::device_status, kIn, "Device Status", "device_status",
+                               vendor::kDeviceStatusReport, kDeviceStatus),
+    report<DynamicReportReport>(ReportId::dynamic_report, kIn, "Dynamic Report",
+                                "dynamic_report", vendor::kDynamicReportReport, kDynamicReport),
+};
+
+}  // namespace
+
+std::span<const ReportSpec> input_reports() noexcept { return kReports; }
+
+}  // namespace feel::protocol::detail

@@ -1,0 +1,180 @@
+// Load and play in two calls (§9.5), with the primer's own sensation file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+
+#include "feel/format/sensation_file.hpp"
+#include "feel/host/sensation_library.hpp"
+#include "feel/sim/device_profile.hpp"
+#include "host_test_support.hpp"
+
+namespace feel::host::test {
+namespace {
+
+const std::filesystem::path kPrimerFile = std::filesystem::path(FEEL_SOURCE_DIR) / "examples" / "primer.feel.json";
+
+// The hat switches of the I-FORCE profiles (their data sheet).
+int32_t hats_of(const char* profile) { return sim::find_device_profile(profile)->hat_count; }
+
+// The primer's file as a device with `hats` hat switches can hold it: §1.2.c's table puts
+// the Patriot missile on hat switch #2; on a device with fewer hats that reflex moves to
+// hat 1 (written to a temporary file with the format's own writer).
+// With `reflex_table_only`, just the sensations with a trigger and the railing impact: the
+// whole file holds 19 effects, more than the 16 slots of the 1.x-class device.
+struct PrimerForDevice {
+    std::filesystem::path path;
+    explicit PrimerForDevice(int32_t hats, bool reflex_table_only = false) {
+        format::SensationFile file = format::load_sensation_file(kPrimerFile);
+        if (reflex_table_only) {
+            std::erase_if(file.sensations, [](const format::Sensation& s) {
+                return s.name != "railing_impact" && s.effects[0].params.trigger.kind == TriggerKind::none;
+            });
+        }
+        for (auto& sensation : file.sensations) {
+            for (auto& effect : sensation.effects) {
+                Trigger& t = effect.params.trigger;
+                if (t.kind == TriggerKind::hat && t.index > hats) t.index = 1;
+            }
+        }
+        path = std::filesystem::temp_directory_path() /
+               ("feel-host-primer-" + std::to_string(reinterpret_cast<uintptr_t>(this)) + ".feel.json");
+        std::ofstream(path) << format::write_sensation_file(file);
+    }
+    ~PrimerForDevice() {
+        std::error_code ec;
+        std::filesystem::remove(path, ec);
+    }
+};
+
+TEST(HostSensationLibrary, ThePrimersHatTwoReflexNeedsADeviceWithTwoHats) {
+    // A trigger on a hat the device lacks would never fire: refused, naming it. With two
+    // hats or more the primer's file loads as it is.
+    Result<SensationLibrary> library = SensationLibrary::load(kPrimerFile, "sim:iforce2");
+    if (hats_of("iforce2") >= 2) {
+        EXPECT_TRUE(library) << library.status().message;
+        return;
+    }
+    ASSERT_FALSE(library);
+    EXPECT_EQ(library.status().kind, ErrorKind::invalid_parameter);
+    const std::string& m = library.status().message;
+    EXPECT_NE(m.find("sensation \"patriot_missile\""), std::string::npos) << m;
+    EXPECT_NE(m.find("trigger_button = hat2 is out of range (allowed hat1..hat" + std::to_string(hats_of("iforce2")) +
+                     ")"),
+              std::string::npos)
+        << m;
+}
+
+TEST(HostSensationLibrary, LoadsThePrimerFileAndPlaysASensation) {
+    const PrimerForDevice primer(hats_of("iforce2"));
+    const std::filesystem::path kPrimer = primer.path;
+    Result<SensationLibrary> library = SensationLibrary::load(kPrimer, "sim:iforce2");
+    ASSERT_TRUE(library) << library.status().message;
+    // Every sensation of the file, in file order (read independently with the format).
+    const format::SensationFile file = format::load_sensation_file(kPrimer);
+    std::vector<std::string> expected;
+    for (const auto& s : file.sensations) expected.push_back(s.name);
+    EXPECT_EQ(library->names(), expected);
+
+    ASSERT_TRUE(library->play("railing_impact").ok());
+    std::span<Effect> effects = library->effects("railing_impact");
+    ASSERT_EQ(effects.size(), 1u);
+    EXPECT_EQ(effects[0].status()->state, runtime::ReportedEffectState::playing);
+    ASSERT_TRUE(library->stop("railing_impact").ok());
+    EXPECT_EQ(effects[0].status()->state, runtime::ReportedEffectState::stopped);
+
+    // A compound plays all its effects; the second waits its start delay.
+    ASSERT_TRUE(library->play("cross_wind_with_gun_blasts").ok());
+    std::span<Effect> wind = library->effects("cross_wind_with_gun_blasts");
+    ASSERT_EQ(wind.size(), 2u);
+    EXPECT_EQ(wind[0].status()->state, runtime::ReportedEffectState::playing);
+    EXPECT_EQ(wind[1].status()->state, runtime::ReportedEffectState::delayed);
+    ASSERT_TRUE(library->stop_all().ok());
+    EXPECT_EQ(wind[0].status()->state, runtime::ReportedEffectState::stopped);
+
+    const Status unknown = library->play("warp_drive");
+    EXPECT_EQ(unknown.kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(unknown.message.find("warp_drive"), std::string::npos);
+    EXPECT_NE(unknown.message.find("railing_impact"), std::string::npos) << unknown.message;
+    EXPECT_TRUE(library->effects("warp_drive").empty());
+}
+
+TEST(HostSensationLibrary, ButtonAssignmentsBecomeReflexes) {
+    const PrimerForDevice primer(std::min(hats_of("iforce1"), hats_of("iforce2")), true);
+    const std::filesystem::path kPrimer = primer.path;
+    // iforce1: the file's trigger buttons are emulated by the host (§1.2.c).
+    Result<SensationLibrary> one = SensationLibrary::load(kPrimer, "sim:iforce1");
+    ASSERT_TRUE(one) << one.status().message;
+    ASSERT_EQ(one->effects("machine_guns").size(), 1u);
+    EXPECT_TRUE(one->effects("machine_guns")[0].emulated());
+    EXPECT_EQ(one->effects("machine_guns")[0].parameters().trigger.index, 1);
+    EXPECT_FALSE(one->effects("railing_impact")[0].emulated());
+    // iforce2: the same triggers are device reflexes.
+    Result<SensationLibrary> two = SensationLibrary::load(kPrimer, "sim:iforce2");
+    ASSERT_TRUE(two) << two.status().message;
+    EXPECT_FALSE(two->effects("machine_guns")[0].emulated());
+    EXPECT_TRUE(two->effects("machine_guns")[0].downloaded());
+}
+
+TEST(HostSensationLibrary, PullingTheTriggerFiresTheFilesReflex) {
+    const PrimerForDevice primer(std::min(hats_of("iforce1"), hats_of("iforce2")), true);
+    for (const char* profile : {"iforce1", "iforce2"}) {
+        SCOPED_TRACE(profile);
+        SimRig rig = SimRig::make(profile);
+        Result<SensationLibrary> library = SensationLibrary::load(primer.path, *rig.host);
+        ASSERT_TRUE(library) << library.status().message;
+        Effect& guns = library->effects("machine_guns")[0];  // §1.2.c: trigger 1
+        rig.set_buttons(0b1);
+        // Emulated by the host on the 1.x device, a device reflex on the 2.0 one.
+        const auto expected = rig.host->capabilities().local_reflexes ? runtime::ReportedEffectState::playing
+                                                                        : runtime::ReportedEffectState::emulated;
+        EXPECT_TRUE(wait_until([&] {
+            Result<EffectStatusInfo> st = guns.status();
+            return st && st->state == expected;
+        }));
+        rig.set_buttons(0);
+    }
+}
+
+TEST(HostSensationLibrary, TheWholePrimerDoesNotFitTheSixteenSlotsOfIforce1) {
+    const PrimerForDevice primer(hats_of("iforce1"));
+    const format::SensationFile file = format::load_sensation_file(primer.path);
+    std::size_t effects = 0;
+    for (const auto& sensation : file.sensations) effects += sensation.effects.size();
+    ASSERT_GT(effects, 16u);  // iforce1's data sheet: 16 effect slots
+    Result<SensationLibrary> library = SensationLibrary::load(primer.path, "sim:iforce1");
+    ASSERT_FALSE(library);
+    EXPECT_EQ(library.status().kind, ErrorKind::device_full) << library.status().message;
+}
+
+TEST(HostSensationLibrary, ABadFileIsAnInvalidParameterNamingIt) {
+    const auto path = std::filesystem::temp_directory_path() / "feel-host-bad.feel.json";
+    std::ofstream(path) << R"({"format": "feel/1", "sensations": {"hum": {"type": "sine", "duration_us": 1000000, "axes": ["x"],
+        "periodic": {"magnitude": 2000, "period_us": 10000, "phase": 36000}}}})";
+    Result<SensationLibrary> library = SensationLibrary::load(path, "sim:iforce2");
+    std::filesystem::remove(path);
+    ASSERT_FALSE(library);
+    EXPECT_EQ(library.status().kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(library.status().message.find("periodic.phase = 36000 is out of range (allowed 0..35999)"),
+              std::string::npos)
+        << library.status().message;
+    EXPECT_NE(library.status().message.find("hum"), std::string::npos);
+
+    Result<SensationLibrary> missing = SensationLibrary::load("/nonexistent/x.feel.json");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.status().kind, ErrorKind::invalid_parameter);
+}
+
+TEST(HostSensationLibrary, ATypeTheDeviceLacksIsNotSupportedNamingTheSensation) {
+    const auto path = std::filesystem::path(FEEL_SOURCE_DIR) / "examples" / "dynamics.feel.json";
+    Result<SensationLibrary> library = SensationLibrary::load(path, "sim:iforce1");
+    ASSERT_FALSE(library);
+    EXPECT_EQ(library.status().kind, ErrorKind::not_supported);
+    EXPECT_NE(library.status().message.find("sensation \""), std::string::npos) << library.status().message;
+    EXPECT_NE(library.status().message.find("iforce1"), std::string::npos) << library.status().message;
+}
+
+}  // namespace
+}  // namespace feel::host::test

@@ -1,0 +1,376 @@
+// A DeviceSession on a RuntimePipeline ticked by hand, and a host that speaks to it in
+// encoded frames: what the peripheral's tests drive. No thread: tick n runs when the test
+// says, so every exchange is deterministic.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <memory>
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "feel/peripheral/device_session.hpp"
+#include "feel/protocol/codec.hpp"
+#include "feel/runtime/capabilities.hpp"
+#include "feel/runtime/host_link.hpp"
+#include "feel/runtime/runtime_backend.hpp"
+#include "feel/runtime/runtime_pipeline.hpp"
+#include "feel/sim/device_profile.hpp"
+#include "feel/transport/transport.hpp"
+
+namespace feel::peripheral::test {
+
+using transport::Frame;
+using transport::FrameKind;
+
+inline const sim::DeviceProfile& profile(const char* name) { return *sim::find_device_profile(name); }
+
+// The profile's runtime with forces at once and no host watchdog: the tests that are not
+// about safety see the engine's forces unscaled and need no keep-alives.
+inline runtime::RuntimeConfig quiet_config(const sim::DeviceProfile& p) {
+    runtime::RuntimeConfig c = runtime::runtime_config_for(p);
+    c.safety.fade_in_us = 0;
+    c.safety.host_timeout_us = kInfiniteUs;
+    return c;
+}
+
+inline Frame output(const protocol::AnyReport& r) { return Frame{FrameKind::output_report, protocol::encode(r)}; }
+inline Frame set_feature(const protocol::AnyReport& r) { return Frame{FrameKind::set_feature, protocol::encode(r)}; }
+inline Frame get_feature(protocol::ReportId id) { return Frame{FrameKind::get_feature, {static_cast<uint8_t>(id)}}; }
+
+class SessionRig {
+public:
+    explicit SessionRig(const char* profile_name = "iforce2", const char* motion = "hold:0",
+                        sim::Grip grip = sim::Grip::firm)
+        : profile_(&profile(profile_name)), caps_(runtime::capabilities_for(*profile_)) {
+        const runtime::RuntimeConfig config = quiet_config(*profile_);
+        auto backend = std::make_unique<runtime::SimBackend>(
+            *profile_, grip, sim::TargetMotion::parse(motion, 10, profile_->axis_count));
+        sim_ = backend.get();
+        pipeline_ = std::make_unique<runtime::RuntimePipeline>(config, std::move(backend));
+        link_ = std::make_unique<runtime::HostLink>(pipeline_->commands(), pipeline_->reports());
+        session_ = std::make_unique<DeviceSession>(caps_, pipeline_->config(), *link_);
+        run(2);  // the session's first pool query, answered
+    }
+
+    DeviceSession& session() { return *session_; }
+    runtime::RuntimePipeline& pipeline() { return *pipeline_; }
+    runtime::SimBackend& sim() { return *sim_; }
+    const runtime::Capabilities& caps() const { return caps_; }
+
+    // One tick of the loop with the session pumped before and after.
+    void run(int ticks = 1) {
+        for (int i = 0; i < ticks; ++i) {
+            pump();
+            pipeline_->tick(next_tick_++);
+            pump();
+        }
+    }
+
+    void pump() {
+        std::vector<Frame> out;
+        session_->pump(out);
+        for (Frame& f : out) take(std::move(f));
+    }
+
+    // Offers a frame (it must be taken).
+    void offer(Frame f) { ASSERT_TRUE(session_->offer(std::move(f))) << "the session's inbox is full"; }
+
+    // Sends an output report or sets a feature report and runs until its CommandStatus
+    // comes (at most 50 ticks).
+    protocol::CommandStatusReport command(const protocol::AnyReport& r, bool feature = false) {
+        const uint32_t sequence = std::visit([](const auto& x) -> uint32_t {
+            if constexpr (requires { x.sequence; }) return x.sequence; else return 0;
+        }, r);
+        const std::size_t seen = statuses.size();
+        offer(feature ? set_feature(r) : output(r));
+        for (int i = 0; i < 50; ++i) {
+            pump();
+            for (std::size_t k = seen; k < statuses.size(); ++k) {
+                if (statuses[k].sequence == sequence) return statuses[k];
+            }
+            run(1);
+        }
+        ADD_FAILURE() << "no CommandStatus for sequence " << sequence;
+        return {};
+    }
+
+    // A command that must succeed.
+    protocol::CommandStatusReport ok(const protocol::AnyReport& r, bool feature = false) {
+        const protocol::CommandStatusReport s = command(r, feature);
+        EXPECT_EQ(s.code, ErrorCode::ok) << "report " << static_cast<int>(s.command) << " seq " << s.sequence
+                                         << ": " << s.field << " " << s.rule;
+        return s;
+    }
+
+    // Gets a feature report and runs until the reply comes.
+    template <class R>
+    R get(protocol::ReportId id) {
+        const std::size_t seen = feature_replies.size();
+        offer(get_feature(id));
+        for (int i = 0; i < 50; ++i) {
+            pump();
+            if (feature_replies.size() > seen) {
+                const protocol::AnyReport& r = feature_replies[seen];
+                if (const R* reply = std::get_if<R>(&r)) return *reply;
+                ADD_FAILURE() << "the feature reply is another report";
+                return R{};
+            }
+            run(1);
+        }
+        ADD_FAILURE() << "no feature reply";
+        return R{};
+    }
+
+    // Creates an effect block of this type; returns the block (0 when refused).
+    uint16_t create(EffectType type, uint16_t sample_count = 0) {
+        protocol::CreateNewEffectReport r;
+        r.sequence = next_sequence();
+        r.type = type;
+        r.sample_count = sample_count;
+        const protocol::CommandStatusReport s = command(r, true);
+        const auto load = get<protocol::BlockLoadReport>(protocol::ReportId::block_load);
+        if (s.code != ErrorCode::ok) {
+            EXPECT_EQ(load.block, 0);
+            return 0;
+        }
+        EXPECT_EQ(load.status, protocol::BlockLoadStatus::success);
+        EXPECT_EQ(load.block, s.block);
+        return load.block;
+    }
+
+    uint32_t next_sequence() { return sequence_++; }
+
+    // Every frame the device sent, sorted by kind.
+    std::vector<protocol::CommandStatusReport> statuses;
+    std::vector<protocol::AnyReport> feature_replies;
+    std::vector<std::vector<uint8_t>> descriptors;
+    std::vector<protocol::JoystickInputReport> joystick;
+    std::vector<protocol::DeviceStatusReport> device_status;
+    std::vector<protocol::PidStateReport> pid_states;
+    std::vector<protocol::DynamicReportReport> dynamics;
+    std::vector<Frame> other;
+
+private:
+    void take(Frame f) {
+        if (f.kind == FrameKind::descriptor_reply) {
+            descriptors.push_back(std::move(f.payload));
+            return;
+        }
+        protocol::AnyReport r;
+        const Error e = protocol::decode(f.payload, r);
+        ASSERT_TRUE(e.ok()) << "the device sent a report that does not decode: " << e.message();
+        if (f.kind == FrameKind::feature_reply) {
+            feature_replies.push_back(r);
+            return;
+        }
+        ASSERT_EQ(f.kind, FrameKind::input_report);
+        if (auto* s = std::get_if<protocol::CommandStatusReport>(&r)) statuses.push_back(*s);
+        else if (auto* j = std::get_if<protocol::JoystickInputReport>(&r)) joystick.push_back(*j);
+        else if (auto* d = std::get_if<protocol::DeviceStatusReport>(&r)) device_status.push_back(*d);
+        else if (auto* p = std::get_if<protocol::PidStateReport>(&r)) pid_states.push_back(*p);
+        else if (auto* y = std::get_if<protocol::DynamicReportReport>(&r)) dynamics.push_back(*y);
+        else other.push_back(std::move(f));
+    }
+
+    const sim::DeviceProfile* profile_;
+    runtime::Capabilities caps_;
+    runtime::SimBackend* sim_ = nullptr;
+    std::unique_ptr<runtime::RuntimePipeline> pipeline_;
+    std::unique_ptr<runtime::HostLink> link_;
+    std::unique_ptr<DeviceSession> session_;
+    int64_t next_tick_ = 0;
+    uint32_t sequence_ = 100;
+};
+
+// Reports a test builds often.
+inline protocol::SetEffectReport set_effect(uint32_t sequence, uint16_t block, EffectType type, uint8_t axis_count = 1) {
+    protocol::SetEffectReport r;
+    r.sequence = sequence;
+    r.block = block;
+    r.type = type;
+    r.axis_count = axis_count;
+    return r;
+}
+
+inline protocol::SetConditionReport spring_axis(uint32_t sequence, uint16_t block, uint8_t axis, int16_t k) {
+    protocol::SetConditionReport r;
+    r.sequence = sequence;
+    r.block = block;
+    r.axis_index = axis;
+    r.pos_coefficient = k;
+    r.neg_coefficient = k;
+    return r;
+}
+
+inline protocol::SetPeriodicReport periodic(uint32_t sequence, uint16_t block, int16_t magnitude, uint32_t period_us) {
+    protocol::SetPeriodicReport r;
+    r.sequence = sequence;
+    r.block = block;
+    r.magnitude = magnitude;
+    r.period_us = period_us;
+    return r;
+}
+
+inline protocol::EffectOperationReport operation(uint32_t sequence, uint16_t block, protocol::EffectOperation op,
+                                                 uint8_t loop_count = protocol::kLoopEffectOwn) {
+    protocol::EffectOperationReport r;
+    r.sequence = sequence;
+    r.block = block;
+    r.operation = op;
+    r.loop_count = loop_count;
+    return r;
+}
+
+// Set Effect carrying an EffectParams' Effect Structure.
+inline protocol::SetEffectReport set_effect_of(uint32_t sequence, uint16_t block, const EffectParams& p) {
+    protocol::SetEffectReport r;
+    r.sequence = sequence;
+    r.block = block;
+    r.type = p.type;
+    r.duration_us = p.duration_us == kInfiniteUs ? protocol::kWireInfinite : static_cast<uint32_t>(p.duration_us);
+    r.start_delay_us = static_cast<uint32_t>(p.start_delay_us);
+    r.trigger_repeat_interval_us = static_cast<uint32_t>(p.trigger_repeat_interval_us);
+    r.gain = static_cast<uint16_t>(p.gain);
+    r.iterations = p.iterations == kInfiniteIterations ? protocol::kLoopInfinite : static_cast<uint8_t>(p.iterations);
+    r.trigger_kind = p.trigger.kind;
+    r.trigger_index = static_cast<uint8_t>(p.trigger.index);
+    r.axis_count = static_cast<uint8_t>(p.axis_count);
+    for (int a = 0; a < kMaxAxes; ++a) r.axes[a] = p.axes[a];
+    r.direction_kind = p.direction.kind;
+    for (int i = 0; i < 3; ++i) r.direction[i] = p.direction.value[i];
+    r.has_envelope = p.has_envelope;
+    return r;
+}
+
+// Downloads an effect the way a host does: Create New Effect, Block Load, every type block
+// the type uses (the force profile's samples in data reports), Set Effect. Each report
+// must succeed; returns the block.
+inline uint16_t download(SessionRig& rig, const EffectParams& p, std::span<const int16_t> samples = {}) {
+    const uint16_t block = rig.create(p.type, static_cast<uint16_t>(samples.size()));
+    if (block == 0) return 0;
+    const EffectType t = p.type;
+    auto seq = [&] { return rig.next_sequence(); };
+    if (t == EffectType::spring || t == EffectType::damper || t == EffectType::inertia ||
+        t == EffectType::friction || t == EffectType::angle_spring) {
+        const int axes = t == EffectType::angle_spring ? 1 : p.axis_count;
+        for (int a = 0; a < axes; ++a) {
+            const ConditionBlock& c = p.conditions[a];
+            protocol::SetConditionReport r;
+            r.sequence = seq();
+            r.block = block;
+            r.axis_index = static_cast<uint8_t>(a);
+            r.center_offset = static_cast<int16_t>(c.offset);
+            r.pos_coefficient = static_cast<int16_t>(c.pos_coefficient);
+            r.neg_coefficient = static_cast<int16_t>(c.neg_coefficient);
+            r.pos_saturation = static_cast<uint16_t>(c.pos_saturation);
+            r.neg_saturation = static_cast<uint16_t>(c.neg_saturation);
+            r.deadband = static_cast<uint16_t>(c.deadband);
+            r.offset_mode = c.offset_mode;
+            rig.ok(r);
+        }
+    } else if (is_periodic(t) || is_sweep(t)) {
+        protocol::SetPeriodicReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.magnitude = static_cast<int16_t>(p.periodic.magnitude);
+        r.offset = static_cast<int16_t>(p.periodic.offset);
+        r.phase = static_cast<uint16_t>(p.periodic.phase);
+        r.period_us = static_cast<uint32_t>(p.periodic.period_us);
+        rig.ok(r);
+        if (is_sweep(t)) {
+            protocol::SetSweepReport s;
+            s.sequence = seq();
+            s.block = block;
+            s.start_angle = static_cast<uint16_t>(p.periodic.sweep_start_angle);
+            s.end_angle = static_cast<uint16_t>(p.periodic.sweep_end_angle);
+            s.sense = p.periodic.sweep_sense;
+            rig.ok(s);
+        }
+    } else if (t == EffectType::constant || t == EffectType::vector_force || t == EffectType::smart_pop) {
+        protocol::SetConstantForceReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.magnitude = static_cast<int16_t>(p.constant.magnitude);
+        rig.ok(r);
+    } else if (t == EffectType::ramp) {
+        protocol::SetRampForceReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.start = static_cast<int16_t>(p.ramp.start);
+        r.end = static_cast<int16_t>(p.ramp.end);
+        rig.ok(r);
+    } else if (t == EffectType::force_profile) {
+        for (std::size_t offset = 0; offset < samples.size(); offset += protocol::kSamplesPerDataReport) {
+            protocol::CustomForceDataReport d;
+            d.sequence = seq();
+            d.block = block;
+            d.offset = static_cast<uint16_t>(offset);
+            d.count = static_cast<uint8_t>(std::min<std::size_t>(protocol::kSamplesPerDataReport, samples.size() - offset));
+            for (int i = 0; i < d.count; ++i) d.samples[i] = samples[offset + static_cast<std::size_t>(i)];
+            rig.ok(d);
+        }
+        protocol::SetCustomForceReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.channels = static_cast<uint8_t>(p.custom.channels);
+        r.sample_period_us = static_cast<uint32_t>(p.custom.sample_period_us);
+        r.sample_count = static_cast<uint16_t>(p.custom.sample_count);
+        rig.ok(r);
+    } else if (t == EffectType::texture) {
+        protocol::SetTextureReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.texture = p.texture;
+        rig.ok(r);
+    } else if (t == EffectType::axis_wall || t == EffectType::angle_wall) {
+        protocol::SetWallReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.wall = p.wall;
+        rig.ok(r);
+    } else if (t == EffectType::axis_barrier || t == EffectType::angle_barrier) {
+        protocol::SetBarrierReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.barrier = p.barrier;
+        rig.ok(r);
+    } else if (effect_class(t) == EffectClass::dynamic) {
+        protocol::SetDynamicReport r;
+        r.sequence = seq();
+        r.block = block;
+        r.dynamic = p.dynamic;
+        for (ControlLawBlock& law : r.dynamic.control_law) law = ControlLawBlock{};  // not carried here
+        rig.ok(r);
+        if (t == EffectType::dynamic_control_law) {
+            for (int a = 0; a < p.axis_count; ++a) {
+                protocol::SetControlLawReport l;
+                l.sequence = seq();
+                l.block = block;
+                l.axis_index = static_cast<uint8_t>(a);
+                l.law = p.dynamic.control_law[a];
+                rig.ok(l);
+            }
+        }
+    }
+    if (p.has_envelope) {
+        protocol::SetEnvelopeReport e;
+        e.sequence = seq();
+        e.block = block;
+        e.impulse_level = static_cast<uint16_t>(p.envelope.impulse_level);
+        e.settle_time_us = static_cast<uint32_t>(p.envelope.settle_time_us);
+        e.fade_level = static_cast<uint16_t>(p.envelope.fade_level);
+        e.fade_time_us = static_cast<uint32_t>(p.envelope.fade_time_us);
+        rig.ok(e);
+    }
+    rig.ok(set_effect_of(seq(), block, p));
+    return block;
+}
+
+}  // namespace feel::peripheral::test
