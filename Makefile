@@ -1,5 +1,6 @@
 # feel — the two commands of the README, and a few more.
-#   make demo   install what is missing, build, render a sample sensation, plot it
+#   make demo   install what is missing, build, render sample sensations and plot them, play
+#               one on the simulated device through the host API, stream forces to it
 #   make test   install what is missing, build, run every test (and a short fuzz run)
 BUILD      ?= build
 BUILD_TYPE ?= RelWithDebInfo
@@ -30,6 +31,8 @@ demo: build
 	$(FEEL) render examples/walls.feel.json --sensation horizontal_wall \
 	    --device joystick --hand firm --motion circle:6000:0.5 -o out/horizontal_wall.csv \
 	    --plot out/horizontal_wall.png
+	$(FEEL) play examples/primer.feel.json --sensation railing_impact --seconds 1
+	$(FEEL) stream --rate 60 --seconds 1
 
 # The fuzz run goes first so that the test summary is the last thing printed.
 test: build fuzz unit-tests
@@ -59,6 +62,9 @@ plots: build
 
 bench: build
 	$(BUILD)/bench/feel_bench_tick
+	$(BUILD)/bench/feel_bench_runtime
+	$(BUILD)/bench/feel_bench_host_latency
+	$(BUILD)/bench/feel_bench_streaming
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-fuzz out

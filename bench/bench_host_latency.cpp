@@ -49,6 +49,7 @@
 #include "feel/effect.hpp"
 #include "feel/engine.hpp"
 #include "feel/host/device.hpp"
+#include "host_bench_support.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/runtime/device_runtime.hpp"
 #include "feel/runtime/runtime_backend.hpp"
@@ -60,7 +61,10 @@
 namespace {
 
 using namespace feel;
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::ms_since;
+using bench::percentile;
+using bench::require;
 
 constexpr int32_t kReportRateHz = 1000;
 constexpr double kBudgetMs = 25;
@@ -77,17 +81,7 @@ void random_phase() {
     std::this_thread::sleep_for(std::chrono::microseconds(us(rng)));
 }
 
-double ms_since(Clock::time_point t0, Clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(t - t0).count();
-}
 
-// Nearest-rank percentile of a sample, p in 0..100.
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const auto rank = static_cast<std::size_t>(std::ceil(p / 100.0 * static_cast<double>(v.size())));
-    return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
-}
 
 EffectParams constant_force(int32_t magnitude) {
     EffectParams p;
@@ -99,9 +93,6 @@ EffectParams constant_force(int32_t magnitude) {
     return p;
 }
 
-void require(const host::Status& s, const char* what) {
-    if (!s.ok()) throw std::runtime_error(std::string(what) + ": " + s.message);
-}
 
 // ---------------------------------------------------------------------------------------
 // Through the host API.
@@ -274,35 +265,7 @@ int main(int argc, char** argv) {
             worst_p99 = std::max({worst_p99, percentile(f.start_ms, 99), percentile(f.update_ms, 99)});
         };
 
-        {
-            host::Result<host::Device> device = host::Device::open(std::string("sim:") + kProfile);
-            require(device.status(), "open sim");
-            run_host("in-process", device.value());
-            device->close();
-        }
-        peripheral::PeripheralOptions options;
-        options.profile = kProfile;
-        {
-            const std::string path = (std::filesystem::temp_directory_path() /
-                                      ("feel-bench-latency-" + std::to_string(::getpid()) + ".sock"))
-                                         .string();
-            peripheral::Peripheral device_side(options);
-            device_side.serve(transport::listen(transport::Address::parse("unix:" + path)));
-            host::Result<host::Device> device = host::Device::open("unix:" + path);
-            require(device.status(), "open unix socket");
-            run_host("unix socket", device.value());
-            device->close();
-            device_side.stop();
-        }
-        {
-            peripheral::Peripheral device_side(options);
-            device_side.serve(transport::listen(transport::Address::parse_listen("tcp:127.0.0.1:0")));
-            host::Result<host::Device> device = host::Device::open(device_side.address().to_string());
-            require(device.status(), "open tcp");
-            run_host("tcp loopback", device.value());
-            device->close();
-            device_side.stop();
-        }
+        bench::for_each_transport(kProfile, "feel-bench-latency", run_host);
 
         std::printf("\ndevice side (runtime ack t_us -> first report t_us showing the force, device clock): "
                     "p50 %.0f us, p99 %.0f us, max %.0f us\n",

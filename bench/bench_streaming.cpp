@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "feel/host/device.hpp"
+#include "host_bench_support.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/runtime/device_runtime.hpp"
 #include "feel/runtime/runtime_backend.hpp"
@@ -58,7 +59,10 @@
 namespace {
 
 using namespace feel;
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::ms_since;
+using bench::percentile;
+using bench::require;
 
 constexpr const char* kProfile = "iforce2";
 constexpr int32_t kReportRateHz = 1000;
@@ -69,16 +73,7 @@ constexpr int32_t kRampStep = 8;     // 1000 .. 8992
 constexpr double kLostAfterMs = 100;
 constexpr auto kWaitLimit = std::chrono::milliseconds(2000);
 
-double ms_since(Clock::time_point t0, Clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(t - t0).count();
-}
 
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const auto rank = static_cast<std::size_t>(std::ceil(p / 100.0 * static_cast<double>(v.size())));
-    return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
-}
 
 // Sample n of the stream and whether it is timed.
 struct StreamSample {
@@ -124,9 +119,6 @@ private:
     std::size_t lost_ = 0;
 };
 
-void require(const host::Status& s, const char* what) {
-    if (!s.ok()) throw std::runtime_error(std::string(what) + ": " + s.message);
-}
 
 struct Figures {
     std::vector<double> ms;
@@ -278,35 +270,9 @@ int main(int argc, char** argv) {
         std::printf("%-14s %8s %8s %8s %8s %6s %6s\n", "transport", "p50", "p99", "max", "timed", "lost", "late");
         const Figures runtime = measure_runtime(ramps);
         row("runtime only", runtime);
-        {
-            host::Result<host::Device> device = host::Device::open(std::string("sim:") + kProfile);
-            require(device.status(), "open sim");
-            row("in-process", measure_host(device.value(), ramps));
-            device->close();
-        }
-        peripheral::PeripheralOptions options;
-        options.profile = kProfile;
-        {
-            const std::string path = (std::filesystem::temp_directory_path() /
-                                      ("feel-bench-stream-" + std::to_string(::getpid()) + ".sock"))
-                                         .string();
-            peripheral::Peripheral device_side(options);
-            device_side.serve(transport::listen(transport::Address::parse("unix:" + path)));
-            host::Result<host::Device> device = host::Device::open("unix:" + path);
-            require(device.status(), "open unix socket");
-            row("unix socket", measure_host(device.value(), ramps));
-            device->close();
-            device_side.stop();
-        }
-        {
-            peripheral::Peripheral device_side(options);
-            device_side.serve(transport::listen(transport::Address::parse_listen("tcp:127.0.0.1:0")));
-            host::Result<host::Device> device = host::Device::open(device_side.address().to_string());
-            require(device.status(), "open tcp");
-            row("tcp loopback", measure_host(device.value(), ramps));
-            device->close();
-            device_side.stop();
-        }
+        bench::for_each_transport(kProfile, "feel-bench-stream", [&](const char* name, host::Device& device) {
+            row(name, measure_host(device, ramps));
+        });
         std::printf("\ndevice side (runtime, stream_force ack t_us -> first report t_us showing the sample): "
                     "p50 %.0f us, p99 %.0f us, max %.0f us\n",
                     percentile(runtime.device_us, 50), percentile(runtime.device_us, 99),

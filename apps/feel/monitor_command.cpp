@@ -111,7 +111,8 @@ void run_monitor(const MonitorArgs& args, std::ostream& out, std::ostream& /*err
     std::optional<host::SensationLibrary> library;
     std::span<host::Effect> effects;
     if (choice) {
-        host::Result<host::SensationLibrary> loaded = host::SensationLibrary::load(choice->file, device);
+        const std::string only[] = {choice->name};
+        host::Result<host::SensationLibrary> loaded = host::SensationLibrary::load(choice->file, device, only);
         if (!loaded) {
             throw std::runtime_error("load " + choice->file + " onto " + device.address() + ": " +
                                      loaded.status().message);

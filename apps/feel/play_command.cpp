@@ -5,8 +5,9 @@
 // (the reader names the field and the range of anything wrong), the sensation's name.
 // Then the device is opened, asked for state reports at up to 1 kHz, and given the half
 // second its safety fade-in takes after power-on, so that the forces shown are the full
-// ones. SensationLibrary::load downloads every sensation of the file (a game loads its
-// file once, then plays from it), so every sensation of the file must fit the device.
+// ones. Only the sensation to play is downloaded (SensationLibrary::load with a name), so
+// that one sensation of a large file plays on a small device (an I-FORCE 1.x holds 16
+// effects); a game would load its whole file once and play from it.
 //
 // While it plays, each state report (one per device tick at 1 kHz) updates the peaks, and
 // ten times a second a progress line shows the elapsed time, the force on each axis and
@@ -131,7 +132,8 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
     host::Device device = open_device(args.device);
     const host::DeviceCaps& caps = device.capabilities();
     const int32_t report_hz = use_fastest_reports(device);
-    host::Result<host::SensationLibrary> loaded = host::SensationLibrary::load(args.file, device);
+    const std::string only[] = {sensation.name};
+    host::Result<host::SensationLibrary> loaded = host::SensationLibrary::load(args.file, device, only);
     if (!loaded) throw std::runtime_error("load " + args.file + " onto " + device.address() + ": " + loaded.status().message);
     host::SensationLibrary& library = loaded.value();
     std::span<host::Effect> effects = library.effects(sensation.name);

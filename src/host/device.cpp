@@ -112,6 +112,8 @@ Result<Device> Device::open(std::string_view address, const OpenOptions& options
             return Status::failure(kind, "open " + name + ": " + e.what());
         } catch (const std::invalid_argument& e) {
             return Status::failure(ErrorKind::invalid_parameter, "open " + name + ": " + e.what());
+        } catch (const std::exception& e) {  // the system refused the socket itself
+            return Status::failure(ErrorKind::disconnected, "open " + name + ": " + e.what());
         }
     }
     return attach(std::move(connection), name, options);

@@ -27,15 +27,32 @@ Result<SensationLibrary> SensationLibrary::load(const std::filesystem::path& fil
 }
 
 Result<SensationLibrary> SensationLibrary::load(const std::filesystem::path& file, Device device) {
+    return load(file, std::move(device), std::span<const std::string>{});
+}
+
+Result<SensationLibrary> SensationLibrary::load(const std::filesystem::path& file, Device device,
+                                                std::span<const std::string> only) {
     format::SensationFile model;
     try {
         model = format::load_sensation_file(file);
     } catch (const format::FormatError& e) {
         return Status::failure(ErrorKind::invalid_parameter, e.what());
     }
+    for (const std::string& name : only) {
+        if (model.find(name) != nullptr) continue;
+        std::string names;
+        for (const format::Sensation& s : model.sensations) names += (names.empty() ? "" : ", ") + s.name;
+        return Status::failure(ErrorKind::invalid_parameter, file.string() + ": no sensation \"" + name +
+                                                                 "\" in the file (it has: " + names + ")",
+                               Error::invalid("sensation", "no sensation of that name in the file"));
+    }
+    const auto wanted = [&](const std::string& name) {
+        return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+    };
     std::vector<Entry> entries;
     entries.reserve(model.sensations.size());
     for (const format::Sensation& sensation : model.sensations) {
+        if (!wanted(sensation.name)) continue;
         Entry entry;
         entry.name = sensation.name;
         for (std::size_t i = 0; i < sensation.effects.size(); ++i) {

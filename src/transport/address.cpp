@@ -6,6 +6,7 @@
 // refused" for a typo'd port is a poor answer. A bare word is a profile name (sim:WORD) so
 // that `--device iforce1` works; a bare word that looks like a path or a host is refused
 // with a hint instead of being taken for a profile nobody has.
+#include <sys/un.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -111,6 +112,12 @@ Address parse_address(std::string_view text, bool allow_port_zero) {
     }
     if (scheme == "unix") {
         if (rest.empty()) refuse(text, "the socket path is empty");
+        // A Unix socket's address holds at most sizeof(sun_path) - 1 bytes of path.
+        constexpr std::size_t kMaxPath = sizeof(sockaddr_un::sun_path) - 1;
+        if (rest.size() > kMaxPath) {
+            refuse(text, "the socket path is " + std::to_string(rest.size()) + " bytes long (allowed 1.." +
+                             std::to_string(kMaxPath) + " bytes)");
+        }
         Address address;
         address.kind = Address::Kind::unix_socket;
         address.path = std::string(rest);

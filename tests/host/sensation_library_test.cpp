@@ -49,22 +49,48 @@ struct PrimerForDevice {
     }
 };
 
-TEST(HostSensationLibrary, ThePrimersHatTwoReflexNeedsADeviceWithTwoHats) {
-    // A trigger on a hat the device lacks would never fire: refused, naming it. With two
-    // hats or more the primer's file loads as it is.
+TEST(HostSensationLibrary, ThePrimersFileLoadsAsWrittenAndAHatTheDeviceLacksIsRefused) {
+    // §1.2.c's table puts the Patriot missile on hat switch #2: the I-FORCE sticks have two.
+    ASSERT_GE(hats_of("iforce2"), 2);
     Result<SensationLibrary> library = SensationLibrary::load(kPrimerFile, "sim:iforce2");
-    if (hats_of("iforce2") >= 2) {
-        EXPECT_TRUE(library) << library.status().message;
-        return;
+    EXPECT_TRUE(library) << library.status().message;
+
+    // A trigger on a hat the device lacks would never fire: refused, naming it.
+    format::SensationFile file = format::load_sensation_file(kPrimerFile);
+    for (auto& sensation : file.sensations) {
+        if (sensation.name == "patriot_missile") sensation.effects[0].params.trigger.index = 3;
     }
-    ASSERT_FALSE(library);
-    EXPECT_EQ(library.status().kind, ErrorKind::invalid_parameter);
-    const std::string& m = library.status().message;
+    const auto path = std::filesystem::temp_directory_path() / "feel-host-hat3.feel.json";
+    std::ofstream(path) << format::write_sensation_file(file);
+    Result<SensationLibrary> hat3 = SensationLibrary::load(path, "sim:iforce2");
+    std::filesystem::remove(path);
+    ASSERT_FALSE(hat3);
+    EXPECT_EQ(hat3.status().kind, ErrorKind::invalid_parameter);
+    const std::string& m = hat3.status().message;
     EXPECT_NE(m.find("sensation \"patriot_missile\""), std::string::npos) << m;
-    EXPECT_NE(m.find("trigger_button = hat2 is out of range (allowed hat1..hat" + std::to_string(hats_of("iforce2")) +
-                     ")"),
-              std::string::npos)
-        << m;
+    EXPECT_NE(m.find("trigger_button = hat3 is out of range (allowed hat1..hat2)"), std::string::npos) << m;
+}
+
+TEST(HostSensationLibrary, LoadingChosenSensationsFitsASmallDevice) {
+    // The whole primer file holds more effects than iforce1's 16 slots; one sensation fits.
+    Result<Device> device = Device::open("sim:iforce1");
+    ASSERT_TRUE(device) << device.status().message;
+    const std::string only[] = {"railing_impact"};
+    Result<SensationLibrary> library = SensationLibrary::load(kPrimerFile, device.value(), only);
+    ASSERT_TRUE(library) << library.status().message;
+    EXPECT_EQ(library->names(), std::vector<std::string>{"railing_impact"});
+    EXPECT_TRUE(library->play("railing_impact").ok());
+    Result<PoolInfo> pool = device->pool();
+    ASSERT_TRUE(pool) << pool.status().message;
+    EXPECT_EQ(pool->max_effects - pool->free_effects, 1);  // only its one effect is resident
+
+    const std::string unknown[] = {"warp_drive"};
+    Result<SensationLibrary> missing = SensationLibrary::load(kPrimerFile, device.value(), unknown);
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.status().kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(missing.status().message.find("no sensation \"warp_drive\""), std::string::npos)
+        << missing.status().message;
+    EXPECT_NE(missing.status().message.find("railing_impact"), std::string::npos) << missing.status().message;
 }
 
 TEST(HostSensationLibrary, LoadsThePrimerFileAndPlaysASensation) {

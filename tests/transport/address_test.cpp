@@ -97,6 +97,15 @@ TEST(Address, RefusesEveryMalformedFormNamingTheProblem) {
     }
 }
 
+TEST(Address, RefusesAUnixPathLongerThanASocketAddressHolds) {
+    // sockaddr_un holds 108 bytes of path on Linux, its terminating NUL included.
+    const std::string longest = "unix:/" + std::string(106, 'a');   // 107 bytes of path
+    EXPECT_EQ(parse_error(longest.c_str()), "");
+    const std::string too_long = "unix:/" + std::string(107, 'a');  // 108 bytes
+    const std::string message = parse_error(too_long.c_str());
+    EXPECT_NE(message.find("the socket path is 108 bytes long (allowed 1..107 bytes)"), std::string::npos) << message;
+}
+
 TEST(Address, ListenAddressesMayAskForAnyFreePort) {
     EXPECT_EQ(Address::parse_listen("tcp:127.0.0.1:0").port, 0);
     EXPECT_EQ(Address::parse_listen("tcp:127.0.0.1:7").port, 7);

@@ -31,6 +31,11 @@ public:
                                                        std::string_view address = "sim:iforce2",
                                                        const OpenOptions& options = {});
     [[nodiscard]] static Result<SensationLibrary> load(const std::filesystem::path& file, Device device);
+    // Loads only the named sensations of the file (a device too small for the whole file,
+    // e.g. an I-FORCE 1.x with 16 effect slots, can still play one). invalid_parameter for
+    // a name the file lacks (the message lists the file's names).
+    [[nodiscard]] static Result<SensationLibrary> load(const std::filesystem::path& file, Device device,
+                                                       std::span<const std::string> only);
 
     // Call 2. Starts every effect of the sensation (iterations as in Effect::start).
     // invalid_parameter for an unknown name (the message lists the names).
