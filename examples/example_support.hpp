@@ -3,8 +3,8 @@
 //
 // The examples run on feel's in-process simulated device, so they need no hardware. To
 // press a button on it (the player pulling the trigger), SimRig builds the Peripheral
-// itself and attaches the host to it, keeping a handle on the device's runtime; a program
-// on real hardware would open its address and the player would press the buttons.
+// itself and attaches the host to it, keeping the Peripheral to press its buttons and hats;
+// a program on real hardware would open its address and the player would press them.
 #pragma once
 
 #include <chrono>
@@ -16,7 +16,6 @@
 
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
-#include "feel/runtime/runtime_backend.hpp"
 #include "feel/transport/transport.hpp"
 
 namespace example {
@@ -93,25 +92,10 @@ struct SimRig {
     SimRig(SimRig&&) noexcept = default;
     SimRig& operator=(SimRig&&) noexcept = default;
 
-    // Sets the pressed buttons (bit i = button i+1) of the simulated stick. The device's loop
-    // pauses for the moment it takes (feel/peripheral/peripheral.hpp allows it).
-    bool set_buttons(uint32_t mask) {
-        feel::runtime::DeviceRuntime& rt = peripheral->runtime();
-        rt.stop();
-        auto& backend = static_cast<feel::runtime::SimBackend&>(rt.pipeline().backend());
-        const bool ok = backend.device().set_buttons(mask);
-        rt.start();
-        return ok;
-    }
-    // Pushes hat switches off center (bit h-1 = hat h), the same way.
-    bool set_hats(uint32_t mask) {
-        feel::runtime::DeviceRuntime& rt = peripheral->runtime();
-        rt.stop();
-        auto& backend = static_cast<feel::runtime::SimBackend&>(rt.pipeline().backend());
-        const bool ok = backend.device().set_hats(mask);
-        rt.start();
-        return ok;
-    }
+    // The simulated hand presses buttons (bit i = button i+1) and pushes hat switches
+    // (bit h-1 = hat h); the device sees it at its next tick.
+    bool set_buttons(uint32_t mask) { return peripheral->set_buttons(mask); }
+    bool set_hats(uint32_t mask) { return peripheral->set_hats(mask); }
 };
 
 }  // namespace example

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/effect_reports.hpp"
 #include "host_errors.hpp"
 
 namespace feel::host {
@@ -31,14 +32,6 @@ constexpr auto kReceiveSlice = std::chrono::milliseconds(5);
 
 int64_t now_ns() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
-}
-
-void set_sequence(AnyReport& report, uint32_t sequence) {
-    std::visit(
-        [sequence](auto& r) {
-            if constexpr (requires { r.sequence; }) r.sequence = sequence;
-        },
-        report);
 }
 
 bool trigger_pressed(const Trigger& t, uint32_t buttons, uint32_t hats) {
@@ -107,7 +100,7 @@ Status DeviceCore::send_frame(Frame frame) {
 Result<CommandStatusReport> DeviceCore::transact(AnyReport report, FrameKind kind) {
     const std::string name(protocol::report_name(protocol::report_id_of(report)));
     const uint32_t sequence = next_sequence();
-    set_sequence(report, sequence);
+    protocol::set_sequence(report, sequence);
     std::vector<uint8_t> bytes;
     try {
         bytes = protocol::encode(report);
@@ -230,7 +223,7 @@ Result<std::vector<uint8_t>> DeviceCore::get_descriptor() {
 }
 
 Status DeviceCore::send_unanswered(AnyReport report) {
-    set_sequence(report, next_sequence());
+    protocol::set_sequence(report, next_sequence());
     std::vector<uint8_t> bytes;
     try {
         bytes = protocol::encode(report);

@@ -4,8 +4,8 @@
 #include "device_core.hpp"
 #include "effect_checks.hpp"
 #include "effect_download.hpp"
-#include "effect_reports.hpp"
 #include "feel/host/device.hpp"
+#include "feel/protocol/effect_reports.hpp"
 #include "host_errors.hpp"
 
 namespace feel::host {
@@ -156,7 +156,7 @@ Status Effect::start(int32_t iterations, bool solo) {
     protocol::EffectOperationReport r;
     r.block = live.block;
     r.operation = solo ? protocol::EffectOperation::start_solo : protocol::EffectOperation::start;
-    r.loop_count = iterations == runtime::kEffectIterations ? protocol::kLoopEffectOwn : wire_iterations(iterations);
+    r.loop_count = iterations == runtime::kEffectIterations ? protocol::kLoopEffectOwn : protocol::wire_iterations(iterations);
     Status s = core_->command(r, what);
     if (s.ok()) {
         std::lock_guard lock(core_->mu);

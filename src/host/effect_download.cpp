@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "effect_reports.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/effect_reports.hpp"
 #include "host_errors.hpp"
 
 namespace feel::host {
@@ -70,7 +70,7 @@ Status download_effect(DeviceCore& core, EffectRecord& record, const std::string
     const EffectParams params = device_params(core.caps, record.params);
     const bool emulate = host_emulates_trigger(core.caps, record.params);
 
-    if (Status s = core.command(create_new_effect_report(params, record.samples), what, FrameKind::set_feature);
+    if (Status s = core.command(protocol::create_new_effect_report(params, record.samples), what, FrameKind::set_feature);
         !s.ok()) {
         return s;
     }
@@ -99,13 +99,13 @@ Status download_effect(DeviceCore& core, EffectRecord& record, const std::string
         return Status::failure(ErrorKind::protocol, what + ": the device's Block Load names block 0");
     }
 
-    for (protocol::AnyReport& report : parameter_block_reports(params, record.samples, block, true, true)) {
+    for (protocol::AnyReport& report : protocol::parameter_block_reports(params, record.samples, block, true, true)) {
         if (Status s = core.command(std::move(report), what); !s.ok()) {
             free_block(core, block);
             return s;
         }
     }
-    if (Status s = core.command(set_effect_report(params, block), what); !s.ok()) {
+    if (Status s = core.command(protocol::set_effect_report(params, block), what); !s.ok()) {
         free_block(core, block);
         return s;
     }
@@ -129,12 +129,12 @@ Status update_effect(DeviceCore& core, EffectRecord& record, const EffectParams&
     const EffectParams params = device_params(core.caps, merged);
     const bool emulate = host_emulates_trigger(core.caps, merged);
 
-    for (protocol::AnyReport& report : parameter_block_reports(params, samples, block, (mask & kEnvelope) != 0,
+    for (protocol::AnyReport& report : protocol::parameter_block_reports(params, samples, block, (mask & kEnvelope) != 0,
                                                                (mask & kTypeSpecific) != 0)) {
         if (Status s = core.command(std::move(report), what); !s.ok()) return s;
     }
     // Set Effect carries the whole Effect Structure; the device applies what differs.
-    if (Status s = core.command(set_effect_report(params, block), what); !s.ok()) return s;
+    if (Status s = core.command(protocol::set_effect_report(params, block), what); !s.ok()) return s;
     const bool trigger_changed = (mask & (kTrigger | kTriggerRepeat)) != 0;
     if (trigger_changed && core.caps.local_reflexes && params.trigger.kind != TriggerKind::none) {
         protocol::ReflexReport reflex;

@@ -451,6 +451,10 @@ struct DeviceSession::Impl {
 
     protocol::DeviceInfoReport device_info_report() const {
         protocol::DeviceInfoReport r;
+        // A usable profile's texts fit the report whole (check_device_profile).
+        static_assert(sizeof r.device == sim::kMaxProfileNameBytes + 1);
+        static_assert(sizeof r.description == sim::kMaxProfileDescriptionBytes + 1);
+        static_assert(sizeof r.firmware_version == sim::kMaxProfileNameBytes + 1);
         detail::copy_text(r.device, sizeof r.device, caps.device);
         detail::copy_text(r.description, sizeof r.description, caps.description);
         r.device_class = static_cast<uint8_t>(caps.device_class);

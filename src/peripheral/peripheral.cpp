@@ -136,6 +136,7 @@ struct Peripheral::Impl {
         const sim::Grip grip = grip_named(o.hand);
         sim::TargetMotion motion = sim::TargetMotion::parse(o.motion, kMotionSpanS, profile->axis_count);
         auto backend = std::make_unique<runtime::SimBackend>(*profile, grip, std::move(motion));
+        sim = backend.get();
         rt = std::make_unique<runtime::DeviceRuntime>(config, std::move(backend), o.runtime);
         session = std::make_unique<DeviceSession>(caps, rt->config(), *rt, LoopMeter(*rt));
         rt->start();
@@ -145,6 +146,7 @@ struct Peripheral::Impl {
     const sim::DeviceProfile* profile;
     runtime::Capabilities caps;
     runtime::RuntimeConfig config;
+    runtime::SimBackend* sim = nullptr;  // owned by rt
     std::unique_ptr<runtime::DeviceRuntime> rt;
     std::unique_ptr<DeviceSession> session;  // the service thread's alone while one runs
 
@@ -304,6 +306,10 @@ transport::Address Peripheral::address() const {
 }
 
 runtime::DeviceRuntime& Peripheral::runtime() noexcept { return *impl_->rt; }
+
+bool Peripheral::set_buttons(uint32_t pressed) noexcept { return impl_->sim->set_buttons(pressed); }
+
+bool Peripheral::set_hats(uint32_t pushed) noexcept { return impl_->sim->set_hats(pushed); }
 
 namespace {
 

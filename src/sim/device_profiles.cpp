@@ -276,6 +276,20 @@ std::string check_processor(const DeviceProfile& p) {
                std::to_string(kEffectTypeCount - 1) + ")";
     }
     if (p.firmware_version.empty()) return "firmware_version is empty (allowed a non-empty name)";
+    // What the device-info report can carry whole (the host must not get a cut text).
+    const struct {
+        const char* field;
+        std::string_view text;
+        std::size_t min, max;
+    } texts[] = {{"name", p.name, 1, kMaxProfileNameBytes},
+                 {"description", p.description, 0, kMaxProfileDescriptionBytes},
+                 {"firmware_version", p.firmware_version, 1, kMaxProfileNameBytes}};
+    for (const auto& t : texts) {
+        if (t.text.size() < t.min || t.text.size() > t.max) {
+            return std::string(t.field) + " is " + std::to_string(t.text.size()) +
+                   " bytes long (allowed " + std::to_string(t.min) + ".." + std::to_string(t.max) + " bytes)";
+        }
+    }
     return {};
 }
 

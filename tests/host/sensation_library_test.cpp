@@ -16,34 +16,21 @@ namespace {
 
 const std::filesystem::path kPrimerFile = std::filesystem::path(FEEL_SOURCE_DIR) / "examples" / "primer.feel.json";
 
-// The hat switches of the I-FORCE profiles (their data sheet).
-int32_t hats_of(const char* profile) { return sim::find_device_profile(profile)->hat_count; }
-
-// The primer's file as a device with `hats` hat switches can hold it: §1.2.c's table puts
-// the Patriot missile on hat switch #2; on a device with fewer hats that reflex moves to
-// hat 1 (written to a temporary file with the format's own writer).
-// With `reflex_table_only`, just the sensations with a trigger and the railing impact: the
-// whole file holds 19 effects, more than the 16 slots of the 1.x-class device.
-struct PrimerForDevice {
+// The primer's reflex table and its railing impact, in a file of their own (written with the
+// format's own writer): the whole primer file holds 19 effects, more than the 16 slots of
+// the 1.x-class device.
+struct ReflexTableFile {
     std::filesystem::path path;
-    explicit PrimerForDevice(int32_t hats, bool reflex_table_only = false) {
+    ReflexTableFile() {
         format::SensationFile file = format::load_sensation_file(kPrimerFile);
-        if (reflex_table_only) {
-            std::erase_if(file.sensations, [](const format::Sensation& s) {
-                return s.name != "railing_impact" && s.effects[0].params.trigger.kind == TriggerKind::none;
-            });
-        }
-        for (auto& sensation : file.sensations) {
-            for (auto& effect : sensation.effects) {
-                Trigger& t = effect.params.trigger;
-                if (t.kind == TriggerKind::hat && t.index > hats) t.index = 1;
-            }
-        }
+        std::erase_if(file.sensations, [](const format::Sensation& s) {
+            return s.name != "railing_impact" && s.effects[0].params.trigger.kind == TriggerKind::none;
+        });
         path = std::filesystem::temp_directory_path() /
                ("feel-host-primer-" + std::to_string(reinterpret_cast<uintptr_t>(this)) + ".feel.json");
         std::ofstream(path) << format::write_sensation_file(file);
     }
-    ~PrimerForDevice() {
+    ~ReflexTableFile() {
         std::error_code ec;
         std::filesystem::remove(path, ec);
     }
@@ -51,7 +38,7 @@ struct PrimerForDevice {
 
 TEST(HostSensationLibrary, ThePrimersFileLoadsAsWrittenAndAHatTheDeviceLacksIsRefused) {
     // §1.2.c's table puts the Patriot missile on hat switch #2: the I-FORCE sticks have two.
-    ASSERT_GE(hats_of("iforce2"), 2);
+    ASSERT_GE(sim::find_device_profile("iforce2")->hat_count, 2);
     Result<SensationLibrary> library = SensationLibrary::load(kPrimerFile, "sim:iforce2");
     EXPECT_TRUE(library) << library.status().message;
 
@@ -94,8 +81,7 @@ TEST(HostSensationLibrary, LoadingChosenSensationsFitsASmallDevice) {
 }
 
 TEST(HostSensationLibrary, LoadsThePrimerFileAndPlaysASensation) {
-    const PrimerForDevice primer(hats_of("iforce2"));
-    const std::filesystem::path kPrimer = primer.path;
+    const std::filesystem::path kPrimer = kPrimerFile;
     Result<SensationLibrary> library = SensationLibrary::load(kPrimer, "sim:iforce2");
     ASSERT_TRUE(library) << library.status().message;
     // Every sensation of the file, in file order (read independently with the format).
@@ -128,7 +114,7 @@ TEST(HostSensationLibrary, LoadsThePrimerFileAndPlaysASensation) {
 }
 
 TEST(HostSensationLibrary, ButtonAssignmentsBecomeReflexes) {
-    const PrimerForDevice primer(std::min(hats_of("iforce1"), hats_of("iforce2")), true);
+    const ReflexTableFile primer;
     const std::filesystem::path kPrimer = primer.path;
     // iforce1: the file's trigger buttons are emulated by the host (§1.2.c).
     Result<SensationLibrary> one = SensationLibrary::load(kPrimer, "sim:iforce1");
@@ -145,7 +131,7 @@ TEST(HostSensationLibrary, ButtonAssignmentsBecomeReflexes) {
 }
 
 TEST(HostSensationLibrary, PullingTheTriggerFiresTheFilesReflex) {
-    const PrimerForDevice primer(std::min(hats_of("iforce1"), hats_of("iforce2")), true);
+    const ReflexTableFile primer;
     for (const char* profile : {"iforce1", "iforce2"}) {
         SCOPED_TRACE(profile);
         SimRig rig = SimRig::make(profile);
@@ -165,12 +151,11 @@ TEST(HostSensationLibrary, PullingTheTriggerFiresTheFilesReflex) {
 }
 
 TEST(HostSensationLibrary, TheWholePrimerDoesNotFitTheSixteenSlotsOfIforce1) {
-    const PrimerForDevice primer(hats_of("iforce1"));
-    const format::SensationFile file = format::load_sensation_file(primer.path);
+    const format::SensationFile file = format::load_sensation_file(kPrimerFile);
     std::size_t effects = 0;
     for (const auto& sensation : file.sensations) effects += sensation.effects.size();
     ASSERT_GT(effects, 16u);  // iforce1's data sheet: 16 effect slots
-    Result<SensationLibrary> library = SensationLibrary::load(primer.path, "sim:iforce1");
+    Result<SensationLibrary> library = SensationLibrary::load(kPrimerFile, "sim:iforce1");
     ASSERT_FALSE(library);
     EXPECT_EQ(library.status().kind, ErrorKind::device_full) << library.status().message;
 }

@@ -17,6 +17,7 @@
 
 #include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/effect_reports.hpp"
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/host_link.hpp"
 #include "feel/runtime/runtime_backend.hpp"
@@ -228,148 +229,19 @@ inline protocol::EffectOperationReport operation(uint32_t sequence, uint16_t blo
     return r;
 }
 
-// Set Effect carrying an EffectParams' Effect Structure.
-inline protocol::SetEffectReport set_effect_of(uint32_t sequence, uint16_t block, const EffectParams& p) {
-    protocol::SetEffectReport r;
-    r.sequence = sequence;
-    r.block = block;
-    r.type = p.type;
-    r.duration_us = p.duration_us == kInfiniteUs ? protocol::kWireInfinite : static_cast<uint32_t>(p.duration_us);
-    r.start_delay_us = static_cast<uint32_t>(p.start_delay_us);
-    r.trigger_repeat_interval_us = static_cast<uint32_t>(p.trigger_repeat_interval_us);
-    r.gain = static_cast<uint16_t>(p.gain);
-    r.iterations = p.iterations == kInfiniteIterations ? protocol::kLoopInfinite : static_cast<uint8_t>(p.iterations);
-    r.trigger_kind = p.trigger.kind;
-    r.trigger_index = static_cast<uint8_t>(p.trigger.index);
-    r.axis_count = static_cast<uint8_t>(p.axis_count);
-    for (int a = 0; a < kMaxAxes; ++a) r.axes[a] = p.axes[a];
-    r.direction_kind = p.direction.kind;
-    for (int i = 0; i < 3; ++i) r.direction[i] = p.direction.value[i];
-    r.has_envelope = p.has_envelope;
-    return r;
-}
-
-// Downloads an effect the way a host does: Create New Effect, Block Load, every type block
-// the type uses (the force profile's samples in data reports), Set Effect. Each report
-// must succeed; returns the block.
+// Downloads an effect the way a host does (protocol/effect_reports.hpp): Create New Effect,
+// Block Load, the envelope and every type block the type uses (a force profile's samples in
+// data reports), Set Effect. Each report must succeed; returns the block.
 inline uint16_t download(SessionRig& rig, const EffectParams& p, std::span<const int16_t> samples = {}) {
     const uint16_t block = rig.create(p.type, static_cast<uint16_t>(samples.size()));
     if (block == 0) return 0;
-    const EffectType t = p.type;
-    auto seq = [&] { return rig.next_sequence(); };
-    if (t == EffectType::spring || t == EffectType::damper || t == EffectType::inertia ||
-        t == EffectType::friction || t == EffectType::angle_spring) {
-        const int axes = t == EffectType::angle_spring ? 1 : p.axis_count;
-        for (int a = 0; a < axes; ++a) {
-            const ConditionBlock& c = p.conditions[a];
-            protocol::SetConditionReport r;
-            r.sequence = seq();
-            r.block = block;
-            r.axis_index = static_cast<uint8_t>(a);
-            r.center_offset = static_cast<int16_t>(c.offset);
-            r.pos_coefficient = static_cast<int16_t>(c.pos_coefficient);
-            r.neg_coefficient = static_cast<int16_t>(c.neg_coefficient);
-            r.pos_saturation = static_cast<uint16_t>(c.pos_saturation);
-            r.neg_saturation = static_cast<uint16_t>(c.neg_saturation);
-            r.deadband = static_cast<uint16_t>(c.deadband);
-            r.offset_mode = c.offset_mode;
-            rig.ok(r);
-        }
-    } else if (is_periodic(t) || is_sweep(t)) {
-        protocol::SetPeriodicReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.magnitude = static_cast<int16_t>(p.periodic.magnitude);
-        r.offset = static_cast<int16_t>(p.periodic.offset);
-        r.phase = static_cast<uint16_t>(p.periodic.phase);
-        r.period_us = static_cast<uint32_t>(p.periodic.period_us);
+    for (protocol::AnyReport& r : protocol::parameter_block_reports(p, samples, block, true, true)) {
+        protocol::set_sequence(r, rig.next_sequence());
         rig.ok(r);
-        if (is_sweep(t)) {
-            protocol::SetSweepReport s;
-            s.sequence = seq();
-            s.block = block;
-            s.start_angle = static_cast<uint16_t>(p.periodic.sweep_start_angle);
-            s.end_angle = static_cast<uint16_t>(p.periodic.sweep_end_angle);
-            s.sense = p.periodic.sweep_sense;
-            rig.ok(s);
-        }
-    } else if (t == EffectType::constant || t == EffectType::vector_force || t == EffectType::smart_pop) {
-        protocol::SetConstantForceReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.magnitude = static_cast<int16_t>(p.constant.magnitude);
-        rig.ok(r);
-    } else if (t == EffectType::ramp) {
-        protocol::SetRampForceReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.start = static_cast<int16_t>(p.ramp.start);
-        r.end = static_cast<int16_t>(p.ramp.end);
-        rig.ok(r);
-    } else if (t == EffectType::force_profile) {
-        for (std::size_t offset = 0; offset < samples.size(); offset += protocol::kSamplesPerDataReport) {
-            protocol::CustomForceDataReport d;
-            d.sequence = seq();
-            d.block = block;
-            d.offset = static_cast<uint16_t>(offset);
-            d.count = static_cast<uint8_t>(std::min<std::size_t>(protocol::kSamplesPerDataReport, samples.size() - offset));
-            for (int i = 0; i < d.count; ++i) d.samples[i] = samples[offset + static_cast<std::size_t>(i)];
-            rig.ok(d);
-        }
-        protocol::SetCustomForceReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.channels = static_cast<uint8_t>(p.custom.channels);
-        r.sample_period_us = static_cast<uint32_t>(p.custom.sample_period_us);
-        r.sample_count = static_cast<uint16_t>(p.custom.sample_count);
-        rig.ok(r);
-    } else if (t == EffectType::texture) {
-        protocol::SetTextureReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.texture = p.texture;
-        rig.ok(r);
-    } else if (t == EffectType::axis_wall || t == EffectType::angle_wall) {
-        protocol::SetWallReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.wall = p.wall;
-        rig.ok(r);
-    } else if (t == EffectType::axis_barrier || t == EffectType::angle_barrier) {
-        protocol::SetBarrierReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.barrier = p.barrier;
-        rig.ok(r);
-    } else if (effect_class(t) == EffectClass::dynamic) {
-        protocol::SetDynamicReport r;
-        r.sequence = seq();
-        r.block = block;
-        r.dynamic = p.dynamic;
-        for (ControlLawBlock& law : r.dynamic.control_law) law = ControlLawBlock{};  // not carried here
-        rig.ok(r);
-        if (t == EffectType::dynamic_control_law) {
-            for (int a = 0; a < p.axis_count; ++a) {
-                protocol::SetControlLawReport l;
-                l.sequence = seq();
-                l.block = block;
-                l.axis_index = static_cast<uint8_t>(a);
-                l.law = p.dynamic.control_law[a];
-                rig.ok(l);
-            }
-        }
     }
-    if (p.has_envelope) {
-        protocol::SetEnvelopeReport e;
-        e.sequence = seq();
-        e.block = block;
-        e.impulse_level = static_cast<uint16_t>(p.envelope.impulse_level);
-        e.settle_time_us = static_cast<uint32_t>(p.envelope.settle_time_us);
-        e.fade_level = static_cast<uint16_t>(p.envelope.fade_level);
-        e.fade_time_us = static_cast<uint32_t>(p.envelope.fade_time_us);
-        rig.ok(e);
-    }
-    rig.ok(set_effect_of(seq(), block, p));
+    protocol::SetEffectReport commit = protocol::set_effect_report(p, block);
+    commit.sequence = rig.next_sequence();
+    rig.ok(commit);
     return block;
 }
 

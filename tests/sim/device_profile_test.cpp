@@ -123,6 +123,17 @@ TEST(DeviceProfiles, CheckNamesTheBadFieldAndItsRange) {
     p = test::bare_profile(0.1, 0, 0);
     p.velocity_ref = 0;
     EXPECT_NE(check_device_profile(p).find("velocity_ref = 0"), std::string::npos);
+    // The texts must reach the host whole in its device-info report.
+    const std::string long_text(192, 'd');
+    p = test::bare_profile(0.1, 0, 0);
+    p.description = long_text;
+    EXPECT_EQ(check_device_profile(p), "description is 192 bytes long (allowed 0..191 bytes)");
+    p = test::bare_profile(0.1, 0, 0);
+    p.name = std::string_view(long_text).substr(0, 24);
+    EXPECT_EQ(check_device_profile(p), "name is 24 bytes long (allowed 1..23 bytes)");
+    p = test::bare_profile(0.1, 0, 0);
+    p.firmware_version = std::string_view(long_text).substr(0, 24);
+    EXPECT_EQ(check_device_profile(p), "firmware_version is 24 bytes long (allowed 1..23 bytes)");
 }
 
 }  // namespace

@@ -75,6 +75,12 @@ public:
     // Where serve() listens (valid after serve()).
     [[nodiscard]] transport::Address address() const;
 
+    // The simulated hand presses buttons (bit i = button i+1) or pushes hat switches off
+    // center (bit h-1 = hat h); the loop sees it at its next tick. Any thread. False, and
+    // nothing changes, for a control the profile lacks.
+    bool set_buttons(uint32_t pressed) noexcept;
+    bool set_hats(uint32_t pushed) noexcept;
+
     // The device's runtime, e.g. for a test to reach the simulated device while the loop is
     // stopped (runtime().stop(); ...; runtime().start()).
     [[nodiscard]] runtime::DeviceRuntime& runtime() noexcept;

@@ -12,6 +12,7 @@
 // increases from tick to tick but may jump by several periods after an overrun.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -71,8 +72,20 @@ public:
     // The force of the last actuate(), what drives the handle now.
     [[nodiscard]] const float* force() const noexcept { return force_; }
 
+    // The simulated hand presses buttons (bit i = button i+1) or pushes hats off center
+    // (bit h-1 = hat h), from any thread while the loop runs: the next sense() applies the
+    // latest mask (a lock-free handoff, no need to stop the loop). Returns false, and
+    // changes nothing, for a bit naming a control the profile lacks.
+    bool set_buttons(uint32_t pressed) noexcept;
+    bool set_hats(uint32_t pushed) noexcept;
+
 private:
+    // A mask waiting for the next sense(): bit 32 set when there is one.
+    static constexpr uint64_t kPendingBit = uint64_t{1} << 32;
+
     sim::SimDevice device_;
+    std::atomic<uint64_t> pending_buttons_{0};
+    std::atomic<uint64_t> pending_hats_{0};
     std::optional<sim::InputSchedule> schedule_;
     float force_[kMaxAxes] = {};
     bool sensed_ = false;   // a sense() happened: t_us_ is the handle's time

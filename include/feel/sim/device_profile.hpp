@@ -8,6 +8,7 @@
 // docs/simulated-device.md.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -51,9 +52,14 @@ enum class DeviceClass : uint8_t { iforce1, iforce2 };
 // "I-FORCE 1.x", "I-FORCE 2.0".
 [[nodiscard]] std::string_view device_class_name(DeviceClass c) noexcept;
 
+// The longest texts a device tells its host in its device-info report (docs/protocol.md):
+// a profile's name and firmware version, and its description, in bytes.
+inline constexpr std::size_t kMaxProfileNameBytes = 23;
+inline constexpr std::size_t kMaxProfileDescriptionBytes = 191;
+
 struct DeviceProfile {
-    std::string_view name;         // "joystick", "wheel", "3axis", "iforce1", "iforce2"
-    std::string_view description;
+    std::string_view name;         // "joystick", "wheel", "3axis", "iforce1", "iforce2"; 1..23 bytes
+    std::string_view description;  // one line, 0..191 bytes
     int32_t axis_count = 0;        // 1..6; axes[i].axis must be axis i (x, y, z, rx, ry, rz)
     AxisModel axes[kMaxAxes] = {};
     int32_t button_count = 0;      // 0..32
@@ -77,7 +83,7 @@ struct DeviceProfile {
     bool local_reflexes = true;       // runs trigger-button reflexes itself (§1.2.c)
     int32_t default_loop_rate_hz = 1000;  // Hz, 100..max_loop_rate_hz: the control loop (§2.2)
     int32_t max_loop_rate_hz = 20000;     // Hz, 100..20000 (the runtime's loop limits)
-    std::string_view firmware_version = "feel-sim 0.1.0";  // not empty
+    std::string_view firmware_version = "feel-sim 0.1.0";  // 1..23 bytes
 };
 
 // The built-in profiles, in the order "joystick", "wheel", "3axis", "iforce1", "iforce2".

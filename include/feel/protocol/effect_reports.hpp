@@ -1,10 +1,10 @@
-// feel::host — an effect's parameters as the PID reports that download it.
+// feel::protocol — an effect's parameters as the PID reports that download it.
 //
-// The host downloads an effect as hid-pidff does: Create New Effect, then the blocks of
-// its type, then Set Effect, which commits it (docs/protocol.md). These functions only
-// build reports; they assume parameters that passed the host's checks (effect_checks.hpp),
-// so every value fits its wire field. Sequence numbers are left 0: DeviceCore numbers
-// each report as it sends it.
+// A host downloads an effect as hid-pidff does: Create New Effect, then the blocks of its
+// type, then Set Effect, which commits it (docs/protocol.md). These functions only build
+// reports; they assume parameters that validate_effect() accepts (and a force profile's
+// samples that fit), so every value fits its wire field. Sequence numbers are left 0: the
+// sender numbers each report as it sends it (set_sequence).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +14,7 @@
 #include "feel/effect.hpp"
 #include "feel/protocol/reports.hpp"
 
-namespace feel::host {
+namespace feel::protocol {
 
 // Microseconds to a wire duration: kInfiniteUs is PID's "infinite".
 [[nodiscard]] uint32_t wire_duration(int64_t us) noexcept;
@@ -22,19 +22,22 @@ namespace feel::host {
 // kInfiniteIterations -> kLoopInfinite, n -> n.
 [[nodiscard]] uint8_t wire_iterations(int32_t iterations) noexcept;
 
-[[nodiscard]] protocol::CreateNewEffectReport create_new_effect_report(const EffectParams& params,
+// Sets the report's sequence number (every host-to-device report has one; others ignore it).
+void set_sequence(AnyReport& report, uint32_t sequence) noexcept;
+
+[[nodiscard]] CreateNewEffectReport create_new_effect_report(const EffectParams& params,
                                                                        std::span<const int16_t> samples);
 
 // The Effect Structure (§6.3) of the effect.
-[[nodiscard]] protocol::SetEffectReport set_effect_report(const EffectParams& params, uint16_t block);
+[[nodiscard]] SetEffectReport set_effect_report(const EffectParams& params, uint16_t block);
 
 // The parameter blocks to send before Set Effect, in order: the envelope when `envelope`
 // and the effect has one, and the type's blocks when `type_specific` (one Set Condition per
 // axis, Set Periodic, Set Constant Force, Set Ramp Force, Custom Force Data chunks then Set
 // Custom Force, texture, wall, barrier, sweep, dynamic and one control law per axis).
-[[nodiscard]] std::vector<protocol::AnyReport> parameter_block_reports(const EffectParams& params,
+[[nodiscard]] std::vector<AnyReport> parameter_block_reports(const EffectParams& params,
                                                                        std::span<const int16_t> samples,
                                                                        uint16_t block, bool envelope,
                                                                        bool type_specific);
 
-}  // namespace feel::host
+}  // namespace feel::protocol

@@ -1,24 +1,20 @@
 // EffectParams -> PID reports, checked against the protocol's definitions: one condition
 // block per axis, Custom Force Data in chunks of kSamplesPerDataReport at increasing
 // offsets before Set Custom Force, PID's "infinite" for endless durations and loops, the
-// envelope only when the effect has one. Also: the codec's own descriptor passes the
-// host's descriptor check, and a changed size does not.
+// envelope only when the effect has one.
 #include <gtest/gtest.h>
 
 #include <numeric>
 #include <vector>
 
-#include "descriptor_check.hpp"
-#include "effect_reports.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/effect_reports.hpp"
 #include "support/valid_effects.hpp"
 
-namespace feel::host {
+namespace feel::protocol {
 namespace {
 
-using namespace protocol;
-
-TEST(HostEffectReports, SetEffectCarriesTheEffectStructure) {
+TEST(EffectReports, SetEffectCarriesTheEffectStructure) {
     EffectParams p = feel::test::valid_effect(EffectType::sine);
     p.duration_us = kInfiniteUs;
     p.iterations = kInfiniteIterations;
@@ -43,7 +39,7 @@ TEST(HostEffectReports, SetEffectCarriesTheEffectStructure) {
     EXPECT_EQ(set_effect_report(p, 7).iterations, 3);
 }
 
-TEST(HostEffectReports, OneConditionBlockPerAxis) {
+TEST(EffectReports, OneConditionBlockPerAxis) {
     const EffectParams p = feel::test::valid_effect(EffectType::spring);  // x and y
     const auto reports = parameter_block_reports(p, {}, 2, true, true);
     ASSERT_EQ(reports.size(), 2u);
@@ -56,7 +52,7 @@ TEST(HostEffectReports, OneConditionBlockPerAxis) {
     }
 }
 
-TEST(HostEffectReports, ForceProfileSamplesGoInChunksBeforeSetCustomForce) {
+TEST(EffectReports, ForceProfileSamplesGoInChunksBeforeSetCustomForce) {
     EffectParams p;
     p.type = EffectType::force_profile;
     p.duration_us = 70'000;
@@ -81,7 +77,7 @@ TEST(HostEffectReports, ForceProfileSamplesGoInChunksBeforeSetCustomForce) {
     EXPECT_EQ(create_new_effect_report(feel::test::valid_effect(EffectType::sine), {}).sample_count, 0);
 }
 
-TEST(HostEffectReports, EnvelopeOnlyWhenTheEffectHasOneAndWhenAsked) {
+TEST(EffectReports, EnvelopeOnlyWhenTheEffectHasOneAndWhenAsked) {
     EffectParams p = feel::test::valid_effect(EffectType::square);
     p.has_envelope = true;
     p.envelope = {8000, 30'000, 0, 0};
@@ -98,7 +94,7 @@ TEST(HostEffectReports, EnvelopeOnlyWhenTheEffectHasOneAndWhenAsked) {
     EXPECT_TRUE(parameter_block_reports(p, {}, 1, true, false).empty());
 }
 
-TEST(HostEffectReports, SweepsSendPeriodicAndSweepBlocks) {
+TEST(EffectReports, SweepsSendPeriodicAndSweepBlocks) {
     EffectParams p = feel::test::valid_effect(EffectType::sweep_sine);
     p.periodic.sweep_start_angle = 0;
     p.periodic.sweep_end_angle = 9000;
@@ -110,7 +106,7 @@ TEST(HostEffectReports, SweepsSendPeriodicAndSweepBlocks) {
     EXPECT_EQ(s.sense, SweepSense::counterclockwise);
 }
 
-TEST(HostEffectReports, ControlLawDynamicsSendOneLawPerAxis) {
+TEST(EffectReports, ControlLawDynamicsSendOneLawPerAxis) {
     EffectParams p;
     p.type = EffectType::dynamic_control_law;
     p.axis_count = 2;
@@ -124,7 +120,7 @@ TEST(HostEffectReports, ControlLawDynamicsSendOneLawPerAxis) {
     EXPECT_EQ(std::get<SetControlLawReport>(reports[2]).law.mass, 200);
 }
 
-TEST(HostEffectReports, EveryValidEffectEncodes) {
+TEST(EffectReports, EveryValidEffectEncodes) {
     // Every report built for a valid effect of each type is within its wire ranges.
     for (int i = 0; i < kEffectTypeCount; ++i) {
         const auto t = static_cast<EffectType>(i);
@@ -139,28 +135,5 @@ TEST(HostEffectReports, EveryValidEffectEncodes) {
     }
 }
 
-TEST(HostDescriptorCheck, TheCodecsDescriptorMatchesTheCodecsSizes) {
-    EXPECT_EQ(check_report_descriptor(report_descriptor()), "");
-}
-
-TEST(HostDescriptorCheck, AChangedReportSizeIsNamed) {
-    std::vector<uint8_t> d(report_descriptor().begin(), report_descriptor().end());
-    // Make the first one-byte Report Size item (prefix 0x75) one bit wider: the report it
-    // belongs to grows.
-    bool changed = false;
-    for (std::size_t i = 0; i + 1 < d.size(); ++i) {
-        if (d[i] == 0x75) {
-            ++d[i + 1];
-            changed = true;
-            break;
-        }
-    }
-    ASSERT_TRUE(changed);
-    const std::string problem = check_report_descriptor(d);
-    EXPECT_NE(problem, "");
-    EXPECT_NE(problem.find("report 0x"), std::string::npos) << problem;
-    EXPECT_NE(check_report_descriptor({}), "");
-}
-
 }  // namespace
-}  // namespace feel::host
+}  // namespace feel::protocol

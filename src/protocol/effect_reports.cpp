@@ -1,14 +1,20 @@
 // EffectParams -> HID PID reports. Each field is copied into its wire field; the narrowing
-// casts are safe because the host's checks (validate_effect and effect_checks) ran first.
-#include "effect_reports.hpp"
+// casts are safe because the parameters passed validate_effect() first.
+#include "feel/protocol/effect_reports.hpp"
 
 #include <algorithm>
 
 #include "feel/effect_type.hpp"
 
-namespace feel::host {
+namespace feel::protocol {
 
-using namespace protocol;
+void set_sequence(AnyReport& report, uint32_t sequence) noexcept {
+    std::visit(
+        [sequence](auto& r) {
+            if constexpr (requires { r.sequence; }) r.sequence = sequence;
+        },
+        report);
+}
 
 uint32_t wire_duration(int64_t us) noexcept {
     return us == kInfiniteUs ? kWireInfinite : static_cast<uint32_t>(us);
@@ -199,4 +205,4 @@ std::vector<AnyReport> parameter_block_reports(const EffectParams& p, std::span<
     return out;
 }
 
-}  // namespace feel::host
+}  // namespace feel::protocol
