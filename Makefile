@@ -1,15 +1,17 @@
 # feel — the two commands of the README, and a few more.
 #   make demo   install what is missing, build, render sample sensations and plot them, play
 #               one on the simulated device through the host API, stream forces to it
-#   make test   install what is missing, build, run every test (and a short fuzz run)
+#   make test   install what is missing, build, run every test (and a short fuzz run), then
+#               every test again under ASan+UBSan and the threaded suites under TSan
 BUILD      ?= build
 BUILD_TYPE ?= RelWithDebInfo
 # CI (which sets CI=true) turns warnings into errors.
 WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
+space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean
+.PHONY: all deps build demo plots test unit-tests fuzz bench clean test-asan test-tsan
 
 all: build
 
@@ -34,8 +36,9 @@ demo: build
 	$(FEEL) play examples/primer.feel.json --sensation railing_impact --seconds 1
 	$(FEEL) stream --rate 60 --seconds 1
 
-# The fuzz run goes first so that the test summary is the last thing printed.
-test: build fuzz unit-tests
+# The fuzz run goes first so that the test summary is the last thing printed; the
+# sanitizer runs come last: they only judge what the plain run already passed.
+test: build fuzz unit-tests test-asan test-tsan
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -56,6 +59,29 @@ fuzz: deps
 	        $(BUILD)-fuzz/corpus/$$t fuzz/corpus/$$t; \
 	done
 
+# Sanitizer trees: the tests only (no benchmarks, no fuzzers), -O2 with line tables for
+# the reports. Warnings are the plain build's job (gcc warns falsely under -fsanitize), so
+# no -Werror here. Every finding stops its test (halt_on_error); leak reports go through
+# scripts/lsan.supp (third-party leaks only, each entry says why).
+SANITIZER_TREE := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_BUILD_FUZZ=OFF
+# ThreadSanitizer runs the subsystems with threads (ctest labels = folders under tests/).
+TSAN_SUITES := runtime transport peripheral host
+test-asan: export ASAN_OPTIONS := halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1
+test-asan: export UBSAN_OPTIONS := halt_on_error=1:print_stacktrace=1
+test-asan: export LSAN_OPTIONS := suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0
+test-tsan: export TSAN_OPTIONS := halt_on_error=1:second_deadlock_stack=1
+
+test-asan: deps
+	cmake -S . -B $(BUILD)-asan $(SANITIZER_TREE) -DFEEL_SANITIZE=address
+	cmake --build $(BUILD)-asan
+	ctest --test-dir $(BUILD)-asan --output-on-failure
+
+test-tsan: deps
+	cmake -S . -B $(BUILD)-tsan $(SANITIZER_TREE) -DFEEL_SANITIZE=thread
+	cmake --build $(BUILD)-tsan --target $(addprefix feel_suite_,$(TSAN_SUITES))
+	ctest --test-dir $(BUILD)-tsan --output-on-failure -L '^($(subst $(space),|,$(TSAN_SUITES)))$$'
+
 # Every sensation of every example file, rendered and plotted under out/examples/.
 plots: build
 	bash scripts/render-examples.sh $(FEEL)
@@ -67,4 +93,4 @@ bench: build
 	$(BUILD)/bench/feel_bench_streaming
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-fuzz out
+	rm -rf $(BUILD) $(BUILD)-fuzz $(BUILD)-asan $(BUILD)-tsan out

@@ -1,12 +1,7 @@
-// Building a JsonValue from nlohmann's SAX events, strictly.
+// Building bounded JsonValue trees from SAX events, strictly.
 #include "json_document.hpp"
 
-#include <algorithm>
-#include <limits>
 #include <nlohmann/json.hpp>
-#include <unordered_set>
-
-#include "feel/format/sensation_file.hpp"
 
 namespace feel::format::detail {
 
@@ -17,15 +12,11 @@ const JsonValue* JsonValue::find(std::string_view key) const noexcept {
     return nullptr;
 }
 
-namespace {
-
-using Json = nlohmann::json;
-
-// nlohmann reads an integer literal that overflows int64/uint64 as a float; the raw
-// token tells them apart.
-bool is_integer_literal(const std::string& s) {
-    return s.find_first_of(".eE") == std::string::npos;
+JsonValue* JsonValue::find(std::string_view key) noexcept {
+    return const_cast<JsonValue*>(static_cast<const JsonValue&>(*this).find(key));
 }
+
+namespace {
 
 // Escapes one pointer token (RFC 6901).
 void append_pointer_token(std::string& out, std::string_view token) {
@@ -41,164 +32,145 @@ void append_pointer_token(std::string& out, std::string_view token) {
     }
 }
 
-class DomBuilder final : public nlohmann::json_sax<Json> {
-public:
-    explicit DomBuilder(std::string_view text) : text_(text) {}
-
-    JsonValue root;
-    std::string error;  // set when a callback stops the parse
-
-    bool null() override { return put(JsonValue{}); }
-
-    bool boolean(bool val) override {
-        JsonValue v;
-        v.kind = JsonValue::Kind::boolean;
-        v.boolean = val;
-        return put(std::move(v));
-    }
-
-    bool number_integer(number_integer_t val) override {
-        JsonValue v;
-        v.kind = JsonValue::Kind::integer;
-        v.integer = val;
-        return put(std::move(v));
-    }
-
-    bool number_unsigned(number_unsigned_t val) override {
-        JsonValue v;
-        if (val > static_cast<number_unsigned_t>(std::numeric_limits<int64_t>::max())) {
-            v.kind = JsonValue::Kind::big_integer;
-            v.text = std::to_string(val);
-        } else {
-            v.kind = JsonValue::Kind::integer;
-            v.integer = static_cast<int64_t>(val);
-        }
-        return put(std::move(v));
-    }
-
-    bool number_float(number_float_t, const string_t& s) override {
-        JsonValue v;
-        v.kind = is_integer_literal(s) ? JsonValue::Kind::big_integer : JsonValue::Kind::real;
-        v.text = s;
-        return put(std::move(v));
-    }
-
-    bool string(string_t& val) override {
-        JsonValue v;
-        v.kind = JsonValue::Kind::string;
-        v.text = std::move(val);
-        return put(std::move(v));
-    }
-
-    bool binary(binary_t&) override {
-        error = "binary values are not JSON";  // only binary formats produce them
-        return false;
-    }
-
-    bool start_object(std::size_t) override { return open(JsonValue::Kind::object); }
-
-    bool key(string_t& val) override {
-        Open& top = stack_.back();
-        if (!top.keys_seen.insert(val).second) {
-            error = "duplicate key " + quote(val) + " in the object at " + pointer_to_top();
-            return false;
-        }
-        pending_key_ = std::move(val);
-        return true;
-    }
-
-    bool end_object() override { return close(); }
-    bool start_array(std::size_t) override { return open(JsonValue::Kind::array); }
-    bool end_array() override { return close(); }
-
-    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) override {
-        // Syntax errors read "[json.exception.parse_error.101] parse error at line 2,
-        // column 5: syntax error ..."; keep nlohmann's position and explanation.
-        const std::string what = ex.what();
-        const std::string marker = "parse error at ";
-        if (const size_t at = what.find(marker); at != std::string::npos) {
-            error = "invalid JSON " + what.substr(at + marker.size() - 3);
-            return false;
-        }
-        // Others (a number too large for a double: "[json.exception.out_of_range.406]
-        // number overflow parsing '1e999'") carry no line: derive it from the offset.
-        const size_t end = std::min(position, text_.size());
-        const std::string_view before = text_.substr(0, end);
-        const size_t line = 1 + static_cast<size_t>(std::count(before.begin(), before.end(), '\n'));
-        const size_t line_start = before.rfind('\n') == std::string_view::npos ? 0 : before.rfind('\n') + 1;
-        const size_t bracket = what.find("] ");
-        error = "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(end - line_start) +
-                ": " + (bracket == std::string::npos ? what : what.substr(bracket + 2));
-        return false;
-    }
-
-private:
-    struct Open {
-        JsonValue* value;
-        std::unordered_set<std::string> keys_seen;  // objects only
-    };
-
-    bool put(JsonValue v) {
-        if (stack_.empty()) {
-            root = std::move(v);
-            return true;
-        }
-        JsonValue& parent = *stack_.back().value;
-        if (parent.kind == JsonValue::Kind::object) parent.keys.push_back(std::move(pending_key_));
-        parent.items.push_back(std::move(v));
-        return true;
-    }
-
-    bool open(JsonValue::Kind kind) {
-        if (static_cast<int>(stack_.size()) >= kMaxJsonDepth) {
-            error = "nesting deeper than " + std::to_string(kMaxJsonDepth) +
-                    " arrays and objects at " + pointer_to_top();
-            return false;
-        }
-        JsonValue v;
-        v.kind = kind;
-        put(std::move(v));
-        // The new container is the last item of its parent (or the root); the parent
-        // does not grow again until the new container closes, so the pointer is stable.
-        JsonValue* opened = stack_.empty() ? &root : &stack_.back().value->items.back();
-        stack_.push_back(Open{opened, {}});
-        return true;
-    }
-
-    bool close() {
-        stack_.pop_back();
-        return true;
-    }
-
-    // The JSON pointer of the innermost open container.
-    std::string pointer_to_top() const {
-        std::string out;
-        for (size_t i = 0; i + 1 < stack_.size(); ++i) {
-            const JsonValue& c = *stack_[i].value;
-            if (c.kind == JsonValue::Kind::object) {
-                append_pointer_token(out, c.keys.back());
-            } else {
-                append_pointer_token(out, std::to_string(c.items.size() - 1));
-            }
-        }
-        return out.empty() ? "the top level" : out;
-    }
-
-    std::string_view text_;  // for positions nlohmann does not give
-    std::vector<Open> stack_;
-    std::string pending_key_;
-};
-
 }  // namespace
 
-JsonValue parse_json(std::string_view text, std::string_view origin) {
-    DomBuilder builder(text);
-    const bool ok = Json::sax_parse(text.begin(), text.end(), &builder);
-    if (!ok) {
-        throw FormatError(std::string(origin) + ": " +
-                          (builder.error.empty() ? std::string("invalid JSON") : builder.error));
+JsonValue number_literal(const std::string& literal) {
+    JsonValue v;
+    // nlohmann reads an integer literal that overflows int64/uint64 as a float; the raw
+    // token tells them apart.
+    v.kind = literal.find_first_of(".eE") == std::string::npos ? JsonValue::Kind::big_integer
+                                                                : JsonValue::Kind::real;
+    v.text = literal;
+    return v;
+}
+
+void TreeBuilder::begin(std::string pointer, int depth) {
+    pointer_ = std::move(pointer);
+    depth_ = depth;
+    building_ = true;
+    values_ = 0;
+    root_ = JsonValue{};
+    stack_.clear();
+    pending_key_.clear();
+    error_ = Error{};
+}
+
+JsonValue TreeBuilder::take() {
+    building_ = false;
+    return std::move(root_);
+}
+
+bool TreeBuilder::fail_at_field(std::string path, std::string problem) {
+    error_ = Error{true, std::move(path), std::move(problem)};
+    return false;
+}
+
+bool TreeBuilder::count_value() {
+    if (++values_ <= kMaxTreeValues) return true;
+    return fail_at_field(next_path(), "more than " + std::to_string(kMaxTreeValues) +
+                                          " JSON values in one effect (a valid one holds at most " +
+                                          std::to_string(kMaxTreeArrayItems) + " samples and its fields)");
+}
+
+bool TreeBuilder::put(JsonValue v) {
+    if (stack_.empty()) {
+        root_ = std::move(v);
+        return true;
     }
-    return std::move(builder.root);
+    JsonValue& parent = *stack_.back();
+    if (parent.kind == JsonValue::Kind::object) {
+        parent.keys.push_back(std::move(pending_key_));
+        pending_key_.clear();
+    } else if (parent.items.size() >= kMaxTreeArrayItems) {
+        return fail_at_field(path_to(stack_.size(), false),
+                             "more than " + std::to_string(kMaxTreeArrayItems) +
+                                 " values in one array (the longest array of the format, a force profile's "
+                                 "samples, holds at most " +
+                                 std::to_string(kMaxTreeArrayItems) + ")");
+    }
+    parent.items.push_back(std::move(v));
+    return true;
+}
+
+bool TreeBuilder::scalar(JsonValue v) {
+    if (!count_value() || !put(std::move(v))) return false;
+    if (stack_.empty()) building_ = false;  // a scalar root is complete at once
+    return true;
+}
+
+bool TreeBuilder::open(JsonValue::Kind kind) {
+    if (depth_ + static_cast<int>(stack_.size()) >= kMaxJsonDepth) {
+        error_ = Error{false, {},
+                       "nesting deeper than " + std::to_string(kMaxJsonDepth) + " arrays and objects at " +
+                           pointer_to_top()};
+        return false;
+    }
+    if (!count_value()) return false;
+    JsonValue v;
+    v.kind = kind;
+    if (!put(std::move(v))) return false;
+    // The new container is the last item of its parent (or the root); the parent does not
+    // grow again until the new container closes, so the pointer is stable.
+    stack_.push_back(stack_.empty() ? &root_ : &stack_.back()->items.back());
+    return true;
+}
+
+bool TreeBuilder::key(std::string& k) {
+    const JsonValue& object = *stack_.back();
+    for (const std::string& seen : object.keys) {
+        if (seen == k) {
+            error_ = Error{false, {}, "duplicate key " + quote(k) + " in the object at " + pointer_to_top()};
+            return false;
+        }
+    }
+    if (object.keys.size() >= kMaxTreeObjectMembers) {
+        return fail_at_field(path_to(stack_.size(), false),
+                             "more than " + std::to_string(kMaxTreeObjectMembers) +
+                                 " members in one object (no object of the format has that many)");
+    }
+    if (!count_value()) return false;
+    pending_key_ = std::move(k);
+    return true;
+}
+
+bool TreeBuilder::close() {
+    stack_.pop_back();
+    if (stack_.empty()) building_ = false;
+    return true;
+}
+
+// The path of the container open at `level` (1 = the root); with_next, of the value
+// that goes next into the innermost one.
+std::string TreeBuilder::path_to(size_t level, bool with_next) const {
+    std::string out;
+    const size_t steps = with_next ? stack_.size() : level - 1;
+    for (size_t i = 0; i < steps; ++i) {
+        const JsonValue& c = *stack_[i];
+        const bool last = i + 1 == stack_.size();  // only when with_next
+        if (c.kind == JsonValue::Kind::object) {
+            if (!out.empty()) out += '.';
+            out += last ? pending_key_ : c.keys.back();
+        } else {
+            out += '[' + std::to_string(last ? c.items.size() : c.items.size() - 1) + ']';
+        }
+    }
+    return out;
+}
+
+std::string TreeBuilder::next_path() const { return path_to(stack_.size(), true); }
+
+// The JSON pointer of the innermost open container.
+std::string TreeBuilder::pointer_to_top() const {
+    std::string out = pointer_;
+    for (size_t i = 0; i + 1 < stack_.size(); ++i) {
+        const JsonValue& c = *stack_[i];
+        if (c.kind == JsonValue::Kind::object) {
+            append_pointer_token(out, c.keys.back());
+        } else {
+            append_pointer_token(out, std::to_string(c.items.size() - 1));
+        }
+    }
+    return out.empty() ? "the top level" : out;
 }
 
 std::string describe(const JsonValue& v) {
@@ -206,8 +178,8 @@ std::string describe(const JsonValue& v) {
         case JsonValue::Kind::null: return "null";
         case JsonValue::Kind::boolean: return v.boolean ? "true" : "false";
         case JsonValue::Kind::integer: return std::to_string(v.integer);
-        case JsonValue::Kind::big_integer: return v.text;
-        case JsonValue::Kind::real: return v.text;
+        case JsonValue::Kind::big_integer: return abbreviate_literal(v.text);
+        case JsonValue::Kind::real: return abbreviate_literal(v.text);
         case JsonValue::Kind::string: return "the string " + quote(v.text);
         case JsonValue::Kind::array: return "an array";
         case JsonValue::Kind::object: return "an object";
@@ -216,7 +188,21 @@ std::string describe(const JsonValue& v) {
 }
 
 std::string quote(std::string_view s) {
-    return Json(std::string(s)).dump(-1, ' ', false, Json::error_handler_t::replace);
+    constexpr size_t kWhole = 80;
+    constexpr size_t kShown = 64;
+    using Json = nlohmann::json;
+    if (s.size() <= kWhole) return Json(std::string(s)).dump(-1, ' ', false, Json::error_handler_t::replace);
+    size_t cut = kShown;
+    while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 sequence
+    std::string shown = Json(std::string(s.substr(0, cut)) + "...").dump(-1, ' ', false, Json::error_handler_t::replace);
+    return shown + " (" + std::to_string(s.size()) + " bytes)";
+}
+
+std::string abbreviate_literal(std::string_view literal) {
+    constexpr size_t kWhole = 40;
+    constexpr size_t kShown = 24;
+    if (literal.size() <= kWhole) return std::string(literal);
+    return std::string(literal.substr(0, kShown)) + "... (" + std::to_string(literal.size()) + " characters)";
 }
 
 }  // namespace feel::format::detail

@@ -149,6 +149,12 @@ std::string write_sensation_file(const SensationFile& file) {
     if (file.sensations.empty()) {
         throw FormatError("cannot write a sensation file with no sensations (a file defines at least one)");
     }
+    size_t effect_count = 0;
+    for (const Sensation& s : file.sensations) effect_count += s.effects.size();
+    if (effect_count > kMaxFileEffects) {
+        throw FormatError("cannot write " + std::to_string(effect_count) + " effects in one file (allowed 1.." +
+                          std::to_string(kMaxFileEffects) + ": a reader would refuse it)");
+    }
     Json root = Json::object();
     root["format"] = std::string(kFormatVersion);
     Json sensations = Json::object();

@@ -522,7 +522,7 @@ struct DeviceSession::Impl {
         // The report's sequence when its id names a report that has one and the bytes hold
         // it (the sequence is every host report's first field: bytes 1..4, little-endian).
         uint32_t sequence = 0;
-        ReportId command = ReportId::keep_alive;  // when the id byte names no report
+        ReportId command = protocol::kNoReportId;  // when the id byte names no report
         if (!f.payload.empty() && protocol::report_kind(f.payload[0]).has_value()) {
             command = static_cast<ReportId>(f.payload[0]);
             const bool has_sequence = *protocol::report_kind(f.payload[0]) != protocol::ReportKind::input &&

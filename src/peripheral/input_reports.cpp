@@ -52,7 +52,7 @@ void fill_refusal(protocol::CommandStatusReport& status, const Refusal& refusal)
     status.code = refusal.code;
     copy_text(status.field, sizeof status.field, refusal.field);
     status.has_range = refusal.has_range;
-    status.value = refusal.has_range ? refusal.value : 0;
+    status.value = refusal.value;  // also without a range: an unknown report id, a hole in an enum
     status.allowed_min = refusal.has_range ? refusal.allowed.min : 0;
     status.allowed_max = refusal.has_range ? refusal.allowed.max : 0;
     copy_text(status.rule, sizeof status.rule, refusal.rule);

@@ -19,12 +19,13 @@ constexpr Range kSafetyFlags{0, 0x1F};          // five flag bits
 constexpr Range kPages{1, 0xFF};
 constexpr Range kStatusEffects{0, kEffectsPerStatusReport};
 constexpr Range kAxisCountOrNone{0, kMaxAxes};
-constexpr Range kReportIds{0x01, 0x44};         // the lowest and highest ReportId
+// Command Status's `command`: kNoReportId (0) or a ReportId up to the highest.
+constexpr Range kAnsweredIds{0x00, 0x44};
 static_assert(static_cast<int>(ErrorCode::invalid_handle) == kErrorCode.max, "ErrorCode's last");
 static_assert(static_cast<int>(runtime::ReportedEffectState::emulated) == kReportedState.max,
               "ReportedEffectState's last");
 static_assert(static_cast<int>(PlayEnd::finished) == kPlayEnd.max, "PlayEnd's last");
-static_assert(static_cast<int>(ReportId::dynamic_report) == kReportIds.max, "the highest ReportId");
+static_assert(static_cast<int>(ReportId::dynamic_report) == kAnsweredIds.max, "the highest ReportId");
 
 constexpr uint32_t kButtonUsages[32] = {
     button(1),  button(2),  button(3),  button(4),  button(5),  button(6),  button(7),
@@ -67,14 +68,14 @@ constexpr FieldSpec kPidState[] = {
     FEEL_FIELD(PidStateReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
 };
 
-bool names_a_report(int64_t v) noexcept {
-    return v >= 0 && v <= 0xFF && find_report(static_cast<uint8_t>(v)) != nullptr;
+bool answers_a_report(int64_t v) noexcept {
+    return v == static_cast<int64_t>(kNoReportId) || (v > 0 && v <= 0xFF && find_report(static_cast<uint8_t>(v)) != nullptr);
 }
 
 constexpr FieldSpec kCommandStatus[] = {
     FEEL_FIELD(CommandStatusReport, sequence, u32(vendor::kSequence, kAnyU32)),
     FEEL_FIELD(CommandStatusReport, command,
-               u8(vendor::kCommand, kReportIds).only(&names_a_report, "is not a report id")),
+               u8(vendor::kCommand, kAnsweredIds).only(&answers_a_report, "is not a report id (nor 0, no report)")),
     FEEL_FIELD(CommandStatusReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
     FEEL_FIELD(CommandStatusReport, code, u8(vendor::kErrorCode, kErrorCode)),
     FEEL_FIELD(CommandStatusReport, field[i], text(vendor::kErrorField, 48)),

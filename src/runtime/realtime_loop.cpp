@@ -21,6 +21,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
@@ -126,8 +127,17 @@ void release_memory_lock() noexcept {
 }  // namespace
 
 int64_t loop_tick_time_us(int64_t tick, int32_t rate_hz) noexcept {
+    // tick = whole·rate + rest: whole seconds, then the rounded µs of the rest (|rest| <
+    // rate <= 2^31, so rest·1e6 fits). Only whole·1e6 and the sum can overflow: checked,
+    // saturating, never wrapping (no 128-bit arithmetic, which a Cortex-M lacks).
     const int64_t rate = rate_hz;
-    return (tick / rate) * kUsPerS + ((tick % rate) * kUsPerS + rate / 2) / rate;
+    const int64_t whole = tick / rate;
+    const int64_t rest_us = ((tick % rate) * kUsPerS + rate / 2) / rate;
+    int64_t t_us = 0;
+    if (__builtin_mul_overflow(whole, kUsPerS, &t_us) || __builtin_add_overflow(t_us, rest_us, &t_us)) {
+        return tick < 0 ? std::numeric_limits<int64_t>::min() : std::numeric_limits<int64_t>::max();
+    }
+    return t_us;
 }
 
 std::string RealtimeLoopSetup::describe() const {

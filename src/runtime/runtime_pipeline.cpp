@@ -210,7 +210,7 @@ void RuntimePipeline::tick(int64_t tick_index) noexcept {
         reflex_fired_seen_ = fired;
     }
     bump(counters_.ticks);
-    counters_.last_tick.store(tick_index, std::memory_order_relaxed);
+    counters_.last_tick.store(tick_index, std::memory_order_release);  // next_tick_index()
     counters_.t_us.store(t_us, std::memory_order_relaxed);
 }
 

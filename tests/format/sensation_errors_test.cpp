@@ -35,10 +35,28 @@ TEST(SensationFileErrors, EmptyAndTruncatedInput) {
     EXPECT_THAT(error_of("{\"format\": \"feel/1\" /* comment */}"), HasSubstr("invalid JSON"));
 }
 
-TEST(SensationFileErrors, NumberTooLargeForADoubleIsInvalidJson) {
-    // nlohmann reports this one without a line; the reader derives it. The number
-    // "1e999" ends at the 6th character of line 2.
-    EXPECT_EQ(error_of("{\"format\":\n 1e999}"), "bad.json: invalid JSON at line 2, column 6: number overflow parsing '1e999'");
+TEST(SensationFileErrors, NumbersTooLargeForADoubleNameTheirField) {
+    // nlohmann stops at a number no double holds; the reader names the field like for any
+    // value that does not fit (before, "invalid JSON at line 2, column 6: number overflow").
+    EXPECT_EQ(error_of("{\"format\":\n 1e999}"), R"(bad.json: "format" must be "feel/1", found 1e999)");
+    EXPECT_EQ(error_of(sine_with("", R"("magnitude": 2000, "period_us": 10000, "phase": 1e400)")),
+              R"(bad.json: sensation "hum": periodic.phase: 1e400 is beyond the range of every field (the format's numbers are 64-bit integers))");
+    // A 100 000-digit integer, quoted by its start and its length.
+    const std::string huge(100'000, '7');
+    EXPECT_EQ(error_of(sine_with(R"("gain": )" + huge + ", ")),
+              R"(bad.json: sensation "hum": gain: 777777777777777777777777... (100000 characters) does not fit in a 64-bit integer)");
+    EXPECT_EQ(error_of(file_with(R"({"effects": [{"type": "constant", "duration_us": 1000, "axes": ["x"], "constant": {"magnitude": 1}},
+        {"type": "ramp", "duration_us": 1000, "axes": ["x"], "ramp": {"start": -1e400}}]})")),
+              R"(bad.json: sensation "hum": effects[1].ramp.start: -1e400 is beyond the range of every field (the format's numbers are 64-bit integers))");
+    EXPECT_EQ(error_of(file_with(R"({"type": "force_profile", "duration_us": 1000, "axes": ["x"],
+        "custom": {"sample_period_us": 1000, "samples": [1, 2, )" + huge + "]}}")),
+              R"(bad.json: sensation "hum": custom.samples[2]: 777777777777777777777777... (100000 characters) does not fit in a 64-bit integer)");
+    // Where no number belongs, the usual message.
+    EXPECT_EQ(error_of(file_with("1e400")),
+              R"(bad.json: sensation "hum": expected an object (one effect, or {"effects": [...]} for a compound), found 1e400)");
+    // Long literals that a double holds are shortened in messages too.
+    EXPECT_EQ(error_of(sine_with(R"("gain": 0.)" + std::string(1000, '0') + "1, ")),
+              R"(bad.json: sensation "hum": gain: expected an integer, found 0.0000000000000000000000... (1003 characters))");
 }
 
 TEST(SensationFileErrors, InvalidUtf8IsInvalidJson) {
@@ -85,7 +103,8 @@ TEST(SensationFileErrors, DeeplyNestedGarbageIsRefusedWithoutCrashing) {
     const std::string deep = file_with(R"({"type": "sine", "x": )" + std::string(100000, '[') + "]}");
     EXPECT_THAT(error_of(deep), StartsWith("bad.json: nesting deeper than 32 arrays and objects at /sensations/hum/x/0/0/"));
     EXPECT_THAT(error_of(std::string(1'000'000, '{')), HasSubstr("invalid JSON"));  // a key is missing first
-    EXPECT_THAT(error_of(std::string(1'000'000, '[')), HasSubstr("nesting deeper than 32"));
+    // Refused at its first byte, before any nesting.
+    EXPECT_EQ(error_of(std::string(1'000'000, '[')), "bad.json: expected a JSON object at the top level, found an array");
 }
 
 // --- sensations ---
@@ -382,7 +401,7 @@ TEST(SensationFileErrors, ForceProfileSamples) {
     std::string many = R"("sample_period_us": 100, "samples": [0)";
     for (int i = 0; i < 65535; ++i) many += ",0";
     EXPECT_EQ(error_of(profile(many + "]", R"(["x"])")),
-              R"(bad.json: sensation "hum": custom.samples: 65536 samples is out of range (allowed 1..65535))");
+              R"(bad.json: sensation "hum": custom.samples: more than 65535 samples (allowed 1..65535))");  // refused while read
 }
 
 TEST(SensationFileErrors, LoadNamesThePath) {

@@ -199,7 +199,18 @@ TEST(DecodeRejects, InvalidEnumValues) {
     EXPECT_STREQ(e.field, "command_status.command");
     EXPECT_FALSE(e.has_range);
     EXPECT_EQ(e.value, 0x0E);
-    EXPECT_STREQ(e.rule, "is not a report id");
+    EXPECT_STREQ(e.rule, "is not a report id (nor 0, no report)");
+}
+
+TEST(DecodeAccepts, CommandStatusForAFrameThatNamedNoReport) {
+    // command 0 (kNoReportId): the answer to a frame whose id byte names no report.
+    CommandStatusReport status;
+    status.command = kNoReportId;
+    status.code = ErrorCode::invalid_parameter;
+    status.value = 0xEE;
+    AnyReport back;
+    ASSERT_TRUE(decode(encode(status), back).ok());
+    EXPECT_EQ(std::get<CommandStatusReport>(back), status);
 }
 
 TEST(EncodeRejects, OutOfRangeValuesThrowNamingFieldAndRange) {

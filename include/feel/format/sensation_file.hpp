@@ -68,6 +68,10 @@ inline constexpr size_t kMaxSensationNameLength = 64;
 [[nodiscard]] bool is_valid_sensation_name(std::string_view name) noexcept;
 // load_sensation_file() refuses larger files.
 inline constexpr size_t kMaxFileBytes = 64u << 20;
+// The most effects in one file, all sensations together (a single-effect sensation is
+// one, a compound one per entry of "effects"). With it, reading any file takes at most
+// about twice its size in memory (docs/sensation-format.md, "Limits").
+inline constexpr size_t kMaxFileEffects = 4096;
 
 // `origin` names the file in messages.
 [[nodiscard]] SensationFile parse_sensation_file(std::string_view text, std::string_view origin);

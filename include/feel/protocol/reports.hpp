@@ -437,11 +437,15 @@ struct PidStateReport {
     friend bool operator==(const PidStateReport&, const PidStateReport&) = default;
 };
 
+// Command Status's `command` for a frame whose first byte names no report (that byte is in
+// the status's `value`, field "report.id"). HID reserves report id 0, so no report has it.
+inline constexpr ReportId kNoReportId = ReportId{0};
+
 // The outcome of one command (vendor). For an error, `error` names the field, the value
 // and the allowed range exactly as the device's engine refused it.
 struct CommandStatusReport {
     uint32_t sequence = 0;
-    ReportId command = ReportId::keep_alive;  // the report that was answered
+    ReportId command = ReportId::keep_alive;  // the report that was answered, or kNoReportId
     uint16_t block = 0;                        // the effect concerned, 0 if none
     ErrorCode code = ErrorCode::ok;
     char field[48] = {};

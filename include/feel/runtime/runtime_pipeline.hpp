@@ -127,7 +127,11 @@ public:
     // not above the last is ignored and counted (rejected_ticks). Real-time safe.
     void tick(int64_t tick_index) noexcept;
     // The index after the last tick run (0 before the first): where a new loop continues.
-    [[nodiscard]] int64_t next_tick_index() const noexcept { return last_tick_ + 1; }
+    // Any thread (it reads the published counter, not the loop's own state); while a loop
+    // runs, a snapshot that may be one tick behind.
+    [[nodiscard]] int64_t next_tick_index() const noexcept {
+        return counters_.last_tick.load(std::memory_order_acquire) + 1;
+    }
 
     // The queues. The host pushes commands and pops reports (one host thread); the loop
     // does the rest.
