@@ -1,7 +1,7 @@
 // libFuzzer target: a hostile host against the device session.
 //
 // The input is a script of steps, each [op: u8][length: u16 little-endian][payload]:
-//   op 1..8    a frame of that transport::FrameKind carrying the payload (the host sends
+//   op 1..9    a frame of that transport::FrameKind carrying the payload (the host sends
 //              anything, device-to-host kinds included)
 //   op 0xFE    run payload[0] + 1 ticks of the loop (no payload: one tick)
 //   op 0xFF    the host goes away (DeviceSession::host_gone)

@@ -138,6 +138,13 @@ void add_device(CLI::App& app, DeviceArgs& a) {
     cmd->add_option("--motion", a.motion, "The hand's target motion, as for feel render")->capture_default_str();
     cmd->add_option("--rate", a.rate_hz, "Loop rate, a whole number of Hz 100..the profile's maximum "
                                          "(default: the profile's rate)");
+    cmd->add_flag("--allow-remote", a.allow_remote,
+                  "Allow a tcp: address that is not loopback (hosts on other machines); needs a token");
+    cmd->add_option("--token-file", a.token_file,
+                    "A file holding the shared secret every host must present (tcp:HOST:PORT?token=... or "
+                    "$FEEL_DEVICE_TOKEN on the host); default: $FEEL_DEVICE_TOKEN, else none");
+    cmd->add_option("--group", a.group,
+                    "unix: give the socket file to this group, mode 0660 (default: mode 0600, you alone)");
     cmd->footer(kExitCodes);
 }
 

@@ -2,13 +2,18 @@
 // (device_command.hpp, docs/peripheral.md).
 #include "device_command.hpp"
 
+#include <grp.h>
 #include <sys/stat.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -75,8 +80,47 @@ void check_motion(const std::string& spec, const sim::DeviceProfile& profile) {
     }
 }
 
-transport::Address listen_address(const DeviceArgs& args) {
-    const std::string text = args.listen.empty() ? default_device_address(args.profile) : args.listen;
+// The shared secret: the file's content (without a final newline), else the environment's.
+// A token file others may read is refused: the secret would not be one.
+std::string device_token(const DeviceArgs& args) {
+    std::string token;
+    if (!args.token_file.empty()) {
+        struct stat info {};
+        if (::stat(args.token_file.c_str(), &info) != 0)
+            throw UsageError("--token-file " + args.token_file + " cannot be read");
+        if ((info.st_mode & 0077) != 0) {
+            throw UsageError("--token-file " + args.token_file +
+                             " may be read by others (allowed a mode without group or other access, e.g. 0600)");
+        }
+        std::ifstream in(args.token_file, std::ios::binary);
+        std::ostringstream content;
+        content << in.rdbuf();
+        if (!in) throw UsageError("--token-file " + args.token_file + " cannot be read");
+        token = content.str();
+        while (!token.empty() && (token.back() == '\n' || token.back() == '\r')) token.pop_back();
+        if (const std::string problem = transport::check_token(token); !problem.empty())
+            throw UsageError("--token-file " + args.token_file + ": the token " + problem);
+        return token;
+    }
+    if (const char* from_environment = std::getenv(transport::kTokenEnvironmentVariable)) {
+        token = from_environment;
+        if (const std::string problem = transport::check_token(token); !problem.empty())
+            throw UsageError(std::string("$") + transport::kTokenEnvironmentVariable + ": the token " + problem);
+    }
+    return token;
+}
+
+std::optional<unsigned> group_id(const DeviceArgs& args, const transport::Address& address) {
+    if (args.group.empty()) return std::nullopt;
+    if (address.kind != transport::Address::Kind::unix_socket)
+        throw UsageError("--group is for a unix: socket, not " + address.to_string());
+    const struct group* g = ::getgrnam(args.group.c_str());
+    if (g == nullptr) throw UsageError("--group \"" + args.group + "\" is not a group on this machine");
+    return static_cast<unsigned>(g->gr_gid);
+}
+
+transport::Address listen_address(const DeviceArgs& args, std::ostream& err) {
+    std::string text = args.listen.empty() ? default_device_address(args.profile) : args.listen;
     transport::Address address;
     try {
         address = transport::Address::parse_listen(text);
@@ -89,14 +133,12 @@ transport::Address listen_address(const DeviceArgs& args) {
                          "inside their host)");
     }
     if (args.listen.empty()) {
-        // The default directory is per user: made private, as a runtime directory is.
-        const std::filesystem::path dir = std::filesystem::path(address.path).parent_path();
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        if (ec) throw std::runtime_error("cannot create the socket directory " + dir.string() + ": " + ec.message());
-        if (::chmod(dir.c_str(), 0700) != 0) {
-            throw std::runtime_error("cannot make the socket directory " + dir.string() + " private (mode 0700)");
-        }
+        // The default directory is per user and must be private: else a fresh private one.
+        const std::filesystem::path file = std::filesystem::path(address.path).filename();
+        const transport::PrivateDir dir =
+            transport::private_socket_dir(std::filesystem::path(address.path).parent_path().string());
+        if (!dir.warning.empty()) err << "feel device: warning: " << dir.warning << std::endl;
+        address.path = (std::filesystem::path(dir.path) / file).string();
     }
     return address;
 }
@@ -107,7 +149,7 @@ std::string default_device_address(const std::string& profile) {
     return "unix:" + (std::filesystem::path(transport::default_socket_dir()) / (profile + ".sock")).string();
 }
 
-int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& /*err*/, std::atomic<bool>& stop) {
+int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& err, std::atomic<bool>& stop) {
     if (!args.sim) {
         throw UsageError("only simulated devices exist yet: run `feel device --sim` (a backend for real "
                          "hardware would run without --sim)");
@@ -120,11 +162,31 @@ int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& /*err*/,
     options.hand = args.hand;
     options.motion = args.motion;
     options.loop_rate_hz = checked_rate(args.rate_hz, profile);
-    const transport::Address wanted = listen_address(args);
+    const transport::Address wanted = listen_address(args, err);
+    transport::ListenOptions access;
+    access.allow_remote = args.allow_remote;
+    access.token = device_token(args);
+    access.group_id = group_id(args, wanted);
+    const bool remote = wanted.kind == transport::Address::Kind::tcp && !transport::is_loopback_host(wanted.host);
+    if (remote && !args.allow_remote) {
+        throw UsageError("--listen " + wanted.to_string() +
+                         " is not a loopback address: hosts on other machines could command the device (allowed "
+                         "with --allow-remote and a token: --token-file FILE or $" +
+                         std::string(transport::kTokenEnvironmentVariable) + ")");
+    }
+    if (remote && access.token.empty()) {
+        throw UsageError("--allow-remote needs a token every host must present (--token-file FILE or $" +
+                         std::string(transport::kTokenEnvironmentVariable) + ")");
+    }
 
     const auto started = std::chrono::steady_clock::now();
     peripheral::Peripheral device(options);
-    device.serve(transport::listen(wanted));
+    device.serve(transport::listen(wanted, access));
+    if (remote) {
+        err << "feel device: warning: listening on " << wanted.to_string()
+            << ", beyond loopback: any machine that reaches it and knows the token can command the device"
+            << std::endl;
+    }
     const transport::Address address = device.address();
     const runtime::Capabilities& caps = device.capabilities();
     out << "feel device: " << caps.device << " (" << caps.class_name << ") listening on " << address.to_string()
@@ -143,7 +205,9 @@ int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& /*err*/,
     std::snprintf(uptime, sizeof uptime, "%.1f", seconds);
     out << "feel device: stopped after " << uptime << " s: " << s.hosts_served << " host"
         << (s.hosts_served == 1 ? "" : "s") << " served, " << s.reports_received << " reports received ("
-        << s.reports_refused << " refused), " << s.frames_sent << " frames sent; loop " << s.runtime.pipeline.ticks
+        << s.reports_refused << " refused), " << s.frames_sent << " frames sent (" << s.reports_dropped
+        << " state reports dropped for slow hosts), " << s.hosts_silent << " silent and " << s.hosts_dropped
+        << " misbehaving hosts detached; loop " << s.runtime.pipeline.ticks
         << " ticks, " << s.runtime.loop.overruns << " overruns" << std::endl;
     return kExitOk;
 }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "descriptor_check.hpp"
 #include "device_core.hpp"
@@ -22,6 +23,9 @@ using transport::FrameKind;
 namespace {
 
 constexpr Range kTimeoutMs{1, 60000};
+constexpr Range kBusyWaitMs{0, 60000};
+// How often open() asks a busy device again.
+constexpr auto kBusyRetry = std::chrono::milliseconds(10);
 
 Status no_device(const char* what) {
     return Status::failure(ErrorKind::invalid_handle,
@@ -31,6 +35,10 @@ Status no_device(const char* what) {
 Status check_options(const OpenOptions& o) {
     if (!kTimeoutMs.contains(o.timeout.count())) {
         const Error e = Error::out_of_range("timeout", o.timeout.count(), kTimeoutMs);
+        return Status::failure(ErrorKind::invalid_parameter, "open: " + e.message() + " ms", e);
+    }
+    if (!kBusyWaitMs.contains(o.busy_wait.count())) {
+        const Error e = Error::out_of_range("busy_wait", o.busy_wait.count(), kBusyWaitMs);
         return Status::failure(ErrorKind::invalid_parameter, "open: " + e.message() + " ms", e);
     }
     if (o.report_rate_hz != 0 && !Range{runtime::kMinReportRateHz, runtime::kMaxReportRateHz}.contains(o.report_rate_hz)) {
@@ -103,7 +111,12 @@ Result<Device> Device::open(std::string_view address, const OpenOptions& options
             return Status::failure(ErrorKind::disconnected,
                                    "open " + name + ": the in-process device could not start: " + e.what());
         }
-    } else {
+        return attach(std::move(connection), name, options);
+    }
+    // A device busy with another host is asked again until busy_wait has passed: the last
+    // host may be in its teardown, or silent and about to be detached by the watchdog.
+    const auto give_up = std::chrono::steady_clock::now() + options.busy_wait;
+    for (;;) {
         try {
             connection = transport::connect(parsed, options.timeout);
         } catch (const transport::TransportError& e) {
@@ -115,8 +128,12 @@ Result<Device> Device::open(std::string_view address, const OpenOptions& options
         } catch (const std::exception& e) {  // the system refused the socket itself
             return Status::failure(ErrorKind::disconnected, "open " + name + ": " + e.what());
         }
+        Result<Device> device = attach(std::move(connection), name, options);
+        const bool busy = !device && device.status().kind == ErrorKind::disconnected &&
+                          device.status().message.find(DeviceCore::kBusyReason) != std::string::npos;
+        if (!busy || std::chrono::steady_clock::now() + kBusyRetry > give_up) return device;
+        std::this_thread::sleep_for(kBusyRetry);
     }
-    return attach(std::move(connection), name, options);
 }
 
 Result<Device> Device::attach(std::unique_ptr<transport::Connection> connection, std::string name,

@@ -351,7 +351,7 @@ void DeviceCore::mark_disconnected(const std::string& reason) {
     std::lock_guard lock(mu);
     if (!connected) return;
     connected = false;
-    disconnect_reason = busy ? "the device at " + address + " is in use by another host" : reason;
+    disconnect_reason = busy ? "the device at " + address + " " + std::string(kBusyReason) : reason;
     cv.notify_all();
 }
 

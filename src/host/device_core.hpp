@@ -104,6 +104,9 @@ struct DeviceCore {
     // --- state --------------------------------------------------------------------------
 
     [[nodiscard]] bool is_connected() const;
+    // What a disconnection's reason says when the device refused this host as busy (open()
+    // retries those for OpenOptions::busy_wait).
+    static constexpr std::string_view kBusyReason = "is in use by another host";
     // disconnected, naming why (the peer closed, busy, close()).
     [[nodiscard]] Status disconnected_status(const std::string& what) const;
     [[nodiscard]] std::chrono::milliseconds timeout() const noexcept { return options.timeout; }

@@ -146,7 +146,7 @@ struct DeviceSession::Impl {
     std::deque<Frame> inbox;
     std::deque<Pending> pending;
     std::size_t pending_capacity;
-    std::deque<Internal> internal;  // at most four: reset, report rate, IDF, pool query
+    std::deque<Internal> internal;  // at most five: release, reset, report rate, IDF, pool query
     int32_t waiting = 0;            // pending entries whose ack has not arrived
     bool fence_in_flight = false;
     uint32_t next_sequence = 1;
@@ -570,6 +570,13 @@ struct DeviceSession::Impl {
             case FrameKind::descriptor_reply:
             case FrameKind::busy:
                 break;
+            case FrameKind::hello:
+                // The stream transports take a host's hello (its token) themselves; one
+                // that reaches the session came where no secret is asked for.
+                refuse_frame(Frame{}, Refusal::of(ErrorCode::invalid_parameter, "frame.kind",
+                                                  "a hello frame is for the device's connection, which has no "
+                                                  "token to check here"));
+                return Step::done;
         }
         refuse_frame(Frame{}, Refusal::of(ErrorCode::invalid_parameter, "frame.kind",
                                           std::string("a ") + std::string(transport::frame_kind_name(f.kind)) +
@@ -1020,6 +1027,8 @@ struct DeviceSession::Impl {
         const bool pool_query = pool_query_queued;
         internal.clear();
         pool_query_queued = false;
+        // Fade the forces out (the ack comes when the fade has ended), then free everything.
+        queue_internal(runtime::make_release_host(0), OnAck::nothing, true);
         queue_internal(runtime::make_device_control(0, runtime::DeviceControl::reset), OnAck::reset, true);
         queue_internal(runtime::make_value_command(runtime::CommandKind::set_report_rate, 0, config.report_rate_hz),
                        OnAck::nothing, false);

@@ -9,11 +9,22 @@
 // the session and waits (at most kResetWaitS) for the runtime to confirm, then ends; the
 // next host gets a new service thread. An accept thread, when serving a listener, hands
 // each connection to attach(), which answers `busy` while a host is attached.
+//
+// No host holds the device (docs/peripheral.md, "Guarantees to hosts"):
+//   * a host that sends no frame for the runtime's watchdog time is detached (the runtime's
+//     watchdog has faded its forces out by then; the reset frees its effects);
+//   * the transport closes a connection whose partial frame stays partial, or whose host
+//     does not read (transport.hpp); the service thread never blocks on a send;
+//   * state reports (JoystickInput, DeviceStatus), which the next round supersedes, are
+//     sent with send_or_drop and counted when dropped; answers are never dropped;
+//   * a connection arriving while the last host's teardown runs waits for it (at most
+//     kAdmitWait) instead of being told `busy`, so hosts back to back are all served.
 #include "feel/peripheral/peripheral.hpp"
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -38,6 +49,17 @@ constexpr double kMotionSpanS = 60;
 constexpr auto kResetWait = 2s;
 // The accept loop's poll period (stop() also closes the listener, which wakes it at once).
 constexpr auto kAcceptPoll = 100ms;
+// How long a new connection waits for the attached host's teardown before it gets `busy`:
+// a host leaves, the service thread sees it within its 1 ms read, and the reset takes a few
+// ticks; the next host should not be refused for arriving a few ms after the last left.
+constexpr auto kAdmitWait = 250ms;
+
+// Frames a host can do without: a state report is superseded by the next round's.
+bool droppable(const transport::Frame& frame) {
+    if (frame.kind != transport::FrameKind::input_report || frame.payload.empty()) return false;
+    const auto id = static_cast<protocol::ReportId>(frame.payload[0]);
+    return id == protocol::ReportId::joystick_input || id == protocol::ReportId::device_status;
+}
 
 const sim::DeviceProfile& profile_named(const std::string& name) {
     if (const sim::DeviceProfile* p = sim::find_device_profile(name)) return *p;
@@ -163,6 +185,10 @@ struct Peripheral::Impl {
     std::atomic<uint64_t> reports_received{0};
     std::atomic<uint64_t> reports_refused{0};
     std::atomic<uint64_t> frames_sent{0};
+    std::atomic<uint64_t> reports_dropped{0};
+    std::atomic<uint64_t> hosts_silent{0};
+    std::atomic<uint64_t> hosts_dropped{0};
+    std::condition_variable detached;  // a service thread finished its teardown (with mutex)
 
     void publish(const SessionCounters& c) {
         reports_received.store(c.reports_decoded, std::memory_order_relaxed);
@@ -171,8 +197,11 @@ struct Peripheral::Impl {
     }
 
     void attach(std::unique_ptr<transport::Connection> host) {
-        std::lock_guard lock(mutex);
+        std::unique_lock lock(mutex);
+        // A host arriving while the last one's teardown runs waits for it to end.
+        detached.wait_for(lock, kAdmitWait, [&] { return stopping.load() || !attached.load(); });
         if (stopping.load() || attached.load()) {
+            lock.unlock();
             refuse_busy(*host);
             return;
         }
@@ -187,6 +216,10 @@ struct Peripheral::Impl {
         std::vector<transport::Frame> out;
         session->pump(out);  // what piled up while no host listened is not this host's
         out.clear();
+        const int64_t timeout_us = rt->config().safety.host_timeout_us;
+        const bool watchdog = timeout_us != kInfiniteUs;
+        const auto silence_limit = std::chrono::microseconds(watchdog ? timeout_us : 0);
+        Clock::time_point heard = Clock::now();
         try {
             while (!stopping.load(std::memory_order_relaxed)) {
                 const bool busy = session->in_flight() > 0;
@@ -195,18 +228,33 @@ struct Peripheral::Impl {
                     if (auto frame = host->receive(busy ? 0ms : 1ms)) {
                         session->offer(std::move(*frame));
                         received = true;
+                        heard = Clock::now();
                     }
                 }
+                if (watchdog && !received && session->accepting() && Clock::now() - heard > silence_limit) {
+                    hosts_silent.fetch_add(1, std::memory_order_relaxed);
+                    break;  // silent past the watchdog: the host is lost, detach it
+                }
                 session->pump(out);
-                for (const transport::Frame& f : out) host->send(f);
+                for (const transport::Frame& f : out) {
+                    if (droppable(f)) {
+                        if (!host->send_or_drop(f)) reports_dropped.fetch_add(1, std::memory_order_relaxed);
+                    } else {
+                        host->send(f);
+                    }
+                }
                 out.clear();
                 publish(session->counters());
                 // Waiting on the runtime with nothing read (or no room to read): a short
                 // nap, not a spin.
                 if (!received && (busy || !session->accepting())) std::this_thread::sleep_for(50us);
             }
-        } catch (const transport::TransportError&) {
-            // Disconnected, or a bad frame (the transport closed it): the host is gone.
+        } catch (const transport::TransportError& e) {
+            // Disconnected, or a bad frame, a stalled partial frame or a host that does not
+            // read (the transport closed it): the host is gone.
+            if (e.kind() != transport::TransportError::Kind::disconnected ||
+                std::string_view(e.what()).find("does not read") != std::string_view::npos)
+                hosts_dropped.fetch_add(1, std::memory_order_relaxed);
         } catch (const std::exception&) {
             // A frame the session could not answer (an encode bug): drop this host rather
             // than the device; the reset below still runs.
@@ -225,7 +273,11 @@ struct Peripheral::Impl {
             std::this_thread::sleep_for(200us);
         }
         publish(session->counters());
-        attached.store(false);
+        {
+            std::lock_guard lock(mutex);
+            attached.store(false);
+        }
+        detached.notify_all();
     }
 
     void serve(std::unique_ptr<transport::Listener> l) {
@@ -249,12 +301,13 @@ struct Peripheral::Impl {
     }
 
     void stop() {
-        stopping.store(true);
         {
             std::lock_guard lock(mutex);
+            stopping.store(true);
             if (listener) listener->close();
             if (current != nullptr) current->close();
         }
+        detached.notify_all();
         if (acceptor.joinable()) acceptor.join();
         if (service.joinable()) service.join();
         {
@@ -295,6 +348,9 @@ PeripheralStats Peripheral::stats() const noexcept {
     s.reports_received = impl_->reports_received.load(std::memory_order_relaxed);
     s.reports_refused = impl_->reports_refused.load(std::memory_order_relaxed);
     s.frames_sent = impl_->frames_sent.load(std::memory_order_relaxed);
+    s.reports_dropped = impl_->reports_dropped.load(std::memory_order_relaxed);
+    s.hosts_silent = impl_->hosts_silent.load(std::memory_order_relaxed);
+    s.hosts_dropped = impl_->hosts_dropped.load(std::memory_order_relaxed);
     s.host_attached = impl_->attached.load();
     return s;
 }

@@ -38,6 +38,17 @@ int64_t RuntimePipeline::report_room() const noexcept {
 }
 
 void RuntimePipeline::drain_commands(int64_t t_us) noexcept {
+    // A release holds every later command, and its ack, until the host's fade has ended.
+    if (releasing_) {
+        if (!safety_.state().host_faded || report_room() < 1) return;
+        report_ = Report{};
+        report_.kind = ReportKind::ack;
+        report_.ack.sequence = release_sequence_;
+        report_.ack.command = CommandKind::release_host;
+        report_.ack.t_us = t_us;
+        (void)reports_.try_push(report_);
+        releasing_ = false;
+    }
     // Anything waiting in the queue, applied now or not, shows the host is alive.
     if (commands_.size_approx() > 0) host_heard_us_ = t_us;
     for (int32_t i = 0; i < config_.max_commands_per_tick; ++i) {
@@ -46,6 +57,16 @@ void RuntimePipeline::drain_commands(int64_t t_us) noexcept {
             return;
         }
         if (!commands_.try_pop(command_)) return;
+        // A release with force on the motors fades it out first; with none there is
+        // nothing to fade, and it is acked at once like any command.
+        const bool at_rest = std::all_of(std::begin(applied_), std::end(applied_), [](float f) { return f == 0.0f; });
+        if (command_.kind == CommandKind::release_host && !at_rest) {
+            safety_.release_host(t_us);
+            releasing_ = true;
+            release_sequence_ = command_.sequence;
+            bump(counters_.commands);
+            return;
+        }
         report_ = Report{};
         report_.kind = ReportKind::ack;
         CommandAck& ack = report_.ack;
@@ -63,6 +84,7 @@ void RuntimePipeline::drain_commands(int64_t t_us) noexcept {
 Error RuntimePipeline::apply(const Command& c, CommandAck& ack) noexcept {
     switch (c.kind) {
         case CommandKind::keep_alive:
+        case CommandKind::release_host:  // with the motors at rest: nothing to fade
             return {};
         case CommandKind::create:
             return apply_create(c, ack);

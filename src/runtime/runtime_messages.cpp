@@ -6,6 +6,7 @@ namespace feel::runtime {
 const char* command_kind_name(CommandKind kind) noexcept {
     switch (kind) {
         case CommandKind::keep_alive: return "keep_alive";
+        case CommandKind::release_host: return "release_host";
         case CommandKind::create: return "create";
         case CommandKind::update: return "update";
         case CommandKind::start: return "start";

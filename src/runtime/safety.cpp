@@ -79,8 +79,10 @@
 // stop_zone of the end of the travel, and for stop_holdoff_us after leaving it, an axis's
 // evidence is cleared and nothing is judged on it.
 //
-// Watchdog. Lost when t − host_heard_us > host_timeout_us: exactly at the timeout the host
-// still counts as present. The event fires once per loss.
+// Watchdog. Lost when t − host_heard_us > host_timeout_us (exactly at the timeout the host
+// still counts as present), or released until heard again. A loss fades the forces from
+// where they are to 0 over host_fade_out_us, linearly like every fade here, anchored at the
+// tick of the loss; the event (stop all) fires once per loss, on the tick the fade ends.
 #include "feel/runtime/safety.hpp"
 
 #include <algorithm>
@@ -195,6 +197,9 @@ Error check_safety_config(const SafetyConfig& c) noexcept {
         return Error::out_of_range("host_timeout_us (or -1: no watchdog)", c.host_timeout_us,
                                    kTimeoutUs);
     }
+    if (!range::kDelayUs.contains(c.host_fade_out_us)) {
+        return Error::out_of_range("host_fade_out_us", c.host_fade_out_us, range::kDelayUs);
+    }
     return check_hands_off(c.hands_off, c.axis_count);
 }
 
@@ -268,6 +273,16 @@ void SafetyMonitor::reset() noexcept {
     phase_ = Phase::off;
     anchor_us_ = 0;
     anchor_level_ = 0;
+    host_level_ = 1;
+    host_anchor_level_ = 1;
+    host_anchor_us_ = 0;
+    released_ = false;
+    released_at_us_ = 0;
+}
+
+void SafetyMonitor::release_host(int64_t t_us) noexcept {
+    released_ = true;
+    released_at_us_ = t_us;
 }
 
 void SafetyMonitor::set_actuators_enabled(bool enabled) noexcept {
@@ -299,16 +314,31 @@ double SafetyMonitor::free_acceleration(int axis, double force, double v) const 
 
 void SafetyMonitor::update_watchdog(const SafetyInput& in) noexcept {
     state_.host_lost_event = false;
-    if (config_.host_timeout_us == kInfiniteUs) {
+    if (released_ && in.host_heard_us > released_at_us_) released_ = false;
+    const bool timed_out =
+        config_.host_timeout_us != kInfiniteUs && in.t_us - in.host_heard_us > config_.host_timeout_us;
+    const bool lost = released_ || timed_out;
+    if (!lost) {
+        host_level_ = 1;
+        state_.host_faded = false;
         state_.host_lost = false;
         return;
     }
-    const bool lost = in.t_us - in.host_heard_us > config_.host_timeout_us;
-    if (lost && !state_.host_lost) {
-        state_.host_lost_event = true;
+    if (!state_.host_lost) {
         ++state_.host_losses;
+        host_anchor_us_ = in.t_us;
+        host_anchor_level_ = host_level_;
+        state_.host_faded = false;
     }
-    state_.host_lost = lost;
+    state_.host_lost = true;
+    const double elapsed = static_cast<double>(std::max<int64_t>(0, in.t_us - host_anchor_us_));
+    host_level_ = config_.host_fade_out_us == 0
+                      ? 0.0
+                      : std::max(0.0, host_anchor_level_ - elapsed / static_cast<double>(config_.host_fade_out_us));
+    if (host_level_ == 0 && !state_.host_faded) {
+        state_.host_faded = true;
+        state_.host_lost_event = true;
+    }
 }
 
 void SafetyMonitor::update_detector(const SafetyInput& in, double dt_s) noexcept {
@@ -475,7 +505,7 @@ const SafetyState& SafetyMonitor::process(const SafetyInput& in, float force[kMa
     update_detector(in, dt_s);
     update_fade(in);
     state_.handle_held = in.handle_held;
-    state_.output_scale = state_.host_lost ? 0.0f : state_.fade_level;
+    state_.output_scale = static_cast<float>(static_cast<double>(state_.fade_level) * host_level_);
     state_.t_us = in.t_us;
     have_last_tick_ = true;
     was_held_ = in.handle_held;

@@ -123,7 +123,20 @@ Address parse_address(std::string_view text, bool allow_port_zero) {
         address.path = std::string(rest);
         return address;
     }
-    if (scheme == "tcp") return parse_tcp(text, rest, allow_port_zero);
+    if (scheme == "tcp") {
+        // tcp:HOST:PORT?token=TOKEN: the one query a tcp address takes.
+        const std::size_t query = rest.find('?');
+        if (query == std::string_view::npos) return parse_tcp(text, rest, allow_port_zero);
+        const std::string_view parameter = rest.substr(query + 1);
+        constexpr std::string_view kTokenKey = "token=";
+        if (parameter.substr(0, kTokenKey.size()) != kTokenKey)
+            refuse(text, "the only query a tcp address takes is ?token=TOKEN");
+        const std::string_view token = parameter.substr(kTokenKey.size());
+        if (const std::string problem = check_token(token); !problem.empty()) refuse(text, "the token " + problem);
+        Address address = parse_tcp(text, rest.substr(0, query), allow_port_zero);
+        address.token = std::string(token);
+        return address;
+    }
     refuse(text, "the scheme \"" + std::string(scheme) + "\" is unknown");
 }
 
@@ -156,6 +169,7 @@ std::string_view frame_kind_name(FrameKind kind) noexcept {
         case FrameKind::get_descriptor: return "get_descriptor";
         case FrameKind::descriptor_reply: return "descriptor_reply";
         case FrameKind::busy: return "busy";
+        case FrameKind::hello: return "hello";
     }
     return "unknown";
 }

@@ -100,7 +100,14 @@ private:
 // Sets or clears O_NONBLOCK. Throws std::system_error.
 void set_blocking(int fd, bool blocking);
 
-// A Connection over a connected stream socket (Unix or TCP). `peer` is what peer() says.
-[[nodiscard]] std::unique_ptr<Connection> make_stream_connection(UniqueFd socket, std::string peer);
+// Which end of a stream a connection is (stream_connection.cpp): the host's (made by
+// connect(): sends wait while the socket is full) or the device's (made by a Listener:
+// bounded buffers both ways, partial-frame and stall timeouts, the token check).
+enum class StreamRole : uint8_t { host, device };
+
+// A Connection over a connected stream socket (Unix or TCP). `peer` is what peer() says;
+// `token` (device's end only) the secret the peer's first frame must carry (empty: none).
+[[nodiscard]] std::unique_ptr<Connection> make_stream_connection(UniqueFd socket, std::string peer,
+                                                                 StreamRole role, std::string token = {});
 
 }  // namespace feel::transport::detail

@@ -4,6 +4,8 @@
 // io_context::run_until around an async_connect, and what is left when time runs out is
 // cancelled and reported as a timeout. "Nothing listens" (ECONNREFUSED, a missing socket
 // file) is refused, not a timeout, so that a host can tell a dead address from a slow one.
+// With a token (the address's ?token=, else $FEEL_DEVICE_TOKEN) the first frame sent is a
+// hello carrying it: a device that asks for none ignores it.
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
@@ -12,6 +14,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/local/stream_protocol.hpp>
+#include <cstdlib>
 #include <functional>
 #include <optional>
 
@@ -45,6 +48,24 @@ void run_until(asio::io_context& io, std::chrono::milliseconds timeout, const st
     }
 }
 
+// The token this host presents: the address's, else the environment's.
+std::string token_for(const Address& address) {
+    if (!address.token.empty()) return address.token;
+    const char* from_environment = std::getenv(kTokenEnvironmentVariable);
+    return from_environment != nullptr ? std::string(from_environment) : std::string();
+}
+
+std::unique_ptr<Connection> host_end(UniqueFd socket, const Address& address) {
+    auto connection = detail::make_stream_connection(std::move(socket), address.to_string(), detail::StreamRole::host);
+    const std::string token = token_for(address);
+    if (!token.empty()) {
+        if (const std::string problem = check_token(token); !problem.empty())
+            throw std::invalid_argument("cannot connect to " + address.to_string() + ": the token " + problem);
+        connection->send(Frame{FrameKind::hello, std::vector<uint8_t>(token.begin(), token.end())});
+    }
+    return connection;
+}
+
 std::unique_ptr<Connection> connect_unix(const Address& address, std::chrono::milliseconds timeout) {
     asio::io_context io;
     asio::local::stream_protocol::socket socket(io);
@@ -53,7 +74,7 @@ std::unique_ptr<Connection> connect_unix(const Address& address, std::chrono::mi
                          [&](const boost::system::error_code& error) { result = error; });
     run_until(io, timeout, result, [&] { socket.close(); });
     if (!result || *result) fail(address, result ? *result : asio::error::timed_out);
-    return detail::make_stream_connection(UniqueFd(socket.release()), address.to_string());
+    return host_end(UniqueFd(socket.release()), address);
 }
 
 std::unique_ptr<Connection> connect_tcp(const Address& address, std::chrono::milliseconds timeout) {
@@ -80,7 +101,7 @@ std::unique_ptr<Connection> connect_tcp(const Address& address, std::chrono::mil
     run_until(io, timeout, result, [&] { socket.close(); });
     if (!result || *result) fail(address, result ? *result : asio::error::timed_out);
     socket.set_option(asio::ip::tcp::no_delay(true), error);
-    return detail::make_stream_connection(UniqueFd(socket.release()), address.to_string());
+    return host_end(UniqueFd(socket.release()), address);
 }
 
 }  // namespace

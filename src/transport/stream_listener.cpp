@@ -6,6 +6,12 @@
 // a stale socket and is taken over. Anything at the path that is not a socket is left alone.
 // Closing the listener removes its file, but only if it is still the file this listener
 // bound (a successor may already have taken the path over).
+//
+// Who may connect (ListenOptions). A socket file gets mode 0600 (0660 and the group asked
+// for) with chmod/chown between bind() and listen(): whatever the umask made of it, no one
+// can connect before listen(), so there is no window in which the looser mode counts. A TCP
+// address beyond loopback is refused unless allow_remote is set and a token is given; every
+// accepted connection then checks the token (stream_connection.cpp).
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
@@ -33,6 +39,12 @@ TransportError refused(const Address& address, const std::string& why) {
     return TransportError(TransportError::Kind::refused, "cannot listen at " + address.to_string() + ": " + why);
 }
 
+// The kernel's send buffer of a device's connection, bytes (the kernel doubles it for its
+// bookkeeping). Fixed, not autotuned (TCP grows it to megabytes), so that a host that does
+// not read fills it, and is found out, within a fraction of a second; 64 KiB is still some
+// 100 ms of state reports at 1 kHz for a host that reads but hiccups.
+constexpr int kDeviceSendBufferBytes = 64 * 1024;
+
 void set_no_delay(int fd) {
     const int on = 1;
     ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
@@ -42,7 +54,8 @@ void set_no_delay(int fd) {
 // and close() waking a blocked accept().
 class SocketListener : public Listener {
 public:
-    SocketListener(UniqueFd socket, Address address) : socket_(std::move(socket)), address_(std::move(address)) {
+    SocketListener(UniqueFd socket, Address address, std::string token)
+        : socket_(std::move(socket)), address_(std::move(address)), token_(std::move(token)) {
         detail::set_blocking(socket_.get(), false);  // accept() after poll() must never block
     }
 
@@ -75,8 +88,10 @@ public:
                                      "accepting at " + address_.to_string() + " failed: " + detail::errno_text(errno));
             }
             UniqueFd connection(fd);
+            ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kDeviceSendBufferBytes, sizeof kDeviceSendBufferBytes);
             configure_accepted(fd);
-            return detail::make_stream_connection(std::move(connection), describe_peer(fd, peer_address));
+            return detail::make_stream_connection(std::move(connection), describe_peer(fd, peer_address),
+                                                  detail::StreamRole::device, token_);
         }
     }
 
@@ -100,14 +115,15 @@ protected:
 
     UniqueFd socket_;
     Address address_;
+    std::string token_;  // what each host's hello must carry (empty: nothing asked)
     detail::WakeSignal wake_;
     std::atomic<bool> closed_{false};
 };
 
 class UnixListener final : public SocketListener {
 public:
-    UnixListener(UniqueFd socket, Address address, ino_t inode, dev_t device)
-        : SocketListener(std::move(socket), std::move(address)), inode_(inode), device_(device) {}
+    UnixListener(UniqueFd socket, Address address, std::string token, ino_t inode, dev_t device)
+        : SocketListener(std::move(socket), std::move(address), std::move(token)), inode_(inode), device_(device) {}
     ~UnixListener() override { close(); }
 
     UnixListener(const UnixListener&) = delete;
@@ -156,7 +172,26 @@ bool unix_socket_answers(const std::string& path) {
     return !error;
 }
 
-std::unique_ptr<Listener> listen_unix(const Address& address) {
+// The socket file's owner group and mode, set before anyone can connect.
+void restrict_socket_file(const Address& address, const ListenOptions& options) {
+    const std::string& path = address.path;
+    if (options.group_id) {
+        if (::chown(path.c_str(), static_cast<uid_t>(-1), static_cast<gid_t>(*options.group_id)) != 0) {
+            const int error = errno;
+            ::unlink(path.c_str());
+            throw refused(address, "cannot give the socket to group " + std::to_string(*options.group_id) + " (" +
+                                       detail::errno_text(error) + ")");
+        }
+    }
+    const mode_t mode = options.group_id ? 0660 : 0600;
+    if (::chmod(path.c_str(), mode) != 0) {
+        const int error = errno;
+        ::unlink(path.c_str());
+        throw refused(address, "cannot set the socket's mode (" + detail::errno_text(error) + ")");
+    }
+}
+
+std::unique_ptr<Listener> listen_unix(const Address& address, const ListenOptions& options) {
     const std::string& path = address.path;
     constexpr std::size_t kMaxPath = sizeof(sockaddr_un::sun_path) - 1;
     if (path.size() > kMaxPath) {
@@ -179,6 +214,7 @@ std::unique_ptr<Listener> listen_unix(const Address& address) {
             throw refused(address, "the directory does not exist");
         throw refused(address, error.message());
     }
+    restrict_socket_file(address, options);
     acceptor.listen(asio::socket_base::max_listen_connections, error);
     if (error) {
         ::unlink(path.c_str());
@@ -186,10 +222,22 @@ std::unique_ptr<Listener> listen_unix(const Address& address) {
     }
     struct stat bound {};
     ::lstat(path.c_str(), &bound);
-    return std::make_unique<UnixListener>(UniqueFd(acceptor.release()), address, bound.st_ino, bound.st_dev);
+    return std::make_unique<UnixListener>(UniqueFd(acceptor.release()), address, options.token, bound.st_ino,
+                                          bound.st_dev);
 }
 
-std::unique_ptr<Listener> listen_tcp(const Address& address) {
+std::unique_ptr<Listener> listen_tcp(const Address& address, const ListenOptions& options) {
+    if (!is_loopback_host(address.host)) {
+        if (!options.allow_remote) {
+            throw refused(address, "\"" + address.host +
+                                       "\" is not a loopback address, so hosts on other machines could command "
+                                       "the device; allow it explicitly (--allow-remote) and give a token");
+        }
+        if (options.token.empty()) {
+            throw refused(address, "a device listening beyond loopback needs a token every host must present "
+                                   "(--token-file FILE or $" + std::string(kTokenEnvironmentVariable) + ")");
+        }
+    }
     asio::io_context io;
     asio::ip::tcp::resolver resolver(io);
     boost::system::error_code error;
@@ -211,19 +259,23 @@ std::unique_ptr<Listener> listen_tcp(const Address& address) {
         }
         Address bound = address;
         bound.port = acceptor.local_endpoint().port();
-        return std::make_unique<TcpListener>(UniqueFd(acceptor.release()), std::move(bound));
+        return std::make_unique<TcpListener>(UniqueFd(acceptor.release()), std::move(bound), options.token);
     }
     throw refused(address, last_error);
 }
 
 }  // namespace
 
-std::unique_ptr<Listener> listen(const Address& address) {
+std::unique_ptr<Listener> listen(const Address& address, const ListenOptions& options) {
+    if (!options.token.empty()) {
+        if (const std::string problem = check_token(options.token); !problem.empty())
+            throw std::invalid_argument("cannot listen at " + address.to_string() + ": the token " + problem);
+    }
     switch (address.kind) {
         case Address::Kind::unix_socket:
-            return listen_unix(address);
+            return listen_unix(address, options);
         case Address::Kind::tcp:
-            return listen_tcp(address);
+            return listen_tcp(address, options);
         case Address::Kind::sim:
             break;
     }

@@ -431,13 +431,54 @@ TEST(DeviceLimits, HostGoneResetsTheDevice) {
     rig.offer(output(operation(rig.next_sequence(), b, EffectOperation::stop)));
     const std::size_t answered = rig.statuses.size();
     rig.session().host_gone();
-    rig.run(5);
+    rig.run(60);  // the sine fades out over host_fade_out_us (50 ms) before the reset
     EXPECT_EQ(rig.statuses.size(), answered);
     EXPECT_TRUE(rig.session().idle());
     EXPECT_EQ(rig.session().allocated_blocks(), 0);
     EXPECT_EQ(rig.pipeline().resident_effects(), 0);
     EXPECT_EQ(rig.pipeline().engine().gain(), kFullScale);
     EXPECT_EQ(rig.create(EffectType::sine), 1);
+}
+
+TEST(DeviceLimits, HostGoneFadesTheForcesOutThenFreesEverything) {
+    SessionRig rig;
+    EffectParams push;
+    push.type = EffectType::constant;
+    push.duration_us = kInfiniteUs;
+    push.axis_count = 1;
+    push.axes[0] = Axis::x;
+    push.constant.magnitude = 6000;
+    const uint16_t b = download(rig, push);
+    rig.ok(operation(rig.next_sequence(), b, EffectOperation::start, 255));
+    rig.run(3);
+    ASSERT_EQ(rig.pipeline().motor_force()[0], 6000.0f);
+    const int64_t fade_us = rig.pipeline().config().safety.host_fade_out_us;
+    ASSERT_EQ(fade_us, 50'000);
+    const int64_t tick_us = 1'000'000 / rig.pipeline().config().loop_rate_hz;
+    rig.session().host_gone();
+    // The release reaches the loop at the next tick; from there the force falls linearly
+    // to 0 over host_fade_out_us (docs/runtime.md, "Host-link watchdog"), with no step
+    // larger than one tick's share of it, and only then is the device reset.
+    rig.run(1);
+    float previous = rig.pipeline().motor_force()[0];
+    EXPECT_EQ(previous, 6000.0f);
+    const int64_t ticks = fade_us / tick_us;
+    for (int64_t k = 1; k <= ticks; ++k) {
+        rig.run(1);
+        const float f = rig.pipeline().motor_force()[0];
+        const double expected = 6000.0 * std::max(0.0, 1.0 - static_cast<double>(k * tick_us) / static_cast<double>(fade_us));
+        ASSERT_NEAR(f, expected, 1.0) << "tick " << k << " of the fade";
+        ASSERT_LE(previous - f, 6000.0f * static_cast<float>(tick_us) / static_cast<float>(fade_us) + 1.0f);
+        previous = f;
+        if (k < ticks) {
+            ASSERT_EQ(rig.pipeline().resident_effects(), 1) << "freed during the fade, at tick " << k;
+        }
+    }
+    EXPECT_EQ(previous, 0.0f);
+    rig.run(5);
+    EXPECT_TRUE(rig.session().idle());
+    EXPECT_EQ(rig.pipeline().resident_effects(), 0);
+    EXPECT_EQ(rig.session().allocated_blocks(), 0);
 }
 
 }  // namespace

@@ -161,6 +161,7 @@ TEST(ForceStreamPipeline, StopAllAndResetClearTheStream) {
 TEST(ForceStreamPipeline, LosingTheHostEndsTheStream) {
     RuntimeConfig config = quiet_config();
     config.safety.host_timeout_us = 100'000;
+    config.safety.host_fade_out_us = 0;  // cut at once
     Rig rig(config);
     const CommandAck last = rig.ok(stream(rig, 6000, -6000));
     rig.run(40);

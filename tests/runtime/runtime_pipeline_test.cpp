@@ -193,7 +193,7 @@ TEST(RuntimePipeline, RefusedCommandsNameTheFieldAndRange) {
     Command unknown = make_keep_alive(9001);
     unknown.kind = static_cast<CommandKind>(99);
     ASSERT_TRUE(host.send(unknown));
-    EXPECT_EQ(rig.ack(9001).error.message(), "command.kind = 99 is out of range (allowed 0..16)");
+    EXPECT_EQ(rig.ack(9001).error.message(), "command.kind = 99 is out of range (allowed 0..17)");
 
     // Nothing refused changed anything: the effect is still there, the gain full.
     EXPECT_EQ(rig.ok(host.status(id)).status.state, EffectState::stopped);
@@ -498,6 +498,7 @@ TEST(RuntimePipeline, GrabLetGoGrabShowsInHostReports) {
 TEST(RuntimePipeline, ASilentHostStopsEveryEffect) {
     RuntimeConfig config = quiet_config();
     config.safety.host_timeout_us = 100'000;
+    config.safety.host_fade_out_us = 0;  // cut at once (the fade: ReleasingTheHost...)
     config.report_rate_hz = 1000;
     Rig rig(config);
     HostLink& host = rig.host();
@@ -519,6 +520,57 @@ TEST(RuntimePipeline, ASilentHostStopsEveryEffect) {
     rig.run(1);
     EXPECT_FALSE(rig.states.back().safety.host_lost);
     EXPECT_EQ(rig.states.back().force[0], 0.0f);
+}
+
+TEST(RuntimePipeline, ReleasingTheHostFadesItsForcesOutThenAcksAndStopsEverything) {
+    RuntimeConfig config = quiet_config();
+    config.report_rate_hz = 1000;
+    Rig rig(config);
+    HostLink& host = rig.host();
+    const CommandAck created = rig.ok(host.create(constant_x(4000)));
+    rig.ok(host.start_effect(created.effect));
+    rig.run(5);
+    ASSERT_EQ(rig.pipeline().motor_force()[0], 4000.0f);
+    // The release, then a command behind it: neither is acked before the 50 ms fade ends.
+    constexpr uint32_t kReleaseSequence = 0x7000'0000;
+    ASSERT_TRUE(host.send(make_release_host(kReleaseSequence)));
+    const std::optional<uint32_t> after = host.keep_alive();
+    ASSERT_TRUE(after.has_value());
+    const int64_t fade_us = config.safety.host_fade_out_us;
+    const int64_t tick_us = 1'000'000 / config.loop_rate_hz;
+    rig.run(1);
+    const int64_t released_at = rig.t_us() - tick_us;  // the tick that took the release: H = 1
+    bool acked = false;
+    while (!acked) {
+        const int64_t t = rig.t_us() - tick_us;  // the tick just run
+        ASSERT_LE(t, released_at + fade_us + 2 * tick_us) << "no ack after the fade";
+        const double expected =
+            4000.0 * std::max(0.0, 1.0 - static_cast<double>(t - released_at) / static_cast<double>(fade_us));
+        ASSERT_NEAR(rig.pipeline().motor_force()[0], expected, 0.5) << t;
+        for (const CommandAck& a : rig.acks) {
+            if (a.sequence == kReleaseSequence) {
+                acked = true;
+            } else if (a.sequence == *after) {
+                ASSERT_TRUE(acked) << "a command behind the release was applied first";
+            }
+        }
+        if (!acked) rig.run(1);
+    }
+    EXPECT_GT(rig.t_us() - tick_us, released_at + fade_us - tick_us);
+    const CommandAck status = rig.ok(host.status(created.effect));
+    EXPECT_EQ(status.status.state, EffectState::stopped);
+    EXPECT_EQ(rig.pipeline().motor_force()[0], 0.0f);
+}
+
+TEST(RuntimePipeline, ReleasingTheHostWithNoForceIsAckedAtOnce) {
+    Rig rig(quiet_config());
+    rig.run(2);
+    ASSERT_TRUE(rig.host().send(make_release_host(77)));
+    rig.run(1);
+    ASSERT_EQ(rig.acks.size(), 1u);
+    EXPECT_EQ(rig.acks[0].sequence, 77u);
+    EXPECT_EQ(rig.acks[0].command, CommandKind::release_host);
+    EXPECT_FALSE(rig.pipeline().safety().state().host_lost);
 }
 
 // --- IDF ---------------------------------------------------------------------------------------

@@ -313,6 +313,7 @@ TEST(SafetyClosedLoop, ASilentHostStopsEveryEffect) {
     SafetyConfig config = safety_config_for(joystick);
     config.fade_in_us = 0;
     config.host_timeout_us = 100'000;
+    config.host_fade_out_us = 0;  // cut at once (the fade has its own tests)
     Rig rig(joystick, sim::Grip::firm, config);
     const EffectId push = rig.play(test::constant_on_x(3000, kInfiniteUs));
     const EffectId buzz = rig.play(test::periodic_on_x(EffectType::sine, 2000, 0, 50'000, 9000, kInfiniteUs));

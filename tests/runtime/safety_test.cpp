@@ -246,6 +246,7 @@ TEST(SafetyOutput, ForcesAreClampedToTheMotorLimitAndNonFiniteOnesCut) {
 TEST(SafetyWatchdog, TripsAfterTheTimeoutAndNotBefore) {
     SafetyConfig c = ramp_only(0);
     c.host_timeout_us = 100'000;
+    c.host_fade_out_us = 0;  // cut at once: the trip itself is what is looked at here
     SafetyMonitor m = configured(c);
     // The host talks every 10 ms until 500 ms, then falls silent.
     int64_t heard = 0;
@@ -276,6 +277,60 @@ TEST(SafetyWatchdog, TripsAfterTheTimeoutAndNotBefore) {
     tick(edge, 250'000, 1000, true, 100'002);
     EXPECT_TRUE(edge.state().host_lost_event);
     EXPECT_EQ(edge.state().host_losses, 2u);
+}
+
+TEST(SafetyWatchdog, ALostHostsForcesFadeOutLinearlyThenTheEventFires) {
+    SafetyConfig c = ramp_only(0);
+    c.host_timeout_us = 100'000;
+    c.host_fade_out_us = 40'000;
+    SafetyMonitor m = configured(c);
+    // Heard at 0; lost from 100 001 µs on: the factor falls from 1 to 0 over 40 ms from
+    // that tick, linearly, and the event fires on the tick it reaches 0.
+    int events = 0;
+    for (int64_t t = 0; t <= 200'000; t += 1000) {
+        const float out = tick(m, t, 5000, true, 0);
+        const int64_t lost_at = 101'000;  // the first 1 ms tick past the timeout
+        const double factor = t < lost_at ? 1.0 : std::max(0.0, 1.0 - static_cast<double>(t - lost_at) / 40'000.0);
+        ASSERT_NEAR(out, 5000.0 * factor, 0.01) << "t " << t;
+        ASSERT_EQ(m.state().host_lost, t >= lost_at) << "t " << t;
+        if (m.state().host_lost_event) {
+            ++events;
+            EXPECT_EQ(t, lost_at + 40'000);
+        }
+    }
+    EXPECT_EQ(events, 1);
+    EXPECT_EQ(m.state().host_losses, 1u);
+    EXPECT_TRUE(m.state().host_faded);
+    // Heard again: forces pass at once.
+    EXPECT_EQ(tick(m, 201'000, 5000, true, 201'000), 5000.0f);
+    EXPECT_FALSE(m.state().host_faded);
+}
+
+TEST(SafetyWatchdog, AReleasedHostFadesOutEvenWithoutAWatchdogUntilHeardAgain) {
+    SafetyConfig c = ramp_only(0);  // no watchdog
+    c.host_fade_out_us = 10'000;
+    SafetyMonitor m = configured(c);
+    EXPECT_EQ(tick(m, 0, 2000, true, 0), 2000.0f);
+    m.release_host(0);  // released at the tick of t = 0, heard at 0
+    EXPECT_NEAR(tick(m, 1000, 2000, true, 0), 2000.0f, 0.01);  // the fade's first tick: H = 1
+    EXPECT_TRUE(m.state().host_lost);
+    EXPECT_NEAR(tick(m, 6000, 2000, true, 0), 1000.0f, 0.01);  // halfway
+    EXPECT_EQ(tick(m, 11'000, 2000, true, 0), 0.0f);
+    EXPECT_TRUE(m.state().host_lost_event);
+    EXPECT_EQ(tick(m, 12'000, 2000, true, 0), 0.0f);
+    EXPECT_FALSE(m.state().host_lost_event) << "once per loss";
+    // Heard after the release: present again.
+    EXPECT_EQ(tick(m, 13'000, 2000, true, 13'000), 2000.0f);
+    EXPECT_FALSE(m.state().host_lost);
+}
+
+TEST(SafetyWatchdog, AFadeOutTimeOutOfRangeIsRefusedByName) {
+    SafetyConfig c = ramp_only(0);
+    c.host_fade_out_us = -5;
+    SafetyMonitor m;
+    const Error e = m.configure(c);
+    EXPECT_EQ(e.code, ErrorCode::invalid_parameter);
+    EXPECT_STREQ(e.field, "host_fade_out_us");
 }
 
 TEST(SafetyWatchdog, AnInfiniteTimeoutNeverTrips) {

@@ -41,6 +41,23 @@ TEST(Address, ParsesTheThreeForms) {
     EXPECT_EQ(Address::parse("tcp:127.0.0.1:1").port, 1);
 }
 
+TEST(Address, ATcpAddressMayCarryTheDevicesTokenWhichIsNeverPrinted) {
+    const Address a = Address::parse("tcp:10.0.0.5:5000?token=Xy-9_z");
+    EXPECT_EQ(a.host, "10.0.0.5");
+    EXPECT_EQ(a.port, 5000);
+    EXPECT_EQ(a.token, "Xy-9_z");
+    EXPECT_EQ(a.to_string(), "tcp:10.0.0.5:5000");
+    EXPECT_EQ(Address::parse("tcp:[::1]:7?token=t").token, "t");
+    for (const char* bad : {"tcp:h:1?token=", "tcp:h:1?key=abc", "tcp:h:1?token=a b", "tcp:h:1?"}) {
+        try {
+            (void)Address::parse(bad);
+            ADD_FAILURE() << bad << " was taken";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("token"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Address, ABareProfileNameIsASimAddress) {
     const Address a = Address::parse("iforce1");
     EXPECT_EQ(a.kind, Address::Kind::sim);
@@ -122,6 +139,7 @@ TEST(FrameKind, EveryKindHasAName) {
     EXPECT_EQ(frame_kind_name(FrameKind::get_descriptor), "get_descriptor");
     EXPECT_EQ(frame_kind_name(FrameKind::descriptor_reply), "descriptor_reply");
     EXPECT_EQ(frame_kind_name(FrameKind::busy), "busy");
+    EXPECT_EQ(frame_kind_name(FrameKind::hello), "hello");
     EXPECT_EQ(frame_kind_name(static_cast<FrameKind>(0)), "unknown");
     EXPECT_FALSE(is_frame_kind(0));
     for (int k = 1; k <= kFrameKindCount; ++k) EXPECT_TRUE(is_frame_kind(static_cast<uint8_t>(k)));

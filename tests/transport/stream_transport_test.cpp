@@ -203,17 +203,19 @@ TEST_P(StreamTransport, RoundTripsFramesOfEverySizeBothWays) {
 TEST_P(StreamTransport, ABurstOfFramesArrivesInOrder) {
     ConnectionPair pair = connect_pair();
     constexpr int kFrames = 20'000;
+    // Every kind but hello, which the device's end takes itself (it carries a token).
+    constexpr int kKinds = kFrameKindCount - 1;
     std::thread sender([&] {
         for (int i = 0; i < kFrames; ++i) {
             std::vector<uint8_t> payload = pattern(static_cast<std::size_t>(i % 61), static_cast<uint8_t>(i));
             payload.insert(payload.begin(), {uint8_t(i & 0xFF), uint8_t((i >> 8) & 0xFF)});
-            pair.host->send(frame_of(static_cast<FrameKind>(1 + i % kFrameKindCount), std::move(payload)));
+            pair.host->send(frame_of(static_cast<FrameKind>(1 + i % kKinds), std::move(payload)));
         }
     });
     for (int i = 0; i < kFrames; ++i) {
         const auto f = pair.device->receive(5000ms);
         ASSERT_TRUE(f.has_value()) << "frame " << i;
-        ASSERT_EQ(static_cast<int>(f->kind), 1 + i % kFrameKindCount);
+        ASSERT_EQ(static_cast<int>(f->kind), 1 + i % kKinds);
         ASSERT_EQ(f->payload.size(), static_cast<std::size_t>(2 + i % 61));
         ASSERT_EQ(f->payload[0] | (f->payload[1] << 8), i & 0xFFFF);
         std::vector<uint8_t> rest(f->payload.begin() + 2, f->payload.end());
@@ -254,7 +256,7 @@ TEST_P(StreamTransport, HostileBytesAreABadFrameAndCloseTheConnection) {
     };
     const Hostile cases[] = {
         {wire(0, 1, {7}), "unknown kind 0"},
-        {wire(9, 1, {7}), "unknown kind 9"},
+        {wire(10, 1, {7}), "unknown kind 10"},
         {wire(255, 0, {}), "unknown kind 255"},
         {wire(1, 4097, {}), "4097 bytes"},
         {wire(7, 65535, {}), "65535 bytes"},
@@ -478,6 +480,286 @@ TEST(TcpListener, ATakenPortIsRefused) {
         EXPECT_EQ(e.kind(), TransportError::Kind::refused);
         EXPECT_NE(std::string(e.what()).find(first->address().to_string()), std::string::npos) << e.what();
     }
+}
+
+
+// --- a device's end never held by its peer (transport.hpp) ---------------------------------
+
+TEST_P(StreamTransport, APartialFrameNotCompletedInTimeClosesTheConnection) {
+    RawClient raw(address_);
+    auto device = accept_raw(raw);
+    raw.write({1, 40, 0, 0xAA, 0xBB});  // an output report of 40 bytes: 2 of them, then nothing
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(receive_error(*device, 5000ms), TransportError::Kind::bad_frame);
+    const auto waited = std::chrono::steady_clock::now() - start;
+    EXPECT_GE(waited, kPartialFrameTimeout - 50ms);
+    EXPECT_TRUE(raw.sees_close(2000ms));
+}
+
+TEST_P(StreamTransport, APartialFrameCompletedAfterAPauseOfTheReaderIsNotBlamedOnThePeer) {
+    RawClient raw(address_);
+    auto device = accept_raw(raw);
+    raw.write({1, 4, 0, 1});
+    EXPECT_FALSE(device->receive(20ms).has_value());  // the partial frame is buffered
+    raw.write({2, 3, 4});                             // the rest comes at once ...
+    std::this_thread::sleep_for(kPartialFrameTimeout + 100ms);  // ... but the reader pauses
+    const auto f = device->receive(100ms);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_EQ(f->payload, (std::vector<uint8_t>{1, 2, 3, 4}));
+}
+
+TEST_P(StreamTransport, APeerThatNeverReadsIsDroppedAndSendsNeverBlock) {
+    RawClient raw(address_);
+    auto device = accept_raw(raw);
+    const Frame big = frame_of(FrameKind::descriptor_reply, pattern(kMaxFramePayload, 3));
+    bool dropped = false;
+    std::string why;
+    const auto start = std::chrono::steady_clock::now();
+    auto slowest = std::chrono::steady_clock::duration::zero();
+    for (int i = 0; i < 100'000 && !dropped; ++i) {
+        const auto before = std::chrono::steady_clock::now();
+        try {
+            device->send(big);
+        } catch (const TransportError& e) {
+            dropped = true;
+            why = e.what();
+            EXPECT_EQ(e.kind(), TransportError::Kind::disconnected);
+        }
+        slowest = std::max(slowest, std::chrono::steady_clock::now() - before);
+    }
+    ASSERT_TRUE(dropped);
+    EXPECT_NE(why.find("does not read"), std::string::npos) << why;
+    EXPECT_LT(slowest, 100ms) << "a send waited for the peer";
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
+    EXPECT_THROW(device->send(big), TransportError);
+}
+
+TEST_P(StreamTransport, APeerThatStopsTakingBytesIsDroppedAfterTheStallTime) {
+    RawClient raw(address_);
+    auto device = accept_raw(raw);
+    // Small droppable frames until the socket is full: then they are dropped, not queued.
+    const Frame state = frame_of(FrameKind::input_report, pattern(40, 9));
+    int sent = 0;
+    int dropped = 0;
+    const auto start = std::chrono::steady_clock::now();
+    bool closed = false;
+    while (!closed && std::chrono::steady_clock::now() - start < 10s) {
+        try {
+            if (device->send_or_drop(state)) ++sent;
+            else ++dropped;
+        } catch (const TransportError& e) {
+            closed = true;
+            EXPECT_NE(std::string(e.what()).find("took none"), std::string::npos) << e.what();
+        }
+        std::this_thread::sleep_for(100us);
+    }
+    EXPECT_TRUE(closed);
+    EXPECT_GT(sent, 0);
+    EXPECT_GT(dropped, 0);
+}
+
+TEST_P(StreamTransport, AReadingPeerGetsEveryFrameSendOrDropKeeps) {
+    auto pair = connect_pair();
+    int kept = 0;
+    for (int i = 0; i < 200; ++i) kept += pair.device->send_or_drop(frame_of(FrameKind::input_report, {static_cast<uint8_t>(i)})) ? 1 : 0;
+    EXPECT_EQ(kept, 200);  // an empty socket takes them all
+    for (int i = 0; i < 200; ++i) {
+        const auto f = pair.host->receive(2000ms);
+        ASSERT_TRUE(f.has_value());
+        EXPECT_EQ(f->payload[0], static_cast<uint8_t>(i));
+    }
+}
+
+// --- the shared secret -------------------------------------------------------------------------
+
+class TokenTransport : public ::testing::TestWithParam<Kind> {
+protected:
+    void SetUp() override {
+        Address where;
+        if (GetParam() == Kind::unix_socket) {
+            where.kind = Address::Kind::unix_socket;
+            where.path = dir_.file("device.sock");
+        } else {
+            where = Address::parse_listen("tcp:127.0.0.1:0");
+        }
+        ListenOptions options;
+        options.token = "s3cret-Token";
+        listener_ = listen(where, options);
+        address_ = listener_->address();
+    }
+    TempDir dir_;
+    std::unique_ptr<Listener> listener_;
+    Address address_;
+};
+
+TEST_P(TokenTransport, AHostWithTheTokenIsServedItsHelloNeverSeen) {
+    Address with = address_;
+    with.token = "s3cret-Token";
+    auto host = connect(with, 2000ms);
+    auto device = listener_->accept(2000ms);
+    ASSERT_NE(device, nullptr);
+    host->send(frame_of(FrameKind::get_descriptor, {}));
+    const auto f = device->receive(2000ms);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_EQ(f->kind, FrameKind::get_descriptor);
+}
+
+TEST_P(TokenTransport, TheTokenMayComeFromTheEnvironment) {
+    ::setenv(kTokenEnvironmentVariable, "s3cret-Token", 1);
+    auto host = connect(address_, 2000ms);
+    ::unsetenv(kTokenEnvironmentVariable);
+    auto device = listener_->accept(2000ms);
+    ASSERT_NE(device, nullptr);
+    host->send(frame_of(FrameKind::get_descriptor, {}));
+    const auto f = device->receive(2000ms);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_EQ(f->kind, FrameKind::get_descriptor);
+}
+
+TEST_P(TokenTransport, AWrongOrMissingTokenClosesTheConnection) {
+    Address wrong = address_;
+    wrong.token = "s3cret-Tokem";
+    auto host = connect(wrong, 2000ms);
+    auto device = listener_->accept(2000ms);
+    ASSERT_NE(device, nullptr);
+    host->send(frame_of(FrameKind::get_descriptor, {}));
+    try {
+        (void)device->receive(2000ms);
+        ADD_FAILURE() << "a wrong token was accepted";
+    } catch (const TransportError& e) {
+        EXPECT_EQ(e.kind(), TransportError::Kind::bad_frame);
+        EXPECT_NE(std::string(e.what()).find("wrong token"), std::string::npos) << e.what();
+    }
+    auto bare = connect(address_, 2000ms);
+    auto device2 = listener_->accept(2000ms);
+    ASSERT_NE(device2, nullptr);
+    bare->send(frame_of(FrameKind::get_descriptor, {}));
+    try {
+        (void)device2->receive(2000ms);
+        ADD_FAILURE() << "a host without a token was accepted";
+    } catch (const TransportError& e) {
+        EXPECT_EQ(e.kind(), TransportError::Kind::bad_frame);
+        EXPECT_NE(std::string(e.what()).find("before presenting the device's token"), std::string::npos) << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Transports, TokenTransport, ::testing::Values(Kind::unix_socket, Kind::tcp),
+                         [](const ::testing::TestParamInfo<Kind>& param_info) {
+                             return param_info.param == Kind::tcp ? "tcp" : "unix";
+                         });
+
+TEST(TokenTransport, ADeviceWithoutATokenIgnoresAHello) {
+    TempDir dir;
+    Address where;
+    where.kind = Address::Kind::unix_socket;
+    where.path = dir.file("d.sock");
+    auto listener = listen(where);
+    ::setenv(kTokenEnvironmentVariable, "anything", 1);
+    auto host = connect(where, 2000ms);
+    ::unsetenv(kTokenEnvironmentVariable);
+    auto device = listener->accept(2000ms);
+    ASSERT_NE(device, nullptr);
+    host->send(frame_of(FrameKind::get_descriptor, {}));
+    const auto f = device->receive(2000ms);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_EQ(f->kind, FrameKind::get_descriptor);
+}
+
+// --- who may connect -------------------------------------------------------------------------
+
+TEST(Listen, ABeyondLoopbackAddressNeedsAllowRemoteAndAToken) {
+    const Address any = Address::parse_listen("tcp:0.0.0.0:0");
+    try {
+        (void)listen(any);
+        ADD_FAILURE() << "listened beyond loopback without --allow-remote";
+    } catch (const TransportError& e) {
+        EXPECT_EQ(e.kind(), TransportError::Kind::refused);
+        EXPECT_NE(std::string(e.what()).find("--allow-remote"), std::string::npos) << e.what();
+    }
+    ListenOptions remote;
+    remote.allow_remote = true;
+    try {
+        (void)listen(any, remote);
+        ADD_FAILURE() << "listened beyond loopback without a token";
+    } catch (const TransportError& e) {
+        EXPECT_NE(std::string(e.what()).find("token"), std::string::npos) << e.what();
+    }
+    remote.token = "abc";
+    EXPECT_NO_THROW((void)listen(any, remote));
+    // Loopback needs neither.
+    EXPECT_NO_THROW((void)listen(Address::parse_listen("tcp:127.0.0.1:0")));
+}
+
+TEST(Listen, SocketFilesAreForTheUserAloneWhateverTheUmask) {
+    TempDir dir;
+    const mode_t old = ::umask(0);
+    Address where;
+    where.kind = Address::Kind::unix_socket;
+    where.path = dir.file("open.sock");
+    auto listener = listen(where);
+    struct stat info {};
+    ASSERT_EQ(::stat(where.path.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 07777, 0600u);
+    // With a group: 0660 and that group (the user's own, which a user may always give).
+    ListenOptions grouped;
+    grouped.group_id = static_cast<unsigned>(::getgid());
+    Address second = where;
+    second.path = dir.file("group.sock");
+    ::umask(0077);
+    auto group_listener = listen(second, grouped);
+    ::umask(old);
+    ASSERT_EQ(::stat(second.path.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 07777, 0660u);
+    EXPECT_EQ(info.st_gid, ::getgid());
+}
+
+TEST(Access, LoopbackIsJudgedByEveryAddressAHostStandsFor) {
+    for (const char* host : {"127.0.0.1", "127.3.2.1", "::1", "::ffff:127.0.0.1", "localhost"})
+        EXPECT_TRUE(is_loopback_host(host)) << host;
+    for (const char* host : {"0.0.0.0", "::", "10.1.2.3", "192.168.0.7", "::ffff:10.0.0.1", "no-such-host.invalid"})
+        EXPECT_FALSE(is_loopback_host(host)) << host;
+}
+
+TEST(Access, TokensArePrintableAsciiWithoutSpaces) {
+    EXPECT_EQ(check_token("abc-DEF_123.~"), "");
+    EXPECT_NE(check_token("").find("empty"), std::string::npos);
+    EXPECT_NE(check_token("a b").find("0x20"), std::string::npos);
+    EXPECT_NE(check_token(std::string(kMaxTokenBytes + 1, 'x')).find("257 bytes"), std::string::npos);
+}
+
+TEST(Access, APrivateSocketDirIsUsedAndAnyOtherReplacedByAFreshOne) {
+    TempDir dir;
+    const std::string mine = dir.file("mine");
+    PrivateDir got = private_socket_dir(mine);  // made, 0700
+    EXPECT_EQ(got.path, mine);
+    EXPECT_TRUE(got.warning.empty()) << got.warning;
+    struct stat info {};
+    ASSERT_EQ(::stat(mine.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 07777, 0700u);
+
+    // One already there and open to others: not used (someone may have used it already),
+    // and not changed; a fresh one instead.
+    const std::string open_dir = dir.file("open");
+    ASSERT_EQ(::mkdir(open_dir.c_str(), 0700), 0);
+    ASSERT_EQ(::chmod(open_dir.c_str(), 0777), 0);
+    got = private_socket_dir(open_dir);
+    EXPECT_NE(got.path, open_dir);
+    EXPECT_NE(got.warning.find("0777"), std::string::npos) << got.warning;
+    ASSERT_EQ(::lstat(got.path.c_str(), &info), 0);
+    EXPECT_TRUE(S_ISDIR(info.st_mode));
+    EXPECT_EQ(info.st_mode & 07777, 0700u);
+    EXPECT_EQ(info.st_uid, ::getuid());
+    fs::remove_all(got.path);
+    ASSERT_EQ(::stat(open_dir.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 07777, 0777u);
+
+    // A symbolic link to a private directory is not used either.
+    const std::string link = dir.file("link");
+    ASSERT_EQ(::symlink(mine.c_str(), link.c_str()), 0);
+    got = private_socket_dir(link);
+    EXPECT_NE(got.path, link);
+    EXPECT_NE(got.warning.find("symbolic link"), std::string::npos) << got.warning;
+    fs::remove_all(got.path);
 }
 
 }  // namespace

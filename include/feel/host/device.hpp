@@ -233,6 +233,10 @@ private:
 
 struct OpenOptions {
     std::chrono::milliseconds timeout{2000};  // per command round trip; 1..60000 ms
+    // unix:/tcp: how long open() keeps asking a device that is busy with another host,
+    // 0..60000 ms (0: ask once). The default outlasts a leaving host's teardown and the
+    // detaching of a silent one (the device's watchdog, 1 s, plus its reset).
+    std::chrono::milliseconds busy_wait{1500};
     int32_t report_rate_hz = 0;               // 0: the device's; else 100..1000
     // sim: addresses only, the in-process device's hand and its target motion
     // (peripheral::PeripheralOptions).
@@ -247,7 +251,9 @@ public:
     // Opens "sim:PROFILE" (in process), "unix:PATH" or "tcp:HOST:PORT"; a bare profile
     // name means sim:PROFILE. Reads the report descriptor and the capabilities.
     // Errors: invalid_parameter (bad address, unknown profile), disconnected (nothing
-    // there, or busy with another host), timeout, protocol.
+    // there, or still busy with another host after options.busy_wait), timeout, protocol.
+    // A tcp: address may carry the device's token ("tcp:HOST:PORT?token=TOKEN"), else
+    // $FEEL_DEVICE_TOKEN is presented when set.
     [[nodiscard]] static Result<Device> open(std::string_view address = "sim:iforce2",
                                              const OpenOptions& options = {});
     // Opens the device at the far end of a connection made elsewhere (a transport the

@@ -12,9 +12,10 @@
 //                                                    -> SPSC queues -> 1 kHz RealtimeLoop
 //
 // One host at a time, like a USB device: a second connection while a host is attached gets
-// a `busy` frame and is closed. When the host goes away (disconnect, or silence past the
-// safety watchdog), the runtime fades the forces out and stops every effect; the next host
-// finds a reset device.
+// a `busy` frame and is closed (one that arrives while the last host's teardown runs waits
+// for it, up to 250 ms). When the host goes away (disconnect, or no frame for the safety
+// watchdog's time, which detaches it), the device is reset: every effect stopped and freed;
+// the next host finds a reset device. Guarantees and their figures: docs/peripheral.md.
 //
 // Threads. The constructor builds and starts the runtime's loop; attach() and serve() start
 // service threads; stop() and the destructor join them. Every public call is for one owner
@@ -47,6 +48,9 @@ struct PeripheralStats {
     uint64_t reports_received = 0;   // host reports decoded
     uint64_t reports_refused = 0;    // of those, answered with an error status
     uint64_t frames_sent = 0;
+    uint64_t reports_dropped = 0;    // state reports a slow host missed (send_or_drop)
+    uint64_t hosts_silent = 0;       // hosts detached for sending nothing for the watchdog time
+    uint64_t hosts_dropped = 0;      // hosts dropped for bad frames, a stalled partial frame or not reading
     bool host_attached = false;
 };
 

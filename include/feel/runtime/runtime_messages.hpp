@@ -61,8 +61,13 @@ enum class CommandKind : uint8_t {
     // "closing the loop from the host"); the device reconstructs a smooth force from the
     // samples and adds it to the effects' (force_stream.hpp). Sent at up to 1 kHz.
     stream_force,
+    // The host is gone (disconnected or detached): the forces fade out as for a silent
+    // host (SafetyConfig::host_fade_out_us) and every effect stops. No later command is
+    // applied, and the ack comes, only once the fade has ended; with no force on the
+    // motors there is nothing to fade and the ack comes at once.
+    release_host,
 };
-inline constexpr int kCommandKindCount = 17;
+inline constexpr int kCommandKindCount = 18;
 
 // DirectInput's DISFFC_* device commands.
 enum class DeviceControl : uint8_t {
@@ -116,6 +121,12 @@ static_assert(std::is_trivially_copyable_v<Command>);
 [[nodiscard]] inline Command make_keep_alive(uint32_t sequence) noexcept {
     Command c;
     c.kind = CommandKind::keep_alive;
+    c.sequence = sequence;
+    return c;
+}
+[[nodiscard]] inline Command make_release_host(uint32_t sequence) noexcept {
+    Command c;
+    c.kind = CommandKind::release_host;
     c.sequence = sequence;
     return c;
 }

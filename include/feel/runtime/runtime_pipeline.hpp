@@ -229,6 +229,8 @@ private:
     bool started_ = false;
     int64_t last_tick_ = -1;
     int64_t host_heard_us_ = 0;      // the last tick that saw a command from the host
+    bool releasing_ = false;         // a release_host waits for the host's fade to end
+    uint32_t release_sequence_ = 0;  // its sequence, for the ack
     int32_t report_rate_hz_ = kDefaultReportRateHz;
     int64_t report_origin_us_ = 0;   // report k is due at origin + ceil(k·1e6/rate)
     int64_t next_report_ = 0;        // k of the next report due

@@ -23,9 +23,12 @@
 //     safety.cpp explains the detector; docs/runtime.md ("Safety") gives its thresholds per
 //     profile.
 //   * Host-link watchdog. When the host has been silent for longer than host_timeout_us,
-//     the scale is 0 and state().host_lost_event is set for that one tick: the runtime must
-//     then stop all effects (Engine::stop_all). Forces pass again as soon as the host is
-//     heard; by then the effects are stopped, and the host starts what it wants.
+//     or the device released it (release_host(): it disconnected), the host is lost: the
+//     forces fade from where they are to 0 over host_fade_out_us, and on the tick they
+//     reach 0 state().host_lost_event is set: the runtime must then stop all effects
+//     (Engine::stop_all). Forces pass again as soon as the host is heard; a host heard
+//     within the fade finds its effects still playing, one heard later finds them stopped
+//     and starts what it wants.
 //   * Host control: the host may disable the actuators (scale 0) and enable them again
 //     (a fade-in). Engine::set_actuators_enabled cuts and restores at once; the runtime
 //     passes the host's command to both, so that forces come back faded in.
@@ -119,6 +122,10 @@ struct SafetyConfig {
     int64_t fade_in_us = 500'000;
     // The host-link watchdog, µs: 1..kMaxTimeUs, or kInfiniteUs for none.
     int64_t host_timeout_us = 1'000'000;
+    // A lost host's forces fade from where they are to 0 over this time, µs, 0..kMaxTimeUs
+    // (0: cut at once); its effects are stopped when the fade ends. 50 ms: gone well within
+    // a hand's reaction time, yet no step a hand feels as a jolt.
+    int64_t host_fade_out_us = 50'000;
     HandsOffConfig hands_off{};
 };
 
@@ -142,13 +149,15 @@ struct SafetyState {
     // The safety fade: 0 (no force) .. 1 (full force). Follows the fade-in and fade-out
     // ramps; 0 while the handle is not held or the actuators are disabled.
     float fade_level = 0;
-    // What multiplied the forces at the last tick: fade_level, or 0 while the host is lost.
+    // What multiplied the forces at the last tick: fade_level times the host-loss fade
+    // (1 while the host is present, falling to 0 over host_fade_out_us once lost).
     float output_scale = 0;
     bool hands_off = false;         // latched: a free handle was detected; forces fade out
     uint32_t hands_off_axes = 0;    // bit i: axis i showed the free-handle evidence
-    bool host_lost = false;         // the host has been silent past host_timeout_us
-    // True for the one tick the watchdog trips: stop all effects now.
+    bool host_lost = false;         // the host is silent past host_timeout_us, or released
+    // True for the one tick a lost host's fade reaches 0: stop all effects now.
     bool host_lost_event = false;
+    bool host_faded = false;        // the host is lost and its fade has ended
     int64_t t_us = 0;               // the last tick's time, µs
     // Counters since configure() or reset().
     uint32_t hands_off_trips = 0;   // times hands-off latched
@@ -188,6 +197,10 @@ public:
     // The host's device control: disabled actuators produce no force; enabling them fades
     // the forces in. Takes effect at the next process().
     void set_actuators_enabled(bool enabled) noexcept;
+    // The host is gone (it disconnected): lost from the next process() on, as if the
+    // watchdog had tripped, until it is heard after t_us (the time of the tick that
+    // releases it). Real-time safe.
+    void release_host(int64_t t_us) noexcept;
     // Back to power-on: fade level 0, no latch, the watchdog and the counters cleared.
     // Keeps the actuators' enable.
     void reset() noexcept;
@@ -232,6 +245,12 @@ private:
     };
 
     void update_watchdog(const SafetyInput& in) noexcept;
+    // The host-loss fade: 1 while the host is present, a ramp to 0 from host_anchor_us_.
+    double host_level_ = 1;
+    double host_anchor_level_ = 1;
+    int64_t host_anchor_us_ = 0;
+    bool released_ = false;
+    int64_t released_at_us_ = 0;
     void update_detector(const SafetyInput& in, double dt_s) noexcept;
     void update_fade(const SafetyInput& in) noexcept;
     void forget_evidence() noexcept;

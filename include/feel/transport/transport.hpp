@@ -9,10 +9,26 @@
 //   sim:PROFILE         in-process: a pair of queues, for tests and for embedding the
 //                       simulated device in the host process (the default device)
 //   unix:PATH           a framed byte stream over a Unix domain socket
-//   tcp:HOST:PORT       the same framed stream over TCP (loopback by default)
+//   tcp:HOST:PORT       the same framed stream over TCP (loopback by default; any other
+//                       address needs the device's shared secret, see `hello` below)
 // On a byte stream each frame is [kind: u8][length: u16 little-endian][payload: length
 // bytes], length <= kMaxFramePayload. A frame of an unknown kind or an oversized length is
 // a protocol violation: the receiver closes the connection (a device never trusts its host).
+//
+// A device never lets one connection hold it (docs/peripheral.md, "Guarantees to hosts").
+// On a connection a Listener accepted (the device's end):
+//   * at most kMaxBufferedInputBytes of what the peer sent are buffered: the rest waits in
+//     the socket, which pushes back on the peer (a flood costs the device no memory);
+//   * a frame whose first bytes came must be whole within kPartialFrameTimeout, else the
+//     connection is closed (bad_frame);
+//   * send() never blocks: what the socket cannot take at once waits in an outgoing buffer
+//     of at most kMaxOutgoingBytes; a peer that lets it overflow, or takes none of it for
+//     kSendStallTimeout, is not reading and the connection is closed (disconnected);
+//     send_or_drop() drops a frame the peer can do without while anything waits;
+//   * when the listener has a shared secret, the peer's first frame must be a `hello`
+//     carrying it (compared in constant time), else the connection is closed (bad_frame).
+// A connection made by connect() (the host's end) sends with back-pressure (a send waits
+// while the device's socket is full) and, given a token, sends its `hello` first.
 //
 // Threads. One thread may send while another receives on the same Connection; close() may
 // be called from any thread and wakes a blocked receive(). Nothing here is real-time safe:
@@ -40,8 +56,10 @@ enum class FrameKind : uint8_t {
     get_descriptor = 6,    // host -> device: GET_DESCRIPTOR(Report); empty payload
     descriptor_reply = 7,  // device -> host: the HID report descriptor bytes
     busy = 8,              // device -> host: another host holds the device; then it closes
+    hello = 9,             // host -> device: the shared secret (token bytes); the first frame
+                           // on a device that has one, ignored by one that has none
 };
-inline constexpr int kFrameKindCount = 8;
+inline constexpr int kFrameKindCount = 9;
 [[nodiscard]] std::string_view frame_kind_name(FrameKind kind) noexcept;
 // True for the byte values of the kinds above (1..kFrameKindCount): what a byte stream's
 // receiver accepts in a frame header.
@@ -51,6 +69,27 @@ inline constexpr int kFrameKindCount = 8;
 inline constexpr std::size_t kMaxFramePayload = 4096;
 // Bytes of a frame's header on a byte stream: kind + length.
 inline constexpr std::size_t kFrameHeaderBytes = 3;
+// The most a stream connection reads from its socket at once, bytes.
+inline constexpr std::size_t kReceiveChunkBytes = 16384;
+// The most a stream connection holds of what its peer sent, bytes: one frame's worth (a
+// partial frame) and one read. The rest stays in the socket.
+inline constexpr std::size_t kMaxBufferedInputBytes = kFrameHeaderBytes + kMaxFramePayload + kReceiveChunkBytes;
+// A frame begun on a byte stream must be whole within this time, else the connection is
+// closed as a protocol violation.
+inline constexpr std::chrono::milliseconds kPartialFrameTimeout{500};
+// On a device's end: bytes waiting for a peer that reads slowly, beyond the socket's own
+// buffer. A peer that lets more pile up is not reading and is dropped.
+inline constexpr std::size_t kMaxOutgoingBytes = 64 * 1024;
+// On a device's end: a peer that takes none of the bytes waiting for it for this long is
+// not reading and is dropped.
+inline constexpr std::chrono::milliseconds kSendStallTimeout{500};
+// A token (the shared secret of a device listening beyond loopback): 1..kMaxTokenBytes
+// bytes of printable ASCII (no spaces), so that it fits an address and an environment
+// variable.
+inline constexpr std::size_t kMaxTokenBytes = 256;
+// The environment variable a host (and `feel device`) reads the token from when the address
+// carries none.
+inline constexpr const char* kTokenEnvironmentVariable = "FEEL_DEVICE_TOKEN";
 
 struct Frame {
     FrameKind kind = FrameKind::output_report;
@@ -84,6 +123,9 @@ struct Address {
     std::string path;                 // unix_socket: the socket's file path
     std::string host = "127.0.0.1";   // tcp: a host name or address
     uint16_t port = 0;                // tcp: 1..65535 (0 only to listen on any free port)
+    // tcp: the device's shared secret, from "tcp:HOST:PORT?token=TOKEN" (empty: none, or
+    // the environment's, see kTokenEnvironmentVariable). Never printed by to_string().
+    std::string token;
 
     // Throws std::invalid_argument naming what is wrong and the forms allowed, e.g.
     //   "tcp:localhost" is not an address: the port is missing (allowed sim:PROFILE,
@@ -104,8 +146,16 @@ class Connection {
 public:
     virtual ~Connection() = default;
     // Sends one frame. Throws std::invalid_argument for a payload over kMaxFramePayload,
-    // TransportError(disconnected) when the connection is gone.
+    // TransportError(disconnected) when the connection is gone (on a device's end also
+    // when the peer does not read: see the top of this file; the connection is closed).
     virtual void send(const Frame& frame) = 0;
+    // Sends a frame the peer can do without (a state report the next one supersedes): on a
+    // device's end it is dropped (false, nothing sent) while earlier bytes still wait for
+    // the peer; elsewhere the same as send(). Throws as send().
+    virtual bool send_or_drop(const Frame& frame) {
+        send(frame);
+        return true;
+    }
     // Waits up to `timeout` for the next frame: std::nullopt when none came in time.
     // Throws TransportError(disconnected) once the peer closed (after every frame it sent
     // was received) or close() was called, TransportError(bad_frame) when the peer sent
@@ -131,11 +181,36 @@ public:
     [[nodiscard]] virtual Address address() const = 0;
 };
 
+// Who may connect to a listener.
+struct ListenOptions {
+    // A tcp: address that is not loopback (is_loopback_host) is refused unless this is set,
+    // and then needs a token.
+    bool allow_remote = false;
+    // The shared secret every host must present in its first frame (a `hello`); empty:
+    // none. Required beyond loopback. Checked with check_token().
+    std::string token;
+    // unix: the socket file's group (its mode is then 0660); nullopt: mode 0600. Either
+    // way the mode is set after bind, whatever the process's umask.
+    std::optional<unsigned> group_id;
+};
+
 // Listens at a unix: or tcp: address. A Unix socket path whose file exists but where no
 // one listens is taken over (a stale socket of a device that crashed); one where a device
-// listens is refused. Throws TransportError(refused) naming the address and the reason,
-// std::invalid_argument for a sim: address (in-process devices need no listener).
-[[nodiscard]] std::unique_ptr<Listener> listen(const Address& address);
+// listens is refused. Throws TransportError(refused) naming the address and the reason
+// (also a remote address without allow_remote or without a token),
+// std::invalid_argument for a sim: address (in-process devices need no listener) or a
+// malformed token.
+[[nodiscard]] std::unique_ptr<Listener> listen(const Address& address, const ListenOptions& options = {});
+
+// True when every address `host` stands for is a loopback address (127.0.0.0/8, ::1, an
+// IPv4-mapped 127.x): a numeric address is judged as written, a name by what it resolves
+// to (a name that does not resolve is not loopback). What every feel server (the device,
+// the Studio) asks before listening without --allow-remote.
+[[nodiscard]] bool is_loopback_host(const std::string& host);
+
+// Checks a token: 1..kMaxTokenBytes printable ASCII bytes without spaces. Returns an empty
+// string when it is one, else a sentence saying what is wrong and what is allowed.
+[[nodiscard]] std::string check_token(std::string_view token);
 
 // Connects to a unix: or tcp: address, waiting up to `timeout`. Throws
 // TransportError(refused or timeout) naming the address; std::invalid_argument for sim:
@@ -154,5 +229,16 @@ struct ConnectionPair {
 // Where devices put their Unix sockets when no --listen path is given, and where
 // enumeration looks for them: $XDG_RUNTIME_DIR/feel, else /tmp/feel-UID. Not created here.
 [[nodiscard]] std::string default_socket_dir();
+
+// A directory only this user may enter, for socket files: `wanted`, created with mode 0700
+// when missing, if it is a real directory (not a symbolic link) owned by this user with no
+// access for group or others; otherwise a fresh one made with mkdtemp beside it
+// ("<wanted>-XXXXXX"), and `warning` says why `wanted` was not used. Throws
+// std::runtime_error when neither can be had.
+struct PrivateDir {
+    std::string path;
+    std::string warning;  // empty when `wanted` was used
+};
+[[nodiscard]] PrivateDir private_socket_dir(const std::string& wanted);
 
 }  // namespace feel::transport
