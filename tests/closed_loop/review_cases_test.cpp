@@ -1,5 +1,5 @@
 // The cases of issue 16's review, rerun in closed loop with the simulated joystick: the
-// barrier's linear resistance up to its pop, and a grid of textures. Each test quotes the
+// barrier's linear resistance up to its pop, a grid of textures and the sweep table. Each test quotes the
 // primer's words it checks; the expectations come from those words and from the
 // documented formulas (docs/conditions.md), never from a rendered trace.
 #include <gtest/gtest.h>
@@ -117,6 +117,66 @@ TEST(ReviewCases, TheTextureGridIsAGratingInSpaceWithAnIntensityPerDirection) {
                 EXPECT_GT(gaps, 100);
             }
             EXPECT_GT(tops, 4);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace feel::test
+
+namespace feel::test {
+namespace {
+
+// The sweep table: every sweep wave, swept clockwise and counter-clockwise, across north
+// and not, played on the simulated joystick held by a kinematic hand.
+TEST(ReviewCases, TheSweepTableTurnsTheForceFromStartToEndAngle) {
+    // §4.2: "a periodic wave is assigned a Start Angle and an End Angle such that the
+    // direction of the force will sweep between these angles over the duration of the
+    // sensation"; §6.6.i: clockwise or counter-clockwise; docs/conventions.md: linearly
+    // over the duration. So at time t of a
+    // duration D the force lies on the line of the compass angle
+    // start + (t/D)·(the signed turn from start to end in the sense given), whatever the
+    // wave's value: F_x·cos(a) - F_y·sin(a) = 0 (x = east = sin a, y = north = cos a).
+    struct Row {
+        int32_t start, end;
+        SweepSense sense;
+        double turn_deg;  // the signed turn, clockwise positive
+    };
+    const Row table[] = {
+        {0, 9000, SweepSense::clockwise, 90},
+        {0, 9000, SweepSense::counterclockwise, -270},
+        {35000, 1000, SweepSense::clockwise, 20},
+        {1000, 35000, SweepSense::counterclockwise, -20},
+        {9000, 27000, SweepSense::clockwise, 180},
+        {27000, 9000, SweepSense::counterclockwise, -180},
+    };
+    const double duration_s = 1.0;
+    for (EffectType type : {EffectType::sweep_sine, EffectType::sweep_square, EffectType::sweep_triangle,
+                            EffectType::sweep_saw_up, EffectType::sweep_saw_down}) {
+        for (const Row& row : table) {
+            SCOPED_TRACE(std::string(effect_type_name(type)) + " " + std::to_string(row.start) + " -> " +
+                         std::to_string(row.end));
+            EffectParams p;
+            p.type = type;
+            p.duration_us = static_cast<int64_t>(duration_s * 1e6);
+            p.axis_count = 2;
+            p.axes[0] = Axis::x;
+            p.axes[1] = Axis::y;
+            p.periodic.magnitude = 6000;
+            p.periodic.period_us = 50'000;
+            p.periodic.sweep_start_angle = row.start;
+            p.periodic.sweep_end_angle = row.end;
+            p.periodic.sweep_sense = row.sense;
+            const auto rows = run_loop("joystick", sim::Grip::kinematic, "hold:0", {p}, duration_s);
+            int checked = 0;
+            for (const LoopRow& r : rows) {
+                const double magnitude = std::hypot(r.force[0], r.force[1]);
+                if (magnitude < 600) continue;  // near a zero crossing of the wave the line is ill-defined
+                const double a = (row.start / 100.0 + row.turn_deg * r.t_s / duration_s) * 3.141592653589793 / 180;
+                ASSERT_NEAR((r.force[0] * std::cos(a) - r.force[1] * std::sin(a)) / magnitude, 0.0, 0.01) << r.t_s;
+                ++checked;
+            }
+            EXPECT_GT(checked, 500);
         }
     }
 }
