@@ -24,7 +24,9 @@
 //     Either vector must not be zero (it would name no direction).
 //   - Types whose block carries the angle (sweeps, angle_wall, angle_barrier, and the
 //     directional dynamics recoil, impact, paddle) play in the x-y plane on the axes x
-//     and y and take no separate direction: two sources of truth would disagree.
+//     and y and take no separate direction: two sources of truth would disagree. Recoil
+//     and impact also play on one axis (the sign of the intensity aims them, the angle is
+//     0) and on x, y, z (a spherical direction aims them, the angle is 0); paddle is 2D.
 #include "feel/effect_validation.hpp"
 
 #include <charconv>
@@ -516,25 +518,63 @@ struct Check {
     return {};
 }
 
-[[nodiscard]] Error check_dynamic(const EffectParams& p) noexcept {
-    if (Error e = no_direction(p, "dynamics take no direction; recoil, impact and paddle aim "
-                                  "with the angle in their block")) {
+// Recoil and impact aim their kick (§5.4, §5.10): in the x-y plane with the compass angle
+// of their block; on one axis with the sign of their intensity (the angle must be 0); on
+// the axes x, y and z with a spherical direction, as waves do (the angle must be 0).
+[[nodiscard]] Error check_kick_aim(const EffectParams& p, const char* angle_field, int32_t angle) noexcept {
+    if (p.axis_count == 1) {
+        if (Error e = no_direction(p, "a recoil or impact on one axis takes no direction: the "
+                                      "sign of its intensity is its direction")) {
+            return e;
+        }
+        if (angle != 0) {
+            return Error::invalid(angle_field, "on one axis the sign of the intensity is the "
+                                               "direction: the angle must be 0");
+        }
+        return {};
+    }
+    if (on_xyz(p)) {
+        if (p.direction.kind != DirectionKind::spherical) {
+            return Error::invalid("direction", "a recoil or impact on the axes x, y and z aims "
+                                               "with a spherical direction (§6.5.c)");
+        }
+        if (angle != 0) {
+            return Error::invalid(angle_field, "on the axes x, y and z the spherical direction "
+                                               "aims the kick: the angle must be 0");
+        }
+        return check_direction_form(p);
+    }
+    if (Error e = needs_xy(p, "a recoil or impact plays on one axis, on x and y (aimed by the "
+                              "angle in its block) or on x, y and z (aimed by a spherical "
+                              "direction)")) {
         return e;
     }
+    return no_direction(p, "on x and y a recoil or impact aims with the angle in its block, "
+                           "not with a direction");
+}
+
+[[nodiscard]] Error check_dynamic(const EffectParams& p) noexcept {
+    const bool kick = p.type == EffectType::dynamic_recoil || p.type == EffectType::dynamic_impact;
+    if (!kick) {
+        if (Error e = no_direction(p, "dynamics take no direction; paddle aims with the angle "
+                                      "in its block, recoil and impact with it on x and y")) {
+            return e;
+        }
+    }
     const DynamicBlock& d = p.dynamic;
-    const char* planar = "this dynamic aims with the angle in its block, a compass angle in "
-                         "the x-y plane: its axes must be x and y";
     // §8.4: each wrapper parameter has the range of the control-law parameter it maps to.
     switch (p.type) {
         case EffectType::dynamic_recoil:
-            if (Error e = needs_xy(p, planar)) return e;
+            if (Error e = in_range("dynamic.blast_direction", d.blast_direction, range::kAngle)) return e;
+            if (Error e = check_kick_aim(p, "dynamic.blast_direction", d.blast_direction)) return e;
             return first_failing({{"dynamic.blast_direction", d.blast_direction, range::kAngle},
                                   {"dynamic.blast_intensity", d.blast_intensity, range::kSignedLevel},
                                   {"dynamic.dynamic_mass", d.dynamic_mass, range::kDynamicMass},
                                   {"dynamic.blast_resonance", d.blast_resonance, range::kDynamicStiffness},
                                   {"dynamic.blast_decay", d.blast_decay, range::kLevel}});
         case EffectType::dynamic_impact:
-            if (Error e = needs_xy(p, planar)) return e;
+            if (Error e = in_range("dynamic.impact_direction", d.impact_direction, range::kAngle)) return e;
+            if (Error e = check_kick_aim(p, "dynamic.impact_direction", d.impact_direction)) return e;
             return first_failing({{"dynamic.impact_direction", d.impact_direction, range::kAngle},
                                   {"dynamic.impact_intensity", d.impact_intensity, range::kSignedLevel},
                                   {"dynamic.dynamic_mass", d.dynamic_mass, range::kDynamicMass},
@@ -556,7 +596,10 @@ struct Check {
                                   {"dynamic.string_compliance", d.string_compliance, range::kDynamicStiffness},
                                   {"dynamic.ball_damping", d.ball_damping, range::kLevel}});
         case EffectType::dynamic_paddle:
-            if (Error e = needs_xy(p, planar)) return e;
+            if (Error e = needs_xy(p, "a paddle is a ball bouncing on the handle in the x-y plane "
+                                      "(2D only, not 1 or 3 axes): its axes must be x and y")) {
+                return e;
+            }
             return first_failing(
                 {{"dynamic.ball_mass", d.ball_mass, range::kDynamicMass},
                  {"dynamic.initial_velocity", d.initial_velocity, range::kSignedLevel},

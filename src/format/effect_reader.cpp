@@ -125,6 +125,30 @@ private:
         }
     }
 
+    // "axis_wall and angle_wall have it; " when other types' blocks have a field named
+    // `key` (a field put on the wrong sibling type, e.g. offset_mode on a barrier), else "".
+    [[nodiscard]] std::string siblings_having(const std::string& key, std::span<const FieldSpec> here) const {
+        auto has = [&key](std::span<const FieldSpec> fields) {
+            return std::any_of(fields.begin(), fields.end(), [&](const FieldSpec& f) { return f.name == key; });
+        };
+        std::vector<std::string_view> names;
+        for (int i = 0; i < kEffectTypeCount; ++i) {
+            const auto t = static_cast<EffectType>(i);
+            if (t == p_.type) continue;
+            const detail::BlockLayout layout = detail::block_layout(t);
+            const bool law = layout.extra == detail::BlockExtra::control_law &&
+                             here.data() != detail::control_law_fields().data() && has(detail::control_law_fields());
+            if (has(layout.fields) || law) names.push_back(effect_type_name(t));
+        }
+        if (names.empty()) return "";
+        std::string list;
+        for (size_t i = 0; i < names.size(); ++i) {
+            if (i > 0) list += i + 1 == names.size() ? " and " : ", ";
+            list += names[i];
+        }
+        return list + (names.size() == 1 ? " has it; " : " have it; ");
+    }
+
     void mark_explicit(std::string pointer) { spec_.explicit_fields.push_back(std::move(pointer)); }
 
     // An object of table fields. `extra` names one more member the caller reads itself.
@@ -139,7 +163,8 @@ private:
                 std::string allowed = extra == "control_law" ? "control_law" : "";
                 for (const FieldSpec& f : fields) allowed += (allowed.empty() ? "" : ", ") + std::string(f.name);
                 if (extra == "samples") allowed += ", samples";
-                where_.fail(path, "unknown field " + quote(key) + " (allowed here: " + allowed + ")");
+                where_.fail(path, "unknown field " + quote(key) + " (" + siblings_having(key, fields) +
+                                      "allowed here: " + allowed + ")");
             }
         }
         for (const FieldSpec& f : fields) {

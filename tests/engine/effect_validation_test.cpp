@@ -580,9 +580,18 @@ TEST(EffectValidation, DynamicRules) {
     const RuleCase cases[] = {
         {"dynamics take no direction", T::dynamic_liquid, [](auto& p) { p.direction = {DirectionKind::cartesian, {1, 0, 0}}; },
          "direction", "no direction"},
-        {"recoil aims in x-y", T::dynamic_recoil, [](auto& p) { set_axes(p, {Axis::x}); }, "axes", "x and y"},
-        {"impact aims in x-y", T::dynamic_impact, [](auto& p) { set_axes(p, {Axis::y, Axis::z}); }, "axes", "x and y"},
-        {"paddle aims in x-y", T::dynamic_paddle, [](auto& p) { set_axes(p, {Axis::x, Axis::y, Axis::z}); }, "axes", "x and y"},
+        {"recoil on one axis: the sign aims it", T::dynamic_recoil,
+         [](auto& p) { set_axes(p, {Axis::x}); p.dynamic.blast_direction = 9000; }, "dynamic.blast_direction", "the angle must be 0"},
+        {"recoil on one axis takes no direction", T::dynamic_recoil,
+         [](auto& p) { set_axes(p, {Axis::x}); p.dynamic.blast_direction = 0; p.direction = {DirectionKind::cartesian, {1, 0, 0}}; },
+         "direction", "sign of its intensity"},
+        {"impact on x, y, z needs a spherical direction", T::dynamic_impact,
+         [](auto& p) { set_axes(p, {Axis::x, Axis::y, Axis::z}); p.dynamic.impact_direction = 0; }, "direction", "spherical"},
+        {"impact on x, y, z: the direction aims it", T::dynamic_impact,
+         [](auto& p) { set_axes(p, {Axis::x, Axis::y, Axis::z}); p.dynamic.impact_direction = 100; p.direction = {DirectionKind::spherical, {0, 9000, 0}}; },
+         "dynamic.impact_direction", "the angle must be 0"},
+        {"impact on two axes aims in x-y", T::dynamic_impact, [](auto& p) { set_axes(p, {Axis::y, Axis::z}); }, "axes", "x and y"},
+        {"paddle stays 2D", T::dynamic_paddle, [](auto& p) { set_axes(p, {Axis::x, Axis::y, Axis::z}); }, "axes", "2D only"},
     };
     for (const RuleCase& c : cases) expect_rule_error(c);
 }

@@ -370,13 +370,29 @@ TEST(SensationFileErrors, BlockArrays) {
     const std::string recoil = R"({"type": "dynamic_recoil", "duration_us": 1, "axes": ["x", "y"], "dynamic": {
         "blast_direction": 0, "blast_intensity": 1, "dynamic_mass": 1, "blast_resonance": 1, "blast_decay": 0, "play": 3}})";
     EXPECT_EQ(error_of(file_with(recoil)),
-              R"(bad.json: sensation "hum": dynamic: unknown field "play" (allowed here: blast_direction, blast_intensity, dynamic_mass, blast_resonance, blast_decay, interim_reporting))");
+              R"(bad.json: sensation "hum": dynamic: unknown field "play" (dynamic_inertia has it; allowed here: blast_direction, blast_intensity, dynamic_mass, blast_resonance, blast_decay, interim_reporting))");
+}
+
+TEST(SensationFileErrors, AFieldOfASiblingTypeNamesTheTypesThatHaveIt) {
+    // §3.7 gives walls a clipping option that §3.8's barriers do not have: the error says
+    // which types have the field, so the author sees they picked the wrong sibling.
+    const std::string barrier = R"({"type": "axis_barrier", "duration_us": 1, "axes": ["x"], "barrier": {
+        "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "clipping": true}})";
+    EXPECT_EQ(error_of(file_with(barrier)),
+              R"(bad.json: sensation "hum": barrier: unknown field "clipping" (axis_wall and angle_wall have it; allowed here: pos_hardness, neg_hardness, thickness, offset, surface_friction, surface_texture))");
+    // A sweep's sense in a plain sine: the five sweeps (§4.2.d) have it.
+    EXPECT_THAT(error_of(sine_with("", R"("magnitude": 2000, "period_us": 10000, "sweep_sense": "clockwise")")),
+                HasSubstr(R"(periodic: unknown field "sweep_sense" (sweep_sine, sweep_square, sweep_triangle, sweep_saw_up and sweep_saw_down have it; allowed here: )"));
+    // A field no type has gets no such note.
+    EXPECT_THAT(error_of(file_with(R"({"type": "axis_barrier", "duration_us": 1, "axes": ["x"], "barrier": {
+        "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "softness": 1}})")),
+                HasSubstr(R"(barrier: unknown field "softness" (allowed here: )"));
 }
 
 TEST(SensationFileErrors, AxisWallHasNoAngle) {
     const std::string text = R"({"type": "axis_wall", "duration_us": 1, "axes": ["x"], "wall": {"hardness": 1, "sense": "positive", "angle": 0}})";
     EXPECT_EQ(error_of(file_with(text)),
-              R"(bad.json: sensation "hum": wall: unknown field "angle" (allowed here: hardness, sense, offset, offset_mode, surface_friction, surface_texture, clipping))");
+              R"(bad.json: sensation "hum": wall: unknown field "angle" (angle_barrier and angle_wall have it; allowed here: hardness, sense, offset, offset_mode, surface_friction, surface_texture, clipping))");
 }
 
 TEST(SensationFileErrors, ForceProfileSamples) {

@@ -41,18 +41,22 @@ double deadband_gate(double relative_speed, double deadband) noexcept {
 void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     const EngineConfig& config = *c.config;
+    const PreslidingRule rule = presliding_rule(config, c.dt_s);
+    const double velocity_ref = static_cast<double>(config.velocity_ref);
+    const double inverse_fade_speed = 1.0 / (kBristleDampingFade * velocity_ref);
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
         const double magnitude = std::fmax(std::abs(b.pos_coefficient), std::abs(b.neg_coefficient));
-        const double presliding = presliding_distance(config, c.dt_s, magnitude);
-        const double surface_speed = b.offset * static_cast<double>(config.velocity_ref) / kFullScale;
+        const double stiffness = magnitude > 0 ? presliding_stiffness(rule, magnitude) : 0.0;
+        const double presliding = magnitude > 0 ? magnitude / stiffness : 0.0;
+        const double surface_speed = b.offset * velocity_ref / kFullScale;
         const double z = advance(c.state->friction.bristle[i], c.position[a], surface_speed * c.dt_s, presliding);
         const double relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
         double f = -(toward_positive ? b.pos_coefficient : b.neg_coefficient) * z;
-        if (presliding > 0 && c.dt_s > 0) f += bristle_damping(config, magnitude / presliding, z, relative_velocity);
-        f *= deadband_gate(scaled_velocity(config, relative_velocity), b.deadband);
+        if (presliding > 0 && c.dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        if (b.deadband > 0) f *= deadband_gate(scaled_velocity(config, relative_velocity), b.deadband);
         const double cap = toward_positive ? b.pos_saturation : b.neg_saturation;
         force[a] += f > cap ? cap : (f < -cap ? -cap : f);
     }

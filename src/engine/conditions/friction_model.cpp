@@ -6,16 +6,16 @@
 
 namespace feel::detail {
 
+PreslidingRule presliding_rule(const EngineConfig& config, double dt_s) noexcept {
+    PreslidingRule rule;
+    if (dt_s > 0) rule.passive = 2.0 * static_cast<double>(config.device_damping) / dt_s;
+    rule.cap = kMaxForcePerCount / (2.0 * static_cast<double>(config.sensor_step));
+    return rule;
+}
+
 double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept {
     if (!(f > 0)) return 0.0;
-    double stiffness = f / kMaxPresliding;
-    if (dt_s > 0) {
-        const double passive = 2.0 * static_cast<double>(config.device_damping) / dt_s;
-        if (passive > stiffness) stiffness = passive;
-    }
-    const double resolution_cap = kMaxForcePerCount / (2.0 * static_cast<double>(config.sensor_step));
-    if (stiffness > resolution_cap) stiffness = resolution_cap;
-    return f / stiffness;
+    return f / presliding_stiffness(presliding_rule(config, dt_s), f);
 }
 
 float advance(Bristle& b, double position, double slip, double presliding) noexcept {
@@ -29,6 +29,9 @@ float advance(Bristle& b, double position, double slip, double presliding) noexc
     const double dx = position - static_cast<double>(b.anchor) - slip;
     b.anchor = static_cast<float>(position);
     double z = b.deflection;
+    // Fully slid in the direction of travel: the exact update leaves z at ±1 (the common
+    // case while sliding), so skip its exponential.
+    if ((z == 1.0 && dx >= 0) || (z == -1.0 && dx <= 0)) return b.deflection;
     if (!(presliding > 0)) {
         if (dx > 0) z = 1.0;
         if (dx < 0) z = -1.0;
@@ -43,11 +46,18 @@ float advance(Bristle& b, double position, double slip, double presliding) noexc
 }
 
 double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept {
+    return bristle_damping(stiffness, z, velocity, 1.0 / (kBristleDampingFade * static_cast<double>(config.velocity_ref)));
+}
+
+double bristle_damping(double stiffness, double z, double velocity, double inverse_fade_speed) noexcept {
     if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0;
     const double rate = velocity * (1.0 - z * (velocity > 0 ? 1.0 : -1.0));
-    const double fade_speed = kBristleDampingFade * static_cast<double>(config.velocity_ref);
-    const double r = velocity / fade_speed;
-    return -stiffness * kBristleDampingTime * rate * std::exp(-r * r);
+    if (rate == 0) return 0.0;  // fully slid along the motion: no bristle rate to damp
+    const double r = velocity * inverse_fade_speed;
+    const double r2 = r * r;
+    // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
+    if (r2 > kDampingFadeCutoff) return 0.0;
+    return -stiffness * kBristleDampingTime * rate * std::exp(-r2);
 }
 
 double texture_bump(double s, double spacing, double width) noexcept {

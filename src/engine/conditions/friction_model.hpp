@@ -75,6 +75,26 @@ struct Bristle {
     bool primed = false;      // anchor is valid
 };
 
+// The square of the speed (in fade speeds) beyond which the microdamping is left out.
+inline constexpr double kDampingFadeCutoff = 36.0;
+
+// What the presliding stiffness K of every bristle of a tick depends on but f: the
+// passivity bound 2b/T and the sensor-resolution cap, force units per position unit. One
+// rule per tick saves the divisions per block (issue 14: friction's cost per effect).
+struct PreslidingRule {
+    double passive = 0.0;  // 2b/T, 0 when there is no tick to judge by
+    double cap = 0.0;      // kMaxForcePerCount / (2·sensor_step)
+};
+
+[[nodiscard]] PreslidingRule presliding_rule(const EngineConfig& config, double dt_s) noexcept;
+
+// K = min(max(2b/T, f / kMaxPresliding), cap) for a friction of magnitude f > 0.
+[[nodiscard]] inline double presliding_stiffness(const PreslidingRule& rule, double f) noexcept {
+    double stiffness = f * (1.0 / kMaxPresliding);
+    if (rule.passive > stiffness) stiffness = rule.passive;
+    return stiffness > rule.cap ? rule.cap : stiffness;
+}
+
 // The presliding distance Z, position units, for a friction of magnitude f (force units,
 // >= 0) on this device at this tick period (s). 0 for f = 0. dt_s <= 0 uses the guards
 // only (no tick to judge passivity by).
@@ -89,6 +109,8 @@ float advance(Bristle& b, double position, double slip, double presliding) noexc
 // units per position unit) at deflection z, the handle moving at `velocity` (units/s)
 // relative to the surface.
 [[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
+// The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller.
+[[nodiscard]] double bristle_damping(double stiffness, double z, double velocity, double inverse_fade_speed) noexcept;
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
 // multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine

@@ -31,7 +31,9 @@
 // the direction the kick pushes: vel = −Intensity·(sin θ, cos θ) on (x, y). A recoil's
 // mass (the weapon) kicks back away from where it fires, an impact's mass is driven away
 // from where the blow comes from; either way the first pull on the handle comes from θ,
-// like a constant force with polar direction θ. A negative intensity reverses it.
+// like a constant force with polar direction θ. A negative intensity reverses it. On one
+// axis the intensity's sign is the direction (§5.4's car hitting a wall, on a wheel); on
+// x, y, z a spherical direction aims it the way it aims a wave (§5.10's 3D devices).
 #include <cmath>
 
 #include "direction.hpp"
@@ -58,9 +60,17 @@ TetherLaw spring_law(double mass, double k) noexcept {
 
 // The initial velocity a directional dynamic gives effect axis i: the intensity along the
 // push of a force that comes from the compass angle (polar_factors: −(sin θ, cos θ)).
+// On one axis the intensity's sign is the direction: positive kicks toward +, like a
+// positive constant force on that axis. On x, y, z the spherical direction aims it
+// (direction_factors, as for a wave).
 double kick_velocity(const EffectParams& p, const EngineConfig& c, int i, int32_t angle, int32_t intensity) noexcept {
-    float push[kMaxAxes];
-    polar_factors(angle, push);
+    if (p.axis_count == 1) return dynamic_velocity(c, intensity);
+    float push[kMaxAxes] = {};
+    if (p.direction.kind == DirectionKind::spherical) {
+        direction_factors(p, push);
+    } else {
+        polar_factors(angle, push);
+    }
     return dynamic_velocity(c, intensity) * push[axis_index(p.axes[i])];
 }
 

@@ -153,3 +153,82 @@ TEST(Recoil, IsExactlyTheControlLawWithTheMappedIntegers) {
 
 }  // namespace
 }  // namespace feel::test
+
+namespace feel::test {
+namespace {
+
+TEST(Recoil, OnOneAxisTheSignOfTheIntensityIsTheDirection) {
+    // §5.4's Indy car hitting a wall is felt on a wheel: one axis. There the intensity's sign
+    // aims the kick: + pulls the handle toward +, like a positive constant force on that
+    // axis, exactly as the planar recoil does on x when fired from the west (27000).
+    for (int32_t intensity : {6000, -6000}) {
+        EffectParams line = recoil_params(0, intensity, 5000, 5000, 1000);
+        line.axis_count = 1;
+        line.axes[0] = Axis::x;
+        DynamicRig on_line;
+        on_line.tick({0, 0});
+        on_line.play(line);
+        DynamicRig in_plane;
+        in_plane.tick({0, 0});
+        in_plane.play(recoil_params(27000, intensity, 5000, 5000, 1000));
+        for (int k = 0; k < 200; ++k) {
+            const TickOutput a = on_line.tick({0, 0});
+            const TickOutput b = in_plane.tick({0, 0});
+            if (k == 0) {
+                EXPECT_GT(a.force[0] * (intensity > 0 ? 1.0 : -1.0), 100.0);
+            }
+            ASSERT_NEAR(a.force[0], b.force[0], 1e-3) << k;
+            ASSERT_EQ(a.force[1], 0.0f);
+        }
+    }
+}
+
+TEST(Recoil, OnThreeAxesASphericalDirectionAimsItAsItAimsAWave) {
+    // §5.10 speaks of 3D devices. On x, y, z the kick is aimed by a spherical direction and
+    // its first pull comes from that direction, like a constant force with the same one.
+    EngineConfig config;
+    config.axis_count = 3;
+    for (const Direction d : {Direction{DirectionKind::spherical, {4500, 6000, 0}},
+                              Direction{DirectionKind::spherical, {27000, 13500, 0}}}) {
+        EffectParams kick = recoil_params(0, 6000, 5000, 5000, 1000);
+        kick.axis_count = 3;
+        kick.axes[2] = Axis::z;
+        kick.direction = d;
+        EffectParams push;
+        push.type = EffectType::constant;
+        push.duration_us = kInfiniteUs;
+        push.axis_count = 3;
+        push.axes[0] = Axis::x;
+        push.axes[1] = Axis::y;
+        push.axes[2] = Axis::z;
+        push.direction = d;
+        push.constant.magnitude = 5000;
+        DynamicRig kicked(config), pushed(config);
+        kicked.tick({0, 0, 0});
+        pushed.tick({0, 0, 0});
+        kicked.play(kick);
+        pushed.play(push);
+        const TickOutput a = kicked.tick({0, 0, 0});
+        const TickOutput b = pushed.tick({0, 0, 0});
+        const double na = std::hypot(a.force[0], a.force[1], a.force[2]);
+        const double nb = std::hypot(b.force[0], b.force[1], b.force[2]);
+        ASSERT_GT(na, 100.0);
+        for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(a.force[axis] / na, b.force[axis] / nb, 1e-4) << axis;
+    }
+}
+
+TEST(Recoil, AimsOnlyInTheFormsThePrimerGives) {
+    DynamicRig rig;
+    EffectParams p = recoil_params(9000, 6000, 5000, 5000, 1000);
+    p.axis_count = 1;  // on one axis the sign aims it: an angle is refused
+    Error e = rig.engine().create(p).error;
+    EXPECT_EQ(std::string(e.field), "dynamic.blast_direction");
+    EXPECT_NE(e.message().find("the angle must be 0"), std::string::npos) << e.message();
+    EffectParams paddle = planar_dynamic(EffectType::dynamic_paddle);
+    paddle.axis_count = 1;
+    e = rig.engine().create(paddle).error;
+    EXPECT_NE(e.message().find("2D only"), std::string::npos) << e.message();
+}
+
+}  // namespace
+}  // namespace feel::test

@@ -1,0 +1,81 @@
+// Friction shoved and released (the review of issue 16): a free handle is shoved by a
+// force larger than the friction, then let go. §3.5: friction "always resists the
+// direction of motion", so once released the handle must coast to a stop and stay there:
+// friction may never push it along its motion (beyond what one sensor count can hide),
+// and the handle may not travel back the way it came.
+//
+// DISABLED: the Dahl bristle feel renders friction with today fails it (issue 16 §1 is
+// open; docs/conditions.md, "Friction", "Limits" has the figures). Run it with
+// --gtest_also_run_disabled_tests --gtest_filter='FrictionShove.*' to see where it stands.
+#include "friction_loop.hpp"
+
+namespace feel::test {
+namespace {
+
+// A constant force on x for the first `shove_s` seconds, then nothing.
+EffectParams shove_on_x(int32_t magnitude, double shove_s) {
+    EffectParams p = constant_force_on_x(magnitude);
+    p.duration_us = static_cast<int64_t>(std::llround(shove_s * 1e6));
+    return p;
+}
+
+struct ShoveResult {
+    double forward = 0;        // from rest to the furthest point, position units
+    double back = 0;           // from the furthest point back toward the start
+    double along_work = 0;     // work friction did along the motion after release, force units · position units
+    int along_fast_ticks = 0;  // ticks where friction pushed along a motion faster than one count per tick
+    double largest_step = 0;   // the largest tick-to-tick change of the force after release
+    double final_force = 0;
+};
+
+ShoveResult shove_and_release(const char* profile_name, int32_t friction, double rate_hz) {
+    const double shove_s = 0.02;
+    const auto rows = run_loop(profile_name, sim::Grip::none, "hold:0",
+                               {friction_on({Axis::x}, friction), shove_on_x(10000, shove_s)}, 1.5, rate_hz);
+    const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
+    const double count = 2.0 * 10000 / profile.axes[0].sensor_counts;
+    const double dt = 1.0 / rate_hz;
+    ShoveResult r;
+    const double start = rows[0].x[0];
+    double furthest = start;
+    const size_t released = static_cast<size_t>(std::llround(shove_s * rate_hz)) + 1;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        furthest = std::max(furthest, rows[i].x[0]);
+        if (i < released) continue;
+        r.back = std::max(r.back, furthest - rows[i].x[0]);
+        // After release the engine's force is friction alone.
+        const double f = rows[i].force[0], v = rows[i].v[0];
+        if (f * v > 0) {
+            r.along_work += f * v * dt;
+            if (std::fabs(v) > count * rate_hz) ++r.along_fast_ticks;
+        }
+        if (i > released) r.largest_step = std::max(r.largest_step, std::fabs(f - rows[i - 1].force[0]));
+    }
+    r.forward = furthest - start;
+    r.final_force = rows.back().force[0];
+    return r;
+}
+
+TEST(FrictionShove, DISABLED_AReleasedHandleStaysWhereItStoppedOnEveryProfile) {
+    // The review's case: friction 8000, shoved by 10000 for 20 ms. Required: friction never
+    // pushes along the motion beyond one sensor count's worth of work, and the handle
+    // travels back no more than max(2 sensor counts, 1% of its forward travel).
+    for (const char* profile_name : {"joystick", "wheel", "3axis"}) {
+        for (double rate : {500.0, 1000.0, 10000.0}) {
+            for (int32_t f : {3000, 8000}) {
+                SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz f=" + std::to_string(f));
+                const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
+                const double count = 2.0 * 10000 / profile.axes[0].sensor_counts;
+                const ShoveResult r = shove_and_release(profile_name, f, rate);
+                EXPECT_GT(r.forward, 10 * count);  // it really was shoved
+                EXPECT_LE(r.back, std::max(2 * count, 0.01 * r.forward));
+                EXPECT_EQ(r.along_fast_ticks, 0);
+                EXPECT_LE(r.along_work, f * count);
+                EXPECT_LE(std::fabs(r.final_force), 0.05 * f);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace feel::test
