@@ -9,7 +9,7 @@ WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean
+.PHONY: all deps build demo plots test unit-tests fuzz bench clean firmware
 
 all: build
 
@@ -35,7 +35,7 @@ demo: build
 	$(FEEL) stream --rate 60 --seconds 1
 
 # The fuzz run goes first so that the test summary is the last thing printed.
-test: build fuzz unit-tests
+test: build firmware fuzz unit-tests
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -56,6 +56,13 @@ fuzz: deps
 	        $(BUILD)-fuzz/corpus/$$t fuzz/corpus/$$t; \
 	done
 
+# The engine for a Cortex-M4F (arm-none-eabi-gcc, firmware/), then its size report; the
+# test program runs on qemu's mps2-an386 board in make test (tests/firmware/).
+firmware: deps
+	cmake -S firmware -B $(BUILD)-firmware -G Ninja -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/firmware/arm-none-eabi.cmake
+	cmake --build $(BUILD)-firmware
+	bash firmware/size-report.sh $(BUILD)-firmware
+
 # Every sensation of every example file, rendered and plotted under out/examples/.
 plots: build
 	bash scripts/render-examples.sh $(FEEL)
@@ -67,4 +74,4 @@ bench: build
 	$(BUILD)/bench/feel_bench_streaming
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-fuzz out
+	rm -rf $(BUILD) $(BUILD)-fuzz $(BUILD)-firmware out

@@ -18,6 +18,8 @@ extern int main(void);
  * and -nostartfiles leaves them out. Nothing to do in either. */
 void _init(void) {}
 void _fini(void) {}
+/* Static objects' destructors register against this handle (crtbegin.o would define it). */
+void* __dso_handle = 0;
 
 void Reset_Handler(void) {
     volatile uint32_t* const cpacr = (volatile uint32_t*)0xE000ED88u;
