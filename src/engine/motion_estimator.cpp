@@ -83,8 +83,9 @@ constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWin
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
-// Sums of y, u·y and u²·y over samples begin..end-1, added to sum[0..2]. Four partial sums
-// in a fixed order: vectorizable and the same on every platform.
+// Sums of y, u·y and (for a parabola) u²·y over samples begin..end-1, added to sum[0..2].
+// Four partial sums in a fixed order: vectorizable and the same on every platform.
+template <bool kParabola>
 void add_moments(const float* y, const float* u, const float* u2, int begin, int end, float sum[3]) noexcept {
     float a0[4] = {}, a1[4] = {}, a2[4] = {};
     int i = begin;
@@ -92,17 +93,17 @@ void add_moments(const float* y, const float* u, const float* u2, int begin, int
         for (int j = 0; j < 4; ++j) {
             a0[j] += y[i + j];
             a1[j] += u[i + j] * y[i + j];
-            a2[j] += u2[i + j] * y[i + j];
+            if (kParabola) a2[j] += u2[i + j] * y[i + j];
         }
     }
     for (int j = 0; i < end; ++i, ++j) {
         a0[j] += y[i];
         a1[j] += u[i] * y[i];
-        a2[j] += u2[i] * y[i];
+        if (kParabola) a2[j] += u2[i] * y[i];
     }
     sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
     sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
-    sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
+    if (kParabola) sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
 }
 
 // True if every sample 0..n lies within band of c0 + c1·u (+ c2·u² for a parabola). A
@@ -114,8 +115,7 @@ bool within_band(const float* y, const float* u, const float* u2, int n, float c
                  float band) noexcept {
     auto outside = [=](int i) {
         const float fit = kParabola ? c0 + c1 * u[i] + c2 * u2[i] : c0 + c1 * u[i];
-        const float r = y[i] - fit;
-        return static_cast<int>(r > band) | static_cast<int>(r < -band);
+        return static_cast<int>(std::fabs(y[i] - fit) > band);
     };
     if (outside(0) | outside(n) | outside(n / 2)) return false;
     int any = 0;
@@ -209,6 +209,7 @@ void MotionEstimator::reset() noexcept {
     for (int a = 0; a < kMaxAxes; ++a) {
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
+        acceleration_ready_[a] = true;
     }
 }
 
@@ -223,7 +224,8 @@ void MotionEstimator::push_interval(int64_t interval_us) noexcept {
     }
 }
 
-void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int axis_count) noexcept {
+void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int axis_count,
+                             bool with_acceleration) noexcept {
     if (count_ > 0 && t_us < t_us_[head_]) reset();  // time went backwards: start over
     // A new slot for this sample, unless it is the same instant as the newest one or would
     // crowd it: samples before the newest stay kMinSpacingUs apart, so that the history
@@ -259,7 +261,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     }
 
     refresh_time_pattern();
-    for (int a = 0; a < axis_count && a < kMaxAxes; ++a) estimate_axis(a);
+    for (int a = 0; a < axis_count && a < kMaxAxes; ++a) estimate_axis(a, with_acceleration);
+    for (int a = axis_count; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
 void MotionEstimator::refresh_time_pattern() noexcept {
@@ -302,35 +305,22 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     }
 }
 
-void MotionEstimator::estimate_axis(int axis) noexcept {
+bool MotionEstimator::gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept {
     const TimePattern& p = pattern_;
     const int max_n = p.max_n;
-    if (max_n < 1) {
-        velocity_[axis] = acceleration_[axis] = 0.0f;
-        velocity_window_[axis] = acceleration_window_[axis] = 0;
-        return;
-    }
     // At rest (every sample the same reading) both fits are exactly 0 over the whole
     // history: skip them, it is the commonest case. (Where still_run_ reads short after a
-    // replaced sample, the fits below reach the same answer.)
-    if (still_run_[axis] > max_n) {
-        velocity_window_[axis] = max_n;
-        acceleration_window_[axis] = max_n >= kMinAccelerationWindow ? max_n : 0;
-        velocity_[axis] = 0.0f;
-        acceleration_[axis] = 0.0f;
-        return;
-    }
+    // replaced sample, the fits reach the same answer.)
+    if (still_run_[axis] > max_n) return false;
     // The samples newest first, relative to the newest: the ring from head_ to its end,
     // then from its start.
     const float* x = x_[axis];
     const float x0 = x[head_];
-    float y[kHistory];
     const int first = head_ + max_n < kHistory ? max_n + 1 : kHistory - head_;
     for (int i = 0; i < first; ++i) y[i] = x[head_ + i] - x0;
     for (int i = first; i <= max_n; ++i) y[i] = x[i - first] - x0;
     // The window sums at every rung: one pass, segment by segment; the short windows'
     // segments are a few samples each, summed one by one.
-    float sums[3][kRungs];
     float running[3] = {};
     int begin = 0;
     for (int r = 0; r < p.rung_count; ++r) {
@@ -339,38 +329,80 @@ void MotionEstimator::estimate_axis(int axis) noexcept {
             for (int i = begin; i < end; ++i) {
                 running[0] += y[i];
                 running[1] += p.u[i] * y[i];
-                running[2] += p.u2[i] * y[i];
+                if (parabola) running[2] += p.u2[i] * y[i];
             }
+        } else if (parabola) {
+            add_moments<true>(y, p.u, p.u2, begin, end, running);
         } else {
-            add_moments(y, p.u, p.u2, begin, end, running);
+            add_moments<false>(y, p.u, p.u2, begin, end, running);
         }
         begin = end;
         for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
     }
-    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
+    return true;
+}
 
+void MotionEstimator::estimate_axis(int axis, bool with_acceleration) noexcept {
+    const TimePattern& p = pattern_;
+    acceleration_ready_[axis] = with_acceleration;
+    acceleration_[axis] = 0.0f;
+    acceleration_window_[axis] = 0;
+    if (p.max_n < 1) {
+        velocity_[axis] = 0.0f;
+        velocity_window_[axis] = 0;
+        return;
+    }
+    float y[kHistory];
+    float sums[3][kRungs];
+    if (!gather_axis(axis, with_acceleration, y, sums)) {
+        velocity_window_[axis] = p.max_n;
+        velocity_[axis] = 0.0f;
+        if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
+        return;
+    }
+    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
     float v = 0;
     const int nv = adaptive_window(w, p.rung_n, p.rung_count, 1, band_, fit_line, v);
+    velocity_window_[axis] = nv;
+    velocity_[axis] = nv > 0 && std::isfinite(v) ? v : 0.0f;
+    if (with_acceleration) fit_acceleration(axis, y, sums);
+}
+
+void MotionEstimator::estimate_acceleration(int axis) noexcept {
+    acceleration_ready_[axis] = true;
+    acceleration_[axis] = 0.0f;
+    acceleration_window_[axis] = 0;
+    const int max_n = pattern_.max_n;
+    if (max_n < kMinAccelerationWindow) return;
+    float y[kHistory];
+    float sums[3][kRungs];
+    if (!gather_axis(axis, true, y, sums)) {
+        acceleration_window_[axis] = max_n;
+        return;
+    }
+    fit_acceleration(axis, y, sums);
+}
+
+void MotionEstimator::fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept {
+    const TimePattern& p = pattern_;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
     // through a few quantized samples reads the rounding as curvature (3 samples 1 ms
-    // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Where no longer window
-    // fits, the shortest one is used anyway: its estimate is the motion's mean curvature
-    // over those few ms. Until the history holds that many samples, it reads 0.
+    // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Until the history holds
+    // that many samples, it reads 0.
+    if (p.max_n < kMinAccelerationWindow) return;
+    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
     float a = 0;
-    int na = 0;
-    if (max_n >= kMinAccelerationWindow) {
-        na = adaptive_window(w, p.rung_n, p.rung_count, kMinAccelerationWindow, band_, fit_parabola, a);
-        if (na == 0) {
-            int r = 0;  // kMinAccelerationWindow is a rung (kLadder holds it; or it is max_n)
-            while (p.rung_n[r] != kMinAccelerationWindow) ++r;
-            if (fit_parabola(w, r, kMinAccelerationWindow, std::numeric_limits<float>::infinity(), a)) {
-                na = kMinAccelerationWindow;
-            }
+    int na = adaptive_window(w, p.rung_n, p.rung_count, kMinAccelerationWindow, band_, fit_parabola, a);
+    // Where no longer window fits, the shortest one is used anyway: its estimate is the
+    // motion's mean curvature over those few ms.
+    if (na == 0) {
+        int r = 0;  // kMinAccelerationWindow is a rung (kLadder holds it; or it is max_n)
+        while (p.rung_n[r] != kMinAccelerationWindow) ++r;
+        if (fit_parabola(w, r, kMinAccelerationWindow, std::numeric_limits<float>::infinity(), a)) {
+            na = kMinAccelerationWindow;
         }
     }
-    velocity_window_[axis] = nv;
     acceleration_window_[axis] = na;
-    velocity_[axis] = nv > 0 && std::isfinite(v) ? v : 0.0f;
     acceleration_[axis] = na > 0 && std::isfinite(a) ? a : 0.0f;
 }
 

@@ -52,13 +52,23 @@ public:
     // Feeds the sensed positions of one tick at t_us. Times must not decrease; a sample at
     // the same time as the newest one, or closer than kMinSpacingUs to the one before it,
     // replaces the newest; an earlier time restarts the history.
-    void update(int64_t t_us, const float position[kMaxAxes], int axis_count) noexcept;
+    // with_acceleration false leaves the acceleration to be fitted if acceleration() is
+    // called (it then gathers the history again); the tick passes false when no inertia
+    // plays.
+    void update(int64_t t_us, const float position[kMaxAxes], int axis_count, bool with_acceleration = true) noexcept;
 
-    [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }          // units/s
-    [[nodiscard]] float acceleration(int axis) const noexcept { return acceleration_[axis]; }  // units/s²
+    [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
+    // units/s². Fitted by update() or, if it was told not to, on the first call after it.
+    [[nodiscard]] float acceleration(int axis) noexcept {
+        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        return acceleration_[axis];
+    }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
-    [[nodiscard]] int acceleration_window(int axis) const noexcept { return acceleration_window_[axis]; }
+    [[nodiscard]] int acceleration_window(int axis) noexcept {
+        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        return acceleration_window_[axis];
+    }
 
 private:
     // The sample times as the fits see them, shared by every axis: recomputed only when
@@ -75,8 +85,13 @@ private:
 
     void push_interval(int64_t interval_us) noexcept;
     void refresh_time_pattern() noexcept;
-    // Fits the windows of one axis.
-    void estimate_axis(int axis) noexcept;
+    // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
+    // sums at every rung (sums[p][r] = Σ u^p·y, p = 0, 1 and for a parabola 2); false at
+    // rest (every sample the same).
+    bool gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept;
+    void estimate_axis(int axis, bool with_acceleration) noexcept;
+    void estimate_acceleration(int axis) noexcept;
+    void fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept;
 
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
     int count_ = 0;      // valid samples in the ring, 0..kHistory
@@ -95,6 +110,7 @@ private:
     float acceleration_[kMaxAxes] = {};
     int velocity_window_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
+    bool acceleration_ready_[kMaxAxes] = {};
 };
 
 }  // namespace feel::detail

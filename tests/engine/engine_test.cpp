@@ -151,6 +151,12 @@ TEST_F(EngineMachinery, InvalidParamsAreRefusedByTheSharedValidator) {
 TEST_F(EngineMachinery, AConstantSpeedRampReadsItsExactVelocity) {
     // 10 units every 2 ms, unquantized: every window of the estimator sees a straight line,
     // so from the second tick on the velocity is the ramp's slope and the acceleration 0.
+    // (An inertia of no mass plays: the engine fits the acceleration when one reads it.)
+    EffectParams inertia;
+    inertia.type = EffectType::inertia;
+    const CreateResult created = engine_->create(inertia, {});
+    ASSERT_TRUE(created.error.ok());
+    ASSERT_TRUE(engine_->start(created.id).ok());
     TickInput in;
     TickOutput out;
     for (int k = 0; k < 80; ++k) {
