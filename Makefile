@@ -11,7 +11,7 @@ FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean test-asan test-tsan
+.PHONY: all deps build demo plots test unit-tests fuzz bench clean test-asan test-tsan firmware
 
 all: build
 
@@ -38,7 +38,7 @@ demo: build
 
 # The fuzz run goes first so that the test summary is the last thing printed; the
 # sanitizer runs come last: they only judge what the plain run already passed.
-test: build fuzz unit-tests test-asan test-tsan
+test: build firmware fuzz unit-tests test-asan test-tsan
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -82,6 +82,13 @@ test-tsan: deps
 	cmake --build $(BUILD)-tsan --target $(addprefix feel_suite_,$(TSAN_SUITES))
 	ctest --test-dir $(BUILD)-tsan --output-on-failure -L '^($(subst $(space),|,$(TSAN_SUITES)))$$'
 
+# The engine for a Cortex-M4F (arm-none-eabi-gcc, firmware/), then its size report; the
+# test program runs on qemu's mps2-an386 board in make test (tests/firmware/).
+firmware: deps
+	cmake -S firmware -B $(BUILD)-firmware -G Ninja -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/firmware/arm-none-eabi.cmake
+	cmake --build $(BUILD)-firmware
+	bash firmware/size-report.sh $(BUILD)-firmware
+
 # Every sensation of every example file, rendered and plotted under out/examples/.
 plots: build
 	bash scripts/render-examples.sh $(FEEL)
@@ -94,4 +101,4 @@ bench: build
 	$(BUILD)/bench/feel_bench_streaming
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-fuzz $(BUILD)-asan $(BUILD)-tsan out
+	rm -rf $(BUILD) $(BUILD)-fuzz $(BUILD)-asan $(BUILD)-tsan $(BUILD)-firmware out

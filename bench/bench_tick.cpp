@@ -7,6 +7,7 @@
 
 #include "busy_mix.hpp"
 #include "feel/engine.hpp"
+#include "peer_mix.hpp"
 
 namespace {
 
@@ -61,6 +62,34 @@ void BM_TickMixedWaves(benchmark::State& state) {
     state.counters["effects"] = effects;
 }
 BENCHMARK(BM_TickMixedWaves)->Arg(1)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+
+// Issue 14's 40-effect mix (peer_mix.hpp: 10 periodics with envelopes, 10 springs, 10
+// dampers, 5 frictions, 3 ramps, 2 constants on 2 axes) with the handle in a slow circle,
+// and the same mix with the handle at rest.
+void BM_TickPeerMix(benchmark::State& state) {
+    const bool moving = state.range(0) != 0;
+    Engine engine(EngineConfig{});
+    if (!load_peer_mix(engine)) {
+        state.SkipWithError("could not create the mix");
+        return;
+    }
+    TickInput in;
+    TickOutput out;
+    int64_t n = 0;
+    move_handle_in_slow_circle(in, 0);
+    for (auto _ : state) {
+        ++n;
+        if (moving) {
+            move_handle_in_slow_circle(in, n);
+        } else {
+            in.t_us = n * 1000;
+        }
+        engine.tick(in, out);
+        benchmark::DoNotOptimize(out);
+    }
+    state.counters["effects"] = kPeerMixEffects;
+}
+BENCHMARK(BM_TickPeerMix)->ArgName("moving")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

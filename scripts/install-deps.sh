@@ -12,6 +12,8 @@ packages=(
   librapidcheck-dev    # property tests
   libcairo2-dev        # plots (SVG and PNG)
   libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib  # make firmware: the engine on a Cortex-M4F
+  qemu-system-arm      # make test runs the Cortex-M4F build on the emulated mps2-an386 board
 )
 
 missing=()

@@ -184,12 +184,20 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // may hold it at their surface.
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
     const double dt_s = static_cast<double>(dt_us) * 1e-6;
-    m.motion.update(in.t_us, in.position, axes);
+    // The acceleration costs as much as the velocity and only inertia reads it: fitted
+    // only in ticks where one plays.
+    bool inertia_plays = false;
+    for (int32_t i = 0; i < m.slot_count; ++i) {
+        const Slot& s = m.slots[i];
+        inertia_plays |= s.params.type == EffectType::inertia && s.state != EffectState::free &&
+                         s.state != EffectState::stopped;
+    }
+    m.motion.update(in.t_us, in.position, axes, inertia_plays);
     float velocity[kMaxAxes] = {};
     float acceleration[kMaxAxes] = {};
     for (int a = 0; a < kMaxAxes; ++a) {
         velocity[a] = a < axes ? finite_or_zero(m.motion.velocity(a)) : 0.0f;
-        acceleration[a] = a < axes ? finite_or_zero(m.motion.acceleration(a)) : 0.0f;
+        acceleration[a] = a < axes && inertia_plays ? finite_or_zero(m.motion.acceleration(a)) : 0.0f;
         out.velocity[a] = velocity[a];
         out.acceleration[a] = acceleration[a];
         out.reported_position[a] = a < axes ? in.position[a] : 0.0f;

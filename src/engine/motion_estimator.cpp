@@ -48,10 +48,27 @@
 // through three quantized samples reads their rounding as curvature.
 //
 // Cost. Trying every window length costs O(N²) per axis; trying a geometric ladder of
-// lengths (1, 2, 3, 4, 6, 8, 12, ... and the whole history) costs O(N) and finds a window
-// within a factor 1.5 of the longest, which changes the estimate by less than its own
-// noise. Each fit is computed afresh over its window with times scaled to [-1, 0], so the
-// normal equations stay well conditioned at every loop rate.
+// lengths (1, 2, 3, 4, 6, 8, 12, ... and the whole history) finds a window within a factor
+// 1.5 of the longest, which changes the estimate by less than its own noise. The ladder's
+// fits are cheap because of how they are computed:
+//   * every window ends at the newest sample, so the least-squares sums of all of them
+//     come from one pass over the history: the sums of each segment between two rungs
+//     (y, u·y, u²·y; four independent partial sums, which the compiler turns into vector
+//     code), added up rung by rung. A fit is then a handful of operations (Cramer's rule).
+//   * the time sums (Σu^p) and the times themselves are shared by all axes and change only
+//     when the loop's rhythm does: at a steady rate every sample's age is i·T, so they are
+//     computed once and kept (refresh_time_pattern).
+//   * the band check (every sample within a count of the fit) is the one O(n) part; it
+//     walks the window from the newest sample in blocks of 8 and stops at the first block
+//     that leaves the band. A window too long for a bending motion leaves it first at its
+//     newest end, so a failed rung costs about one block.
+// Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
+// window of span σ scales as the same power of σ, so fitting in these fixed units has the
+// rounding of fitting in [-1, 0] per window: single precision is enough (the normal
+// equations of a parabola on [-1, 0] lose about 2 of float's 7 digits).
+//
+// Everything is float and every sum is taken in a fixed order, without fused multiply-adds
+// (the firmware build turns contraction off), so x86 and the Cortex-M4 agree bit for bit.
 #include "motion_estimator.hpp"
 
 #include <cmath>
@@ -60,94 +77,113 @@
 namespace feel::detail {
 namespace {
 
-// Window lengths tried, in sample intervals, after the whole history (adaptive_window
-// walks them from the longest down).
-constexpr int kLadder[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96};
+static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
+constexpr int kMask = MotionEstimator::kHistory - 1;
+constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
+// u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
+constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
-// Samples of one axis, newest first: tau[i] (s, <= 0, tau[0] = 0) and y[i] = x[i] - x[0].
-struct Window {
-    const double* tau;
-    const double* y;
+// Sums of y, u·y and (for a parabola) u²·y over samples begin..end-1, added to sum[0..2].
+// Four partial sums in a fixed order: vectorizable and the same on every platform.
+template <bool kParabola>
+void add_moments(const float* y, const float* u, const float* u2, int begin, int end, float sum[3]) noexcept {
+    float a0[4] = {}, a1[4] = {}, a2[4] = {};
+    int i = begin;
+    for (; i + 4 <= end; i += 4) {
+        for (int j = 0; j < 4; ++j) {
+            a0[j] += y[i + j];
+            a1[j] += u[i + j] * y[i + j];
+            if (kParabola) a2[j] += u2[i + j] * y[i + j];
+        }
+    }
+    for (int j = 0; i < end; ++i, ++j) {
+        a0[j] += y[i];
+        a1[j] += u[i] * y[i];
+        if (kParabola) a2[j] += u2[i] * y[i];
+    }
+    sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
+    sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
+    if (kParabola) sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
+}
+
+// True if every sample 0..n lies within band of c0 + c1·u (+ c2·u² for a parabola). A
+// window too long for a bending motion leaves the band first at its ends and its middle,
+// so those three samples are tried first; then the whole window in one pass without
+// branches (vector code).
+template <bool kParabola>
+bool within_band(const float* y, const float* u, const float* u2, int n, float c0, float c1, float c2,
+                 float band) noexcept {
+    auto outside = [=](int i) {
+        const float fit = kParabola ? c0 + c1 * u[i] + c2 * u2[i] : c0 + c1 * u[i];
+        return static_cast<int>(std::fabs(y[i] - fit) > band);
+    };
+    if (outside(0) | outside(n) | outside(n / 2)) return false;
+    int any = 0;
+    for (int i = 1; i < n; ++i) any |= outside(i);
+    return !any;
+}
+
+// One axis's samples newest first (y relative to the newest) with the shared times, and
+// the window sums at each rung.
+struct AxisWindow {
+    const float* y;
+    const float* u;
+    const float* u2;
+    const float (*time)[MotionEstimator::kRungs];  // time[p][r] = Σ u^p
+    const float* sum[3];                            // sum[p][r] = Σ u^p·y
 };
 
-// Least-squares line over samples 0..n; true and the slope (units/s) if every sample lies
-// within band of the line.
-bool fit_line(const Window& w, int n, double band, double& slope) noexcept {
-    const double span = -w.tau[n];
-    if (!(span > 0)) return false;
-    double s0 = 0, su = 0, suu = 0, sy = 0, suy = 0;
-    for (int i = 0; i <= n; ++i) {
-        const double u = w.tau[i] / span;
-        s0 += 1;
-        su += u;
-        suu += u * u;
-        sy += w.y[i];
-        suy += u * w.y[i];
-    }
-    const double det = s0 * suu - su * su;
+// Least-squares line over rung r's window (n intervals); true and the slope (units/s) if
+// every sample lies within band of it.
+bool fit_line(const AxisWindow& w, int r, int n, float band, float& slope) noexcept {
+    const float s0 = static_cast<float>(n + 1), s1 = w.time[1][r], s2 = w.time[2][r];
+    const float r0 = w.sum[0][r], r1 = w.sum[1][r];
+    const float det = s0 * s2 - s1 * s1;
     if (!(det > 0)) return false;
-    const double c1 = (s0 * suy - su * sy) / det;
-    const double c0 = (sy - c1 * su) / s0;
-    for (int i = 0; i <= n; ++i) {
-        if (std::fabs(w.y[i] - (c0 + c1 * w.tau[i] / span)) > band) return false;
-    }
-    slope = c1 / span;
+    const float c1 = (s0 * r1 - s1 * r0) / det;
+    const float c0 = (r0 - c1 * s1) / s0;
+    if (!within_band<false>(w.y, w.u, w.u2, n, c0, c1, 0.0f, band)) return false;
+    slope = c1 / kWindowS;
     return true;
 }
 
-// Least-squares parabola over samples 0..n (n >= 2); true and the second derivative
-// (units/s²) if every sample lies within band of it.
-bool fit_parabola(const Window& w, int n, double band, double& curvature) noexcept {
-    const double span = -w.tau[n];
-    if (!(span > 0)) return false;
-    double s[5] = {};  // s[p] = Σ u^p
-    double r[3] = {};  // r[p] = Σ u^p·y
-    for (int i = 0; i <= n; ++i) {
-        const double u = w.tau[i] / span;
-        const double u2 = u * u;
-        s[0] += 1;
-        s[1] += u;
-        s[2] += u2;
-        s[3] += u2 * u;
-        s[4] += u2 * u2;
-        r[0] += w.y[i];
-        r[1] += u * w.y[i];
-        r[2] += u2 * w.y[i];
-    }
+float det3(float a, float b, float c, float d, float e, float f, float g, float h, float k) noexcept {
+    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+}
+
+// Least-squares parabola over rung r's window (n >= 2); true and the second derivative
+// (units/s²) if every sample lies within band of it (an infinite band skips the check).
+bool fit_parabola(const AxisWindow& w, int r, int n, float band, float& curvature) noexcept {
+    const float s0 = static_cast<float>(n + 1), s1 = w.time[1][r], s2 = w.time[2][r], s3 = w.time[3][r],
+                s4 = w.time[4][r];
+    const float r0 = w.sum[0][r], r1 = w.sum[1][r], r2 = w.sum[2][r];
     // Normal equations M·c = r with M[i][j] = s[i+j], solved by Cramer's rule.
-    auto det3 = [](double a, double b, double c, double d, double e, double f, double g, double h,
-                   double k) { return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g); };
-    const double det = det3(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+    const float det = det3(s0, s1, s2, s1, s2, s3, s2, s3, s4);
     if (!(det > 0)) return false;
-    const double c0 = det3(r[0], s[1], s[2], r[1], s[2], s[3], r[2], s[3], s[4]) / det;
-    const double c1 = det3(s[0], r[0], s[2], s[1], r[1], s[3], s[2], r[2], s[4]) / det;
-    const double c2 = det3(s[0], s[1], r[0], s[1], s[2], r[1], s[2], s[3], r[2]) / det;
-    for (int i = 0; i <= n; ++i) {
-        const double u = w.tau[i] / span;
-        if (std::fabs(w.y[i] - (c0 + c1 * u + c2 * u * u)) > band) return false;
+    const float c2 = det3(s0, s1, r0, s1, s2, r1, s2, s3, r2) / det;
+    if (band < std::numeric_limits<float>::infinity()) {
+        const float c0 = det3(r0, s1, s2, r1, s2, s3, r2, s3, s4) / det;
+        const float c1 = det3(s0, r0, s2, s1, r1, s3, s2, r2, s4) / det;
+        if (!within_band<true>(w.y, w.u, w.u2, n, c0, c1, c2, band)) return false;
     }
-    curvature = 2.0 * c2 / (span * span);
+    curvature = 2.0f * c2 / (kWindowS * kWindowS);
     return true;
 }
 
-// The longest window from min_n up to max_n that fit() accepts, trying the whole history
+// The longest rung from min_n up whose window fit() accepts, trying the whole history
 // first and then the ladder downwards; 0 if none does. `value` receives the accepted
 // fit's estimate. Longest first rather than growing until the first failure: on a ramp
 // whose speed is close to a whole number of counts per tick the rounding error is a slow
 // sawtooth, which a middle-sized window can fail while both a short and a long one pass;
 // the long one is the better estimate, and for steady motion this order needs one fit.
 template <typename Fit>
-int adaptive_window(const Window& w, int min_n, int max_n, double band, Fit fit, double& value) noexcept {
-    constexpr int kRungs = static_cast<int>(sizeof kLadder / sizeof kLadder[0]);
-    int previous = max_n + 1;
-    for (int rung = kRungs; rung >= 0; --rung) {
-        int n = rung == kRungs ? max_n : kLadder[rung];
-        if (n > max_n) n = max_n;
-        if (n >= previous) continue;
+int adaptive_window(const AxisWindow& w, const int* rung_n, int rung_count, int min_n, float band, Fit fit,
+                    float& value) noexcept {
+    for (int r = rung_count - 1; r >= 0; --r) {
+        const int n = rung_n[r];
         if (n < min_n) break;
-        previous = n;
-        double estimate = 0;
-        if (fit(w, n, band, estimate)) {
+        float estimate = 0;
+        if (fit(w, r, n, band, estimate)) {
             value = estimate;
             return n;
         }
@@ -165,79 +201,209 @@ void MotionEstimator::configure(float sensor_step) noexcept {
 void MotionEstimator::reset() noexcept {
     count_ = 0;
     head_ = 0;
+    for (int& run : still_run_) run = 0;
+    steady_interval_us_ = 0;
+    steady_run_ = 0;
+    pattern_.steady_interval_us = 0;
+    pattern_.max_n = 0;
     for (int a = 0; a < kMaxAxes; ++a) {
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
+        acceleration_ready_[a] = true;
     }
 }
 
-void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int axis_count) noexcept {
+// Keeps count of how many of the newest intervals are equal: while they all are, the
+// time pattern is i·T and need not be recomputed.
+void MotionEstimator::push_interval(int64_t interval_us) noexcept {
+    if (interval_us == steady_interval_us_) {
+        if (steady_run_ < kHistory) ++steady_run_;
+    } else {
+        steady_interval_us_ = interval_us;
+        steady_run_ = 1;
+    }
+}
+
+void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int axis_count,
+                             bool with_acceleration) noexcept {
     if (count_ > 0 && t_us < t_us_[head_]) reset();  // time went backwards: start over
     // A new slot for this sample, unless it is the same instant as the newest one or would
     // crowd it: samples before the newest stay kMinSpacingUs apart, so that the history
     // spans kMaxWindowUs at any loop rate (at 10 kHz it keeps every 8th tick, plus the
     // newest). Otherwise the newest sample is replaced by this fresher reading.
-    const int previous = (head_ - 1 + kHistory) % kHistory;
+    const int previous = (head_ + 1) & kMask;
     const bool crowded = count_ >= 2 && t_us - t_us_[previous] < kMinSpacingUs;
-    if (count_ == 0 || (t_us > t_us_[head_] && !crowded)) {
-        head_ = (head_ + 1) % kHistory;
+    const bool pushed = count_ == 0 || (t_us > t_us_[head_] && !crowded);
+    if (pushed) {
+        if (count_ > 0) push_interval(t_us - t_us_[head_]);
+        head_ = (head_ - 1) & kMask;
         if (count_ < kHistory) ++count_;
+    } else if (count_ >= 2) {
+        // The newest interval changes: if it no longer matches, only it is known steady.
+        const int64_t interval = t_us - t_us_[previous];
+        if (interval != steady_interval_us_) {
+            steady_interval_us_ = interval;
+            steady_run_ = 1;
+        }
     }
     t_us_[head_] = t_us;
-    for (int a = 0; a < kMaxAxes; ++a) x_[a][head_] = a < axis_count ? position[a] : 0.0f;
-
-    // The sample times relative to the newest, shared by every axis.
-    double tau[kHistory];
-    int max_n = 0;
-    for (int i = 0; i < count_; ++i) {
-        const int k = (head_ - i + kHistory) % kHistory;
-        const int64_t age_us = t_us_[head_] - t_us_[k];
-        if (i > 1 && age_us > kMaxWindowUs) break;  // the newest two samples are always usable
-        tau[i] = -static_cast<double>(age_us) * 1e-6;
-        max_n = i;
+    for (int a = 0; a < kMaxAxes; ++a) {
+        const float x = a < axis_count ? position[a] : 0.0f;
+        // A new sample extends the run if it repeats the newest; a replacing one keeps it
+        // only if it repeats the value it replaces.
+        const float compared = pushed ? x_[a][(head_ + 1) & kMask] : x_[a][head_];
+        if (count_ >= 2 && x == compared) {
+            if (pushed && still_run_[a] < kHistory) ++still_run_[a];
+        } else {
+            still_run_[a] = 1;
+        }
+        x_[a][head_] = x;
     }
-    for (int a = 0; a < axis_count && a < kMaxAxes; ++a) estimate_axis(a, tau, max_n);
+
+    refresh_time_pattern();
+    for (int a = 0; a < axis_count && a < kMaxAxes; ++a) estimate_axis(a, with_acceleration);
+    for (int a = axis_count; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
-void MotionEstimator::estimate_axis(int axis, const double* tau, int max_n) noexcept {
-    double y[kHistory];
-    for (int i = 0; i <= max_n; ++i) {
-        const int k = (head_ - i + kHistory) % kHistory;
-        y[i] = static_cast<double>(x_[axis][k]) - static_cast<double>(x_[axis][head_]);
+void MotionEstimator::refresh_time_pattern() noexcept {
+    TimePattern& p = pattern_;
+    // Steady: every interval in the window is T, so max_n follows from T alone, and the
+    // pattern is the one already computed if it was computed for the same T and max_n.
+    if (count_ >= 2 && steady_interval_us_ > 0) {
+        const int64_t fit = kMaxWindowUs / steady_interval_us_;
+        int max_n = count_ - 1;
+        if (fit < max_n) max_n = fit < 1 ? 1 : static_cast<int>(fit);
+        if (steady_run_ >= max_n && p.steady_interval_us == steady_interval_us_ && p.max_n == max_n) return;
     }
+    int max_n = 0;
+    for (int i = 0; i < count_; ++i) {
+        const int64_t age_us = t_us_[head_] - t_us_[(head_ + i) & kMask];
+        if (i > 1 && age_us > kMaxWindowUs) break;  // the newest two samples are always usable
+        p.u[i] = -static_cast<float>(age_us) * kUnitsPerUs;
+        p.u2[i] = p.u[i] * p.u[i];
+        max_n = i;
+    }
+    p.max_n = max_n;
+    p.steady_interval_us = max_n >= 1 && steady_run_ >= max_n ? steady_interval_us_ : 0;
+    p.rung_count = 0;
+    for (int n : kLadder) {
+        if (n < max_n) p.rung_n[p.rung_count++] = n;
+    }
+    p.rung_n[p.rung_count++] = max_n;
+    float sum[5] = {};
+    int i = 0;
+    for (int r = 0; r < p.rung_count; ++r) {
+        for (; i <= p.rung_n[r]; ++i) {
+            const float u = p.u[i], u2 = p.u2[i];
+            sum[0] += 1.0f;
+            sum[1] += u;
+            sum[2] += u2;
+            sum[3] += u2 * u;
+            sum[4] += u2 * u2;
+        }
+        for (int k = 0; k < 5; ++k) p.moment[k][r] = sum[k];
+    }
+}
+
+bool MotionEstimator::gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept {
+    const TimePattern& p = pattern_;
+    const int max_n = p.max_n;
     // At rest (every sample the same reading) both fits are exactly 0 over the whole
-    // history: skip them, it is the commonest case.
-    bool still = true;
-    for (int i = 1; i <= max_n && still; ++i) still = y[i] == 0.0;
-    if (still) {
-        velocity_window_[axis] = max_n;
-        acceleration_window_[axis] = max_n >= kMinAccelerationWindow ? max_n : 0;
+    // history: skip them, it is the commonest case. (Where still_run_ reads short after a
+    // replaced sample, the fits reach the same answer.)
+    if (still_run_[axis] > max_n) return false;
+    // The samples newest first, relative to the newest: the ring from head_ to its end,
+    // then from its start.
+    const float* x = x_[axis];
+    const float x0 = x[head_];
+    const int first = head_ + max_n < kHistory ? max_n + 1 : kHistory - head_;
+    for (int i = 0; i < first; ++i) y[i] = x[head_ + i] - x0;
+    for (int i = first; i <= max_n; ++i) y[i] = x[i - first] - x0;
+    // The window sums at every rung: one pass, segment by segment; the short windows'
+    // segments are a few samples each, summed one by one.
+    float running[3] = {};
+    int begin = 0;
+    for (int r = 0; r < p.rung_count; ++r) {
+        const int end = p.rung_n[r] + 1;
+        if (end - begin < 8) {
+            for (int i = begin; i < end; ++i) {
+                running[0] += y[i];
+                running[1] += p.u[i] * y[i];
+                if (parabola) running[2] += p.u2[i] * y[i];
+            }
+        } else if (parabola) {
+            add_moments<true>(y, p.u, p.u2, begin, end, running);
+        } else {
+            add_moments<false>(y, p.u, p.u2, begin, end, running);
+        }
+        begin = end;
+        for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
+    }
+    return true;
+}
+
+void MotionEstimator::estimate_axis(int axis, bool with_acceleration) noexcept {
+    const TimePattern& p = pattern_;
+    acceleration_ready_[axis] = with_acceleration;
+    acceleration_[axis] = 0.0f;
+    acceleration_window_[axis] = 0;
+    if (p.max_n < 1) {
         velocity_[axis] = 0.0f;
-        acceleration_[axis] = 0.0f;
+        velocity_window_[axis] = 0;
         return;
     }
-    const Window w{tau, y};
-    const double band = band_;
+    float y[kHistory];
+    float sums[3][kRungs];
+    if (!gather_axis(axis, with_acceleration, y, sums)) {
+        velocity_window_[axis] = p.max_n;
+        velocity_[axis] = 0.0f;
+        if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
+        return;
+    }
+    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
+    float v = 0;
+    const int nv = adaptive_window(w, p.rung_n, p.rung_count, 1, band_, fit_line, v);
+    velocity_window_[axis] = nv;
+    velocity_[axis] = nv > 0 && std::isfinite(v) ? v : 0.0f;
+    if (with_acceleration) fit_acceleration(axis, y, sums);
+}
 
-    double v = 0;
-    const int nv = adaptive_window(w, 1, max_n, band, fit_line, v);
+void MotionEstimator::estimate_acceleration(int axis) noexcept {
+    acceleration_ready_[axis] = true;
+    acceleration_[axis] = 0.0f;
+    acceleration_window_[axis] = 0;
+    const int max_n = pattern_.max_n;
+    if (max_n < kMinAccelerationWindow) return;
+    float y[kHistory];
+    float sums[3][kRungs];
+    if (!gather_axis(axis, true, y, sums)) {
+        acceleration_window_[axis] = max_n;
+        return;
+    }
+    fit_acceleration(axis, y, sums);
+}
+
+void MotionEstimator::fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept {
+    const TimePattern& p = pattern_;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
     // through a few quantized samples reads the rounding as curvature (3 samples 1 ms
-    // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Where no longer window
-    // fits, the shortest one is used anyway: its estimate is the motion's mean curvature
-    // over those few ms. Until the history holds that many samples, it reads 0.
-    double a = 0;
-    int na = 0;
-    if (max_n >= kMinAccelerationWindow) {
-        na = adaptive_window(w, kMinAccelerationWindow, max_n, band, fit_parabola, a);
-        if (na == 0 && fit_parabola(w, kMinAccelerationWindow, std::numeric_limits<double>::infinity(), a)) {
+    // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Until the history holds
+    // that many samples, it reads 0.
+    if (p.max_n < kMinAccelerationWindow) return;
+    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
+    float a = 0;
+    int na = adaptive_window(w, p.rung_n, p.rung_count, kMinAccelerationWindow, band_, fit_parabola, a);
+    // Where no longer window fits, the shortest one is used anyway: its estimate is the
+    // motion's mean curvature over those few ms.
+    if (na == 0) {
+        int r = 0;  // kMinAccelerationWindow is a rung (kLadder holds it; or it is max_n)
+        while (p.rung_n[r] != kMinAccelerationWindow) ++r;
+        if (fit_parabola(w, r, kMinAccelerationWindow, std::numeric_limits<float>::infinity(), a)) {
             na = kMinAccelerationWindow;
         }
     }
-    velocity_window_[axis] = nv;
     acceleration_window_[axis] = na;
-    velocity_[axis] = nv > 0 && std::isfinite(v) ? static_cast<float>(v) : 0.0f;
-    acceleration_[axis] = na > 0 && std::isfinite(a) ? static_cast<float>(a) : 0.0f;
+    acceleration_[axis] = na > 0 && std::isfinite(a) ? a : 0.0f;
 }
 
 }  // namespace feel::detail

@@ -14,7 +14,8 @@
 // docs/conditions.md the reasoning and the measured accuracy.
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
-// function of the samples fed in.
+// function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
+// FPU), time in integer microseconds.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +37,10 @@ public:
     static constexpr int64_t kMinSpacingUs = kMaxWindowUs / (kHistory - 1);
     // The acceleration is fitted over at least this many sample intervals (8 ms at 1 kHz).
     static constexpr int kMinAccelerationWindow = 8;
+    // Window lengths tried (in sample intervals) below the whole history, shortest first;
+    // kRungs counts them and the whole history.
+    static constexpr int kLadder[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96};
+    static constexpr int kRungs = static_cast<int>(sizeof kLadder / sizeof kLadder[0]) + 1;
 
     // sensor_step: the position change of one sensor count, normalized units (> 0). The
     // fit tolerance is one count: a sample one count off a line is quantization, two
@@ -47,27 +52,65 @@ public:
     // Feeds the sensed positions of one tick at t_us. Times must not decrease; a sample at
     // the same time as the newest one, or closer than kMinSpacingUs to the one before it,
     // replaces the newest; an earlier time restarts the history.
-    void update(int64_t t_us, const float position[kMaxAxes], int axis_count) noexcept;
+    // with_acceleration false leaves the acceleration to be fitted if acceleration() is
+    // called (it then gathers the history again); the tick passes false when no inertia
+    // plays.
+    void update(int64_t t_us, const float position[kMaxAxes], int axis_count, bool with_acceleration = true) noexcept;
 
-    [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }          // units/s
-    [[nodiscard]] float acceleration(int axis) const noexcept { return acceleration_[axis]; }  // units/s²
+    [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
+    // units/s². Fitted by update() or, if it was told not to, on the first call after it.
+    [[nodiscard]] float acceleration(int axis) noexcept {
+        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        return acceleration_[axis];
+    }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
-    [[nodiscard]] int acceleration_window(int axis) const noexcept { return acceleration_window_[axis]; }
+    [[nodiscard]] int acceleration_window(int axis) noexcept {
+        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        return acceleration_window_[axis];
+    }
 
 private:
-    // Fits the windows of one axis; tau[i] is the age of sample i (s, <= 0), 0..max_n.
-    void estimate_axis(int axis, const double* tau, int max_n) noexcept;
+    // The sample times as the fits see them, shared by every axis: recomputed only when
+    // they change, which at a steady loop rate is never (every sample's age is then i·T).
+    struct TimePattern {
+        int max_n = 0;               // samples 0..max_n are within kMaxWindowUs of the newest
+        int rung_count = 0;          // windows tried: rung_n[0..rung_count-1], the last max_n
+        int rung_n[kRungs] = {};     // their lengths, ascending
+        float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
+        float u[kHistory] = {};      // u_i = -age_i / kMaxWindowUs, in [-1, 0]
+        float u2[kHistory] = {};     // u_i²
+        int64_t steady_interval_us = 0;  // every interval was this (0: not a steady pattern)
+    };
+
+    void push_interval(int64_t interval_us) noexcept;
+    void refresh_time_pattern() noexcept;
+    // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
+    // sums at every rung (sums[p][r] = Σ u^p·y, p = 0, 1 and for a parabola 2); false at
+    // rest (every sample the same).
+    bool gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept;
+    void estimate_axis(int axis, bool with_acceleration) noexcept;
+    void estimate_acceleration(int axis) noexcept;
+    void fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept;
 
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
     int count_ = 0;      // valid samples in the ring, 0..kHistory
-    int head_ = 0;       // index of the newest sample
+    int head_ = 0;       // index of the newest sample; older ones follow it (mod kHistory)
+    // The newest steady_run_ intervals all equal steady_interval_us_ (µs).
+    int64_t steady_interval_us_ = 0;
+    int steady_run_ = 0;
     int64_t t_us_[kHistory] = {};
     float x_[kMaxAxes][kHistory] = {};
+    // How many of the newest samples of each axis read the newest value (never more than
+    // they do; it may read fewer after a replaced sample): at rest it reaches max_n and
+    // the fits are skipped without looking at the history.
+    int still_run_[kMaxAxes] = {};
+    TimePattern pattern_;
     float velocity_[kMaxAxes] = {};
     float acceleration_[kMaxAxes] = {};
     int velocity_window_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
+    bool acceleration_ready_[kMaxAxes] = {};
 };
 
 }  // namespace feel::detail

@@ -35,7 +35,7 @@ int32_t type_specific_bytes(const EffectParams& p) noexcept {
         case EffectType::smart_pop: return pool_cost::kConstant;
         case EffectType::ramp: return pool_cost::kRamp;
         case EffectType::force_profile:
-            return pool_cost::kCustom + pool_cost::kSample * std::max(p.custom.sample_count, 0);
+            return pool_cost::kCustom + pool_cost::kSample * std::max<int32_t>(p.custom.sample_count, 0);
         default: break;
     }
     // Dynamic Sensations: the device keeps what the §8.4 table maps them to, one control

@@ -1,0 +1,71 @@
+// The engine's memory on the Cortex-M4F for 32 effect slots on 2 axes, itemised; run by
+// `make firmware` under qemu after the build (the flash figures come from the linked
+// image, see firmware/CMakeLists.txt). Sample memory and the report queue are sized as a
+// small device would: 1024 force-profile samples, 16 reports.
+#include <cstdio>
+
+#include "engine_impl.hpp"  // detail::Slot
+#include "heap_guard.h"
+#include "peer_mix.hpp"
+
+namespace {
+
+// Deepest use of the stack during a tick: the stack below the current frame is painted
+// before and read after.
+constexpr unsigned kPaint = 8192;
+
+__attribute__((noinline)) void paint() {
+    volatile unsigned char area[kPaint];
+    for (unsigned i = 0; i < kPaint; ++i) area[i] = 0xA5;
+}
+
+__attribute__((noinline)) unsigned untouched() {
+    volatile unsigned char area[kPaint];
+    unsigned i = 0;
+    while (i < kPaint && area[i] == 0xA5) ++i;
+    return i;
+}
+
+}  // namespace
+
+int main() {
+    using namespace feel;
+    EngineConfig c;
+    c.axis_count = 2;
+    c.max_effects = 32;
+    c.max_samples = 1024;
+    c.report_capacity = 16;
+    std::printf("feel-m4-size\n");  // stdio takes its buffer now, before the count
+    const size_t before = heap_guard_requested_bytes();
+    Engine engine(c);
+    const unsigned heap = static_cast<unsigned>(heap_guard_requested_bytes() - before);
+    heap_guard_lock();
+    for (int i = 0; i < 32; ++i) {  // the first 32 of issue 14's mix fill the slots
+        const CreateResult r = engine.create(bench::peer_mix_effect(i), {});
+        if (!r.error.ok() || !engine.start(r.id).ok()) return 2;
+    }
+    TickInput in;
+    TickOutput out;
+    paint();
+    for (int n = 1; n <= 200; ++n) {
+        bench::move_handle_in_slow_circle(in, n);
+        engine.tick(in, out);
+    }
+    const unsigned stack = kPaint - untouched();
+
+    const unsigned slots = 32 * sizeof(detail::Slot);
+    const unsigned samples = 1024 * sizeof(int16_t);
+    const unsigned estimator = sizeof(detail::MotionEstimator);
+    const unsigned reports = 16 * sizeof(DynamicReport);
+    const unsigned rest = heap - slots - samples - reports - estimator;
+    std::printf("RAM for 32 slots on 2 axes (bytes):\n");
+    std::printf("  slots            %6u  (32 x %u: parameters, clock, condition and dynamic state)\n", slots,
+                static_cast<unsigned>(sizeof(detail::Slot)));
+    std::printf("  sample memory    %6u  (1024 force-profile samples)\n", samples);
+    std::printf("  estimator        %6u  (velocity and acceleration history)\n", estimator);
+    std::printf("  reports          %6u  (16 dynamic reports)\n", reports);
+    std::printf("  engine, rest     %6u  (configuration, pool accounting, sample index)\n", rest);
+    std::printf("  total            %6u  (all allocated once, by the constructor)\n", heap);
+    std::printf("  stack in a tick  %6u  (deepest, measured)\n", stack);
+    return 0;
+}

@@ -1,0 +1,100 @@
+// The engine on the emulated Cortex-M4F (qemu-system-arm -M mps2-an386, semihosting).
+//
+// 1. Renders the fixed scenario (scenario.hpp: every effect type on a scripted handle) and
+//    prints every tick's forces as the bits of their floats, "F n x y" in hex; the x86
+//    side (tests/firmware/firmware_compare.cpp) renders the same and compares.
+// 2. Counts the instructions of a tick (instruction_counter.hpp) for issue 14's 40-effect
+//    mix with the handle moving and at rest, for the velocity estimator alone, and for the
+//    scenario's 64 effects; prints "count NAME ticks=N instructions_per_tick=I".
+// Nothing is allocated after the engines are built: heap_guard ends the run if it is.
+#include <cstdio>
+#include <cstring>
+
+#include "heap_guard.h"
+#include "instruction_counter.hpp"
+#include "motion_estimator.hpp"
+#include "peer_mix.hpp"
+#include "scenario.hpp"
+
+namespace {
+
+using namespace feel;
+
+uint32_t bits(float f) {
+    uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+// Ticks an engine n times on precomputed inputs, counting the instructions of the ticks only.
+template <typename Tick>
+void count(const char* name, int n, Tick tick) {
+    uint64_t counts = 0;
+    for (int k = 0; k < n; ++k) {
+        const uint32_t before = firmware::InstructionCounter::now();
+        tick(k);
+        counts += firmware::InstructionCounter::counts_since(before);
+    }
+    const uint64_t instructions = counts * firmware::InstructionCounter::kInstructionsPerCount;
+    std::printf("count %s ticks=%d instructions_per_tick=%lu\n", name, n,
+                static_cast<unsigned long>(instructions / static_cast<uint64_t>(n)));
+}
+
+constexpr int kCountedTicks = 1000;
+TickInput g_inputs[kCountedTicks];  // precomputed: the motion's double sin/cos are not counted
+
+}  // namespace
+
+int main() {
+    std::printf("feel-m4-test ticks=%d effects=%d\n", firmware::kScenarioTicks, firmware::kScenarioEffects);
+    static Engine scenario(firmware::scenario_config());
+    static Engine peer(EngineConfig{});
+    static Engine peer_at_rest(EngineConfig{});
+    if (!firmware::load_scenario(scenario) || !bench::load_peer_mix(peer) || !bench::load_peer_mix(peer_at_rest)) {
+        std::printf("error: an engine refused the mix\n");
+        return 2;
+    }
+    static detail::MotionEstimator estimator;
+    estimator.configure(20000.0f / 4096.0f);
+    std::printf("heap at start-up: %u bytes\n", static_cast<unsigned>(heap_guard_requested_bytes()));
+    heap_guard_lock();
+
+    firmware::InstructionCounter counter;
+    TickInput in;
+    TickOutput out;
+    DynamicReport report;
+    uint64_t scenario_counts = 0;
+    for (int n = 1; n <= firmware::kScenarioTicks; ++n) {
+        firmware::scenario_handle(in, n);
+        const uint32_t before = firmware::InstructionCounter::now();
+        scenario.tick(in, out);
+        scenario_counts += firmware::InstructionCounter::counts_since(before);
+        while (scenario.pop_report(report)) {
+        }
+        std::printf("F %d %08lx %08lx\n", n, static_cast<unsigned long>(bits(out.force[0])),
+                    static_cast<unsigned long>(bits(out.force[1])));
+    }
+    std::printf("count scenario_64_effects ticks=%d instructions_per_tick=%lu\n", firmware::kScenarioTicks,
+                static_cast<unsigned long>(scenario_counts * firmware::InstructionCounter::kInstructionsPerCount /
+                                           firmware::kScenarioTicks));
+
+    // Issue 14's mix: 1 s of the slow circle after a first second that fills the history.
+    for (int k = 0; k < kCountedTicks; ++k) bench::move_handle_in_slow_circle(g_inputs[k], k + 1);
+    for (int k = 0; k < kCountedTicks; ++k) peer.tick(g_inputs[k], out);
+    for (int k = 0; k < kCountedTicks; ++k) bench::move_handle_in_slow_circle(g_inputs[k], kCountedTicks + k + 1);
+    count("peer_mix_40_moving", kCountedTicks, [&](int k) { peer.tick(g_inputs[k], out); });
+    count("estimator_2_axes_moving", kCountedTicks,
+          [&](int k) { estimator.update(g_inputs[k].t_us, g_inputs[k].position, 2); });
+    TickInput still;
+    bench::move_handle_in_slow_circle(still, 0);
+    for (int k = 0; k < kCountedTicks; ++k) {
+        still.t_us = (k + 1) * 1000;
+        peer_at_rest.tick(still, out);
+    }
+    count("peer_mix_40_at_rest", kCountedTicks, [&](int k) {
+        still.t_us = (kCountedTicks + k + 1) * 1000;
+        peer_at_rest.tick(still, out);
+    });
+    std::printf("done\n");
+    return 0;
+}
