@@ -9,7 +9,7 @@ WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean
+.PHONY: all deps build demo plots test unit-tests test-install fuzz bench clean
 
 all: build
 
@@ -35,10 +35,15 @@ demo: build
 	$(FEEL) stream --rate 60 --seconds 1
 
 # The fuzz run goes first so that the test summary is the last thing printed.
-test: build fuzz unit-tests
+test: build fuzz test-install unit-tests
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
+
+# feel as an installed package: install into a temporary prefix, then a C++ consumer
+# (find_package), a C one (pkg-config, libfeel.so) and Python's ctypes, against it only.
+test-install: build
+	bash scripts/test-install.sh $(BUILD)
 
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.

@@ -12,6 +12,7 @@ packages=(
   librapidcheck-dev    # property tests
   libcairo2-dev        # plots (SVG and PNG)
   libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
+  python3              # make test-install: the ctypes consumer of libfeel.so
 )
 
 missing=()
