@@ -70,6 +70,7 @@ bench: build
 	$(BUILD)/bench/feel_bench_runtime
 	$(BUILD)/bench/feel_bench_host_latency
 	$(BUILD)/bench/feel_bench_streaming
+	$(BUILD)/bench/feel_bench_queue_calls
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-fuzz out

@@ -5,7 +5,8 @@
 #   3. a C++ consumer with find_package(feel): configure, build and run against the prefix
 #      only (feel::feel, feel::engine, feel::c);
 #   4. a C program built with pkg-config against libfeel.so;
-#   5. Python's ctypes loading libfeel.so, playing a spring on sim:iforce2.
+#   5. Python's ctypes loading libfeel.so, playing a spring on sim:iforce2;
+#   6. a parent project with add_subdirectory(feel): only the libraries come along.
 # Each consumer checks the spring law on the force the device reports.
 #
 # usage: scripts/test-install.sh BUILD_DIR
@@ -63,6 +64,21 @@ ldd "$work/c_consumer" | grep libfeel | grep -q "$prefix" || fail "c_consumer do
 
 step "Python ctypes"
 python3 "$src/tests/install/spring_ctypes.py" "$libdir/libfeel.so" || fail "the ctypes consumer"
+
+step "as a subproject: add_subdirectory(feel) brings its libraries only"
+cmake -S "$src/tests/install/subproject" -B "$work/sub" -G Ninja -DFEEL_SOURCE_DIR="$src" \
+      -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
+      -DCMAKE_DISABLE_FIND_PACKAGE_rapidcheck=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON \
+      >"$work/sub-configure.log" || { cat "$work/sub-configure.log"; fail "configuring a parent of feel"; }
+targets=$(ninja -C "$work/sub" -t targets all | sed "s/:.*/:/")
+for t in game c_game feel_capi feel_host feel_engine; do
+  grep -q "^$t:" <<<"$targets" || fail "the parent has no target $t"
+done
+if grep -E '^(feel_[a-z_]*test|example_[a-z_]*|feel_bench_[a-z_]*|fuzz_[a-z_]*|feel|feel_render):' <<<"$targets"; then
+  fail "a subproject feel builds tests, benchmarks, fuzzers, examples or the CLI"
+fi
+if grep -q "^CAIRO_\|^pkgcfg_lib_CAIRO" "$work/sub/CMakeCache.txt"; then fail "a subproject feel looks for cairo"; fi
+echo "targets: game, c_game and feel's libraries; no tests, benchmarks, fuzzers, examples, CLI or cairo"
 
 echo
 echo "test-install: ok (C++ find_package, C pkg-config, Python ctypes, against $prefix)"

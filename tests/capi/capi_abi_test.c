@@ -137,7 +137,7 @@ static void test_params(void) {
     feel_input in;
     FEEL_INIT(in);
     bool settled = settled_input(dev, &in);
-    CHECK(settled && in.position[0] > 3900 && spring_law_error(&in, 5000, 10000) < 30,
+    CHECK(settled && in.position[0] > 3900 && spring_law_error(&in, 5000, 10000) < 5,
           "the device reports force %.0f at x = %.0f: the spring law -k/10000*x gives %.0f", (double)in.force[0],
           (double)in.position[0], -0.5 * (double)in.position[0]);
 
@@ -155,7 +155,7 @@ static void test_params(void) {
               now.gain == 10000,
           "get_parameters: k = %d, gain = %d (the unmasked gain kept)", now.conditions[0].pos_coefficient, now.gain);
     settled = settled_input(dev, &in);
-    CHECK(settled && spring_law_error(&in, 10000, 10000) < 30, "force %.0f at x = %.0f follows the new k (%.0f)",
+    CHECK(settled && spring_law_error(&in, 10000, 10000) < 5, "force %.0f at x = %.0f follows the new k (%.0f)",
           (double)in.force[0], (double)in.position[0], -(double)in.position[0]);
     feel_effect_status_info status;
     FEEL_INIT(status);
@@ -166,7 +166,7 @@ static void test_params(void) {
     CHECK(feel_effect_set_parameters(spring, &change, FEEL_FIELD_GAIN, false, NULL, 0) == FEEL_OK,
           "set_parameters(GAIN = 2500)");
     settled = settled_input(dev, &in);
-    CHECK(settled && spring_law_error(&in, 10000, 2500) < 30, "force %.0f: a quarter of the law (%.0f)",
+    CHECK(settled && spring_law_error(&in, 10000, 2500) < 5, "force %.0f: a quarter of the law (%.0f)",
           (double)in.force[0], -0.25 * (double)in.position[0]);
 
     CHECK(feel_effect_stop(spring) == FEEL_OK, "stopped");
