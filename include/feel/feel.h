@@ -474,6 +474,50 @@ FEEL_API int feel_effect_set_parameters(feel_effect* effect, const feel_effect_p
 FEEL_API int feel_effect_download(feel_effect* effect);
 FEEL_API int feel_effect_unload(feel_effect* effect);
 
+/* ---- Calls that never stall a frame (feel::host::CommandQueue) ------------------------ *
+ * Every call above waits for the device's answer (about 1 ms for a start, 2 ms for
+ * set_parameters; docs/host-api.md, "Which calls may block"). A queue's calls check what
+ * needs no device, queue the command and return at once with a ticket (1, 2, 3, ...), or 0
+ * when refused at once (the last error says why: NULL or empty handles, a value out of
+ * range, FEEL_ERROR_DEVICE_FULL when max_pending commands already wait). One worker thread
+ * runs the commands in order; each one's outcome comes back on the caller's thread at its
+ * next feel_queue_poll. A burst of set_parameters to one effect coalesces to the newest
+ * (the masks merged), as do set_gain and stream_force; each coalesced call still gets an
+ * outcome, with `coalesced` set and `into` naming the ticket that carried it. Use one queue
+ * per device, from one thread at a time. */
+typedef struct feel_queue feel_queue;
+typedef struct feel_outcome {
+    uint32_t size;             /* sizeof(feel_outcome), set by feel */
+    uint64_t ticket;
+    const char* what;          /* "start", "stop", "set_parameters", "set_gain", "command", "stream_force" */
+    int32_t code;              /* FEEL_OK or FEEL_ERROR_* */
+    const char* message;       /* "" on success; valid during the callback only */
+    bool coalesced;            /* carried by a later call of the same kind */
+    uint64_t into;             /* the ticket that carried it; == ticket when not coalesced */
+} feel_outcome;
+typedef void (*feel_outcome_callback)(const feel_outcome* outcome, void* user_data);
+/* max_pending 1..65536 commands waiting (0: 1024), max_outcomes 1..1048576 outcomes
+ * waiting for a poll (0: 4096; older ones are dropped). NULL on failure. */
+FEEL_API feel_queue* feel_queue_create(feel_device* device, int32_t max_pending, int32_t max_outcomes);
+/* Runs the commands already queued (each bounded by the device's timeout), then frees the
+ * queue; outcomes not polled are dropped. NULL is ignored. */
+FEEL_API void feel_queue_destroy(feel_queue* queue);
+FEEL_API uint64_t feel_queue_start(feel_queue* queue, feel_effect* effect, int32_t iterations, bool solo);
+FEEL_API uint64_t feel_queue_stop(feel_queue* queue, feel_effect* effect);
+FEEL_API uint64_t feel_queue_set_parameters(feel_queue* queue, feel_effect* effect, const feel_effect_params* params,
+                                   uint32_t field_mask, bool restart, const int16_t* samples, int32_t sample_count);
+FEEL_API uint64_t feel_queue_set_gain(feel_queue* queue, int32_t gain);
+FEEL_API uint64_t feel_queue_command(feel_queue* queue, int32_t command);
+FEEL_API uint64_t feel_queue_stream_force(feel_queue* queue, const int32_t* force, int32_t axis_count);
+/* Calls callback(outcome, user_data) on this thread for each command finished since the
+ * last poll, in the order they finished; returns how many (never waits). */
+FEEL_API int32_t feel_queue_poll(feel_queue* queue, feel_outcome_callback callback, void* user_data);
+/* Waits until nothing is queued or running, up to timeout_ms (1..60000): FEEL_ERROR_TIMEOUT
+ * if commands remain. */
+FEEL_API int feel_queue_flush(feel_queue* queue, int32_t timeout_ms);
+/* Commands queued or running. */
+FEEL_API int32_t feel_queue_pending(const feel_queue* queue);
+
 /* ---- Dynamic reports (§5.2) ---------------------------------------------------------- */
 
 enum { FEEL_REPORT_INTERIM = 0, FEEL_REPORT_FINAL };

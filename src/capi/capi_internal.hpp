@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <span>
 #include <vector>
 
 #include <cstddef>
@@ -89,12 +90,19 @@ inline std::nullptr_t no_handle(int /*recorded error*/) noexcept { return nullpt
 // "<function>: <name> = <value> is out of range (allowed <min>..<max>)".
 int out_of_range(const char* function, const char* name, int64_t value, int64_t min, int64_t max) noexcept;
 
+// Thrown by a body after it recorded its error (for bodies whose return value is not the
+// code): guard() returns the recorded code unchanged.
+struct RecordedError {};
+[[noreturn]] inline void throw_last_error() { throw RecordedError{}; }
+
 // Runs body() (returning int), mapping any exception to FEEL_ERROR_INVALID_PARAMETER
 // (std::invalid_argument) or FEEL_ERROR_INTERNAL (anything else) with its message.
 template <class Body>
 int guard(const char* function, Body&& body) noexcept {
     try {
         return body();
+    } catch (const RecordedError&) {
+        return feel_last_error();
     } catch (const std::invalid_argument& e) {
         return fail(FEEL_ERROR_INVALID_PARAMETER, e.what());
     } catch (const std::bad_alloc&) {
@@ -120,6 +128,13 @@ T* guard_ptr(const char* function, Body&& body) noexcept {
     });
     return out;
 }
+
+// feel_effect_params as EffectParams; the C enumerations' ranges checked (std::invalid_argument
+// naming the field otherwise). The other ranges are the host's to check.
+EffectParams to_cpp(const char* function, const feel_effect_params& params);
+// The samples a caller passes: none, or sample_count (0..65535) of them; std::invalid_argument
+// for a count out of range or NULL samples with a count.
+std::span<const int16_t> samples_of(const char* function, const int16_t* samples, int32_t sample_count);
 
 // Copies a string into a fixed C array, NUL-terminated, truncated to fit.
 template <std::size_t N>

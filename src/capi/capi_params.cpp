@@ -52,6 +52,8 @@ int32_t c_enum(E e) noexcept {
 
 std::string indexed(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 
+}  // namespace
+
 // ---- C -> C++ -------------------------------------------------------------------------
 
 EffectParams to_cpp(const char* fn, const feel_effect_params& c) {
@@ -133,6 +135,8 @@ EffectParams to_cpp(const char* fn, const feel_effect_params& c) {
     return p;
 }
 
+namespace {
+
 // ---- C++ -> C -------------------------------------------------------------------------
 
 feel_effect_params to_c(const EffectParams& p) noexcept {
@@ -207,7 +211,8 @@ feel_effect_params to_c(const EffectParams& p) noexcept {
     return c;
 }
 
-// The samples a caller passes: none, or sample_count of them.
+}  // namespace
+
 std::span<const int16_t> samples_of(const char* function, const int16_t* samples, int32_t sample_count) {
     if (sample_count < 0 || sample_count > 65535) {
         out_of_range(function, "sample_count", sample_count, 0, 65535);
@@ -220,7 +225,6 @@ std::span<const int16_t> samples_of(const char* function, const int16_t* samples
     return {samples, static_cast<std::size_t>(sample_count)};
 }
 
-}  // namespace
 }  // namespace feel::capi
 
 using namespace feel::capi;

@@ -13,7 +13,9 @@
  *  5. EnumEffects and the pool: an I-FORCE 1.x-class device cannot create dynamics; one
  *     more effect takes one more slot;
  *  6. a sensation file loaded onto an open device, its effects altered before playing
- *     (§9.5), and the device still open after the library is freed.
+ *     (§9.5), and the device still open after the library is freed;
+ *  7. a command queue: a burst of updates coalesces, every call gets its outcome on the
+ *     caller's poll, and the spring plays the newest coefficient.
  */
 #include <stdbool.h>
 #include <stdint.h>
@@ -305,12 +307,75 @@ static void test_library_on_device(void) {
     feel_close(dev);
 }
 
+/* ---- 7. calls that never stall a frame -------------------------------------------- */
+
+typedef struct seen_outcomes {
+    int count, failed, coalesced;
+    uint64_t last_ticket;
+    bool sizes_ok;
+} seen_outcomes;
+
+static void on_outcome(const feel_outcome* o, void* user_data) {
+    seen_outcomes* seen = (seen_outcomes*)user_data;
+    ++seen->count;
+    if (o->code != FEEL_OK) ++seen->failed;
+    if (o->coalesced) ++seen->coalesced;
+    if (o->ticket > seen->last_ticket) seen->last_ticket = o->ticket;
+    if (o->size != sizeof(feel_outcome)) seen->sizes_ok = false;
+}
+
+static void test_queue(void) {
+    feel_open_options options;
+    FEEL_INIT(options);
+    options.sim_hand = "kinematic";
+    options.sim_motion = "hold:-2000";
+    feel_device* dev = feel_open_ex("sim:iforce2", &options);
+    feel_queue* queue = dev ? feel_queue_create(dev, 0, 0) : NULL;
+    CHECK(queue != NULL, "feel_queue_create: %s", queue ? "made" : feel_last_error_message());
+    if (!queue) {
+        feel_close(dev);
+        return;
+    }
+    feel_effect_params p;
+    FEEL_INIT(p);
+    feel_effect_params_init(&p, FEEL_TYPE_SPRING);
+    p.conditions[0].pos_coefficient = p.conditions[0].neg_coefficient = 1000;
+    feel_effect* spring = feel_create_effect(dev, &p, NULL, 0);
+    CHECK(spring && feel_queue_start(queue, spring, FEEL_INFINITE_ITERATIONS, false) == 1, "start queued: ticket 1");
+    for (int i = 1; i <= 50; ++i) { /* a burst: coalesces to the newest, k = 5000 */
+        p.conditions[0].pos_coefficient = p.conditions[0].neg_coefficient = 100 * i;
+        if (feel_queue_set_parameters(queue, spring, &p, FEEL_FIELD_TYPE_SPECIFIC, false, NULL, 0) == 0) {
+            CHECK(false, "feel_queue_set_parameters: %s", feel_last_error_message());
+            break;
+        }
+    }
+    CHECK(feel_queue_start(queue, NULL, 0, false) == 0 && feel_last_error() == FEEL_ERROR_INVALID_PARAMETER,
+          "a NULL effect is refused at once: %s", feel_last_error_message());
+    CHECK(feel_queue_set_gain(queue, -1) == 0 && feel_last_error() == FEEL_ERROR_INVALID_PARAMETER,
+          "a gain of -1 is refused at once: %s", feel_last_error_message());
+    CHECK(feel_queue_flush(queue, 10000) == FEEL_OK && feel_queue_pending(queue) == 0, "flushed");
+    seen_outcomes seen = {0, 0, 0, 0, true};
+    const int32_t n = feel_queue_poll(queue, on_outcome, &seen);
+    CHECK(n == 51 && seen.count == 51 && seen.failed == 0 && seen.last_ticket == 51 && seen.sizes_ok,
+          "51 outcomes on this thread's poll, none failed (%d coalesced)", seen.coalesced);
+    feel_input in;
+    FEEL_INIT(in);
+    for (int i = 0; i < 30; ++i) feel_wait_input(dev, 500, &in);
+    CHECK(settled_input(dev, &in) && spring_law_error(&in, 5000, 10000) < 5,
+          "the spring plays the newest k: force %.0f at x = %.0f (law %.0f)", (double)in.force[0],
+          (double)in.position[0], -0.5 * (double)in.position[0]);
+    feel_queue_destroy(queue);
+    feel_effect_destroy(spring);
+    feel_close(dev);
+}
+
 int main(void) {
     test_version();
     test_enumerate();
     test_params();
     test_types_and_pool();
     test_library_on_device();
+    test_queue();
     if (c_check_failures) printf("%d check(s) failed\n", c_check_failures);
     return c_check_failures ? 1 : 0;
 }
