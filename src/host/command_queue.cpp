@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <cstddef>
 #include <deque>
 #include <mutex>
 #include <stdexcept>
@@ -85,11 +86,10 @@ struct CommandQueue::State {
         std::lock_guard lock(mu);
         if (stopping) return refusal(ErrorKind::invalid_handle, std::string(kind_name(c.kind)) + ": the queue is stopping");
         c.ticket = next_ticket;
-        if (Command* pending = coalescible(c)) {
-            merge_into(c, *pending);
+        if (const std::ptrdiff_t at = coalescible(c); at >= 0) {
+            merge_into(c, queue[static_cast<std::size_t>(at)]);
             // The merged command takes the newest place in the queue.
-            const auto at = queue.begin() + (pending - &queue.front());
-            queue.erase(at);
+            queue.erase(queue.begin() + at);
         } else if (queue.size() >= options.max_pending) {
             return refusal(ErrorKind::device_full,
                            std::string(kind_name(c.kind)) + ": " + std::to_string(queue.size()) +
@@ -102,18 +102,20 @@ struct CommandQueue::State {
         return queue.back().ticket;
     }
 
-    // The pending command `c` may replace: the latest queued command for the same effect
-    // (set_parameters) or of the same kind (set_gain, stream_force), when it is of c's kind.
-    Command* coalescible(const Command& c) {
-        if (c.kind != Kind::set_parameters && c.kind != Kind::set_gain && c.kind != Kind::stream_force) return nullptr;
-        for (auto it = queue.rbegin(); it != queue.rend(); ++it) {
+    // The index of the pending command `c` may replace, or -1: the latest queued command
+    // for the same effect (set_parameters) or of the same kind (set_gain, stream_force),
+    // when it is of c's kind.
+    std::ptrdiff_t coalescible(const Command& c) const {
+        if (c.kind != Kind::set_parameters && c.kind != Kind::set_gain && c.kind != Kind::stream_force) return -1;
+        for (auto i = static_cast<std::ptrdiff_t>(queue.size()) - 1; i >= 0; --i) {
+            const Command& q = queue[static_cast<std::size_t>(i)];
             if (c.kind == Kind::set_parameters) {
-                if (it->record != c.record) continue;
-                return it->kind == Kind::set_parameters ? &*it : nullptr;
+                if (q.record != c.record) continue;
+                return q.kind == Kind::set_parameters ? i : -1;
             }
-            if (it->kind == c.kind) return &*it;
+            if (q.kind == c.kind) return i;
         }
-        return nullptr;
+        return -1;
     }
 
     // c becomes the merged command; `older` is what it replaces.
