@@ -28,14 +28,16 @@
  * and FEEL_OK with an empty message when it succeeds. A NULL handle or out pointer is
  * FEEL_ERROR_INVALID_PARAMETER. No C++ exception ever crosses this interface.
  *
- * Handles. feel_device, feel_effect, feel_library and feel_subscription are opaque.
- * An effect stays valid after its device is closed, but every call on it then returns
- * FEEL_ERROR_INVALID_HANDLE; it must still be destroyed. Destroying a handle twice, or
- * using it after destroying it, is undefined (as free() is).
+ * Handles. feel_device, feel_effect, feel_library, feel_subscription and feel_queue are
+ * opaque. An effect stays valid after its device is closed, but every call on it then
+ * returns FEEL_ERROR_INVALID_HANDLE; it must still be destroyed. Destroying a handle twice,
+ * or using it after destroying it, is undefined (as free() is).
  *
- * Threads. A device and its effects may be used from one thread at a time. The last error
- * is thread-local. Callbacks run on the device's I/O thread and must not call back into
- * feel for that device (queue the work instead).
+ * Threads. A device and its effects may be used from one thread at a time. The calls that
+ * talk to the device wait for its answer (about 1-2 ms); the feel_queue_* calls never wait
+ * (docs/host-api.md, "Which calls may block"). The last error is thread-local. Callbacks
+ * run on the device's I/O thread and must not call back into feel for that device (queue
+ * the work instead).
  *
  * Structs and growth. Every struct that crosses this interface (except feel_trigger) starts
  * with `uint32_t size`, as DirectInput's dwSize: set it to sizeof the struct before the
