@@ -11,7 +11,7 @@ FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean test-asan test-tsan firmware
+.PHONY: all deps build demo plots test unit-tests test-install fuzz bench clean test-asan test-tsan firmware
 
 all: build
 
@@ -38,10 +38,15 @@ demo: build
 
 # The fuzz run goes first so that the test summary is the last thing printed; the
 # sanitizer runs come last: they only judge what the plain run already passed.
-test: build firmware fuzz unit-tests test-asan test-tsan
+test: build firmware fuzz test-install unit-tests test-asan test-tsan
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
+
+# feel as an installed package: install into a temporary prefix, then a C++ consumer
+# (find_package), a C one (pkg-config, libfeel.so) and Python's ctypes, against it only.
+test-install: build
+	bash scripts/test-install.sh $(BUILD)
 
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.
@@ -99,6 +104,7 @@ bench: build
 	$(BUILD)/bench/feel_bench_runtime
 	$(BUILD)/bench/feel_bench_host_latency
 	$(BUILD)/bench/feel_bench_streaming
+	$(BUILD)/bench/feel_bench_queue_calls
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-fuzz $(BUILD)-asan $(BUILD)-tsan $(BUILD)-firmware out

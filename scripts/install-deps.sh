@@ -14,6 +14,7 @@ packages=(
   libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib  # make firmware: the engine on a Cortex-M4F
   qemu-system-arm      # make test runs the Cortex-M4F build on the emulated mps2-an386 board
+  python3              # make test-install: the ctypes consumer of libfeel.so
 )
 
 missing=()

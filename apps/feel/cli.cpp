@@ -10,12 +10,13 @@
 
 #include "cli.hpp"
 #include "device_command.hpp"
+#include "feel/version.h"
 #include "interrupt.hpp"
 
 namespace feel::cli {
 namespace {
 
-constexpr const char* kVersion = "feel " FEEL_VERSION;
+constexpr const char* kVersion = "feel " FEEL_VERSION_STRING;
 constexpr const char* kExitCodes =
     "Exit codes: 0 success, 1 failure (bad file, refused effect, unwritable output), 2 usage "
     "error. Full reference: docs/cli.md\n";

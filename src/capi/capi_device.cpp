@@ -8,19 +8,14 @@
 namespace feel::capi {
 namespace {
 
-template <std::size_t N>
-void copy_string(char (&dst)[N], const std::string& src) noexcept {
-    std::snprintf(dst, N, "%s", src.c_str());
-}
-
-void fill_caps(const host::DeviceCaps& c, feel_caps& out) noexcept {
-    out = feel_caps{};
+feel_caps caps_of(const host::DeviceCaps& c) noexcept {
+    feel_caps out{};
     copy_string(out.device, c.device);
     copy_string(out.description, c.description);
     copy_string(out.class_name, c.class_name);
     copy_string(out.firmware_version, c.firmware_version);
     copy_string(out.protocol_version, c.protocol_version);
-    out.device_class = c.device_class == sim::DeviceClass::iforce1 ? 1 : 2;
+    out.device_class = static_cast<int32_t>(c.device_class);
     out.axis_count = c.axis_count;
     for (int i = 0; i < kMaxAxes; ++i) {
         out.axes[i].axis = axis_index(c.axes[i].axis);
@@ -43,10 +38,11 @@ void fill_caps(const host::DeviceCaps& c, feel_caps& out) noexcept {
     out.max_loop_rate_hz = c.max_loop_rate_hz;
     out.interim_report_hz = c.interim_report_hz;
     out.report_rate_hz = c.report_rate_hz;
+    return out;
 }
 
-void fill_input(const host::InputState& s, feel_input& out) noexcept {
-    out = feel_input{};
+feel_input input_of(const host::InputState& s) noexcept {
+    feel_input out{};
     out.t_us = s.t_us;
     out.axis_count = s.axis_count;
     for (int i = 0; i < kMaxAxes; ++i) {
@@ -70,6 +66,7 @@ void fill_input(const host::InputState& s, feel_input& out) noexcept {
     out.overruns = s.overruns;
     out.dropped_reports = s.dropped_reports;
     out.reports_received = s.reports_received;
+    return out;
 }
 
 // The C enumeration of device commands is runtime::DeviceControl's order.
@@ -81,6 +78,8 @@ static_assert(static_cast<int>(runtime::DeviceControl::pause) == FEEL_COMMAND_PA
 static_assert(static_cast<int>(runtime::DeviceControl::resume) == FEEL_COMMAND_RESUME);
 static_assert(runtime::kDeviceControlCount == FEEL_COMMAND_RESUME + 1);
 
+static_assert(static_cast<int>(sim::DeviceClass::iforce1) == FEEL_DEVICE_CLASS_IFORCE1);
+static_assert(static_cast<int>(sim::DeviceClass::iforce2) == FEEL_DEVICE_CLASS_IFORCE2);
 static_assert(FEEL_MAX_AXES == kMaxAxes);
 static_assert(FEEL_INFINITE == kInfiniteUs);
 static_assert(FEEL_INFINITE_ITERATIONS == kInfiniteIterations);
@@ -107,12 +106,13 @@ feel_device* feel_open(const char* address) {
 
 feel_device* feel_open_ex(const char* address, const feel_open_options* options) {
     return guard_ptr<feel_device>("feel_open_ex", [&]() -> feel_device* {
-        if (!options) return no_handle(null_argument("feel_open_ex", "options"));
+        feel_open_options in{};
+        if (read_in("feel_open_ex", "options", options, in) != FEEL_OK) return nullptr;
         feel::host::OpenOptions o;
-        if (options->timeout_ms != 0) o.timeout = std::chrono::milliseconds(options->timeout_ms);
-        o.report_rate_hz = options->report_rate_hz;
-        if (options->sim_hand) o.sim_hand = options->sim_hand;
-        if (options->sim_motion) o.sim_motion = options->sim_motion;
+        if (in.timeout_ms != 0) o.timeout = std::chrono::milliseconds(in.timeout_ms);
+        o.report_rate_hz = in.report_rate_hz;
+        if (in.sim_hand) o.sim_hand = in.sim_hand;
+        if (in.sim_motion) o.sim_motion = in.sim_motion;
         const std::string_view where = address && *address ? address : "sim:iforce2";
         feel::host::Result<feel::host::Device> device = feel::host::Device::open(where, o);
         if (!device) return no_handle(fail(device.status()));
@@ -136,8 +136,8 @@ void feel_close(feel_device* device) {
 int feel_device_caps(const feel_device* device, feel_caps* out) {
     return guard("feel_device_caps", [&] {
         if (!device) return null_argument("feel_device_caps", "device");
-        if (!out) return null_argument("feel_device_caps", "out");
-        fill_caps(device->device.capabilities(), *out);
+        if (const int rc = check_out("feel_device_caps", "out", out); rc != FEEL_OK) return rc;
+        write_out(caps_of(device->device.capabilities()), out);
         return succeed();
     });
 }
@@ -163,11 +163,11 @@ int feel_device_command(feel_device* device, int32_t command) {
 int feel_poll_input(feel_device* device, feel_input* out) {
     return guard("feel_poll_input", [&] {
         if (!device) return null_argument("feel_poll_input", "device");
-        if (!out) return null_argument("feel_poll_input", "out");
+        if (const int rc = check_out("feel_poll_input", "out", out); rc != FEEL_OK) return rc;
         if (!device->device.connected()) {
             return fail(FEEL_ERROR_DISCONNECTED, "feel_poll_input: the device is not connected");
         }
-        fill_input(device->device.input(), *out);
+        write_out(input_of(device->device.input()), out);
         return succeed();
     });
 }
@@ -175,14 +175,14 @@ int feel_poll_input(feel_device* device, feel_input* out) {
 int feel_wait_input(feel_device* device, int32_t timeout_ms, feel_input* out) {
     return guard("feel_wait_input", [&] {
         if (!device) return null_argument("feel_wait_input", "device");
-        if (!out) return null_argument("feel_wait_input", "out");
+        if (const int rc = check_out("feel_wait_input", "out", out); rc != FEEL_OK) return rc;
         if (timeout_ms < 1 || timeout_ms > 60000) {
             return out_of_range("feel_wait_input", "timeout_ms", timeout_ms, 1, 60000);
         }
         feel::host::Result<feel::host::InputState> s =
             device->device.wait_input(std::chrono::milliseconds(timeout_ms));
         if (!s) return fail(s.status());
-        fill_input(s.value(), *out);
+        write_out(input_of(s.value()), out);
         return succeed();
     });
 }
@@ -196,6 +196,70 @@ int feel_stream_force(feel_device* device, const int32_t* force, int32_t axis_co
             return out_of_range("feel_stream_force", "axis_count", axis_count, axes, axes);
         }
         return from_status(device->device.stream_force(std::span<const int32_t>(force, static_cast<size_t>(axis_count))));
+    });
+}
+
+int feel_device_effect_types(const feel_device* device, uint64_t* types) {
+    return guard("feel_device_effect_types", [&] {
+        if (!device) return null_argument("feel_device_effect_types", "device");
+        if (!types) return null_argument("feel_device_effect_types", "types");
+        uint64_t bits = 0;
+        for (const feel::host::EffectSupport& e : device->device.effects()) bits |= feel::effect_type_bit(e.type);
+        *types = bits;
+        return succeed();
+    });
+}
+
+int feel_device_pool(feel_device* device, feel_pool_info* out) {
+    return guard("feel_device_pool", [&] {
+        if (!device) return null_argument("feel_device_pool", "device");
+        if (const int rc = check_out("feel_device_pool", "out", out); rc != FEEL_OK) return rc;
+        feel::host::Result<feel::PoolInfo> pool = device->device.pool();
+        if (!pool) return fail(pool.status());
+        const feel::PoolInfo& p = pool.value();
+        feel_pool_info info{};
+        info.total_bytes = p.total_bytes;
+        info.free_bytes = p.free_bytes;
+        info.max_effects = p.max_effects;
+        info.free_effects = p.free_effects;
+        info.total_samples = p.total_samples;
+        info.free_samples = p.free_samples;
+        write_out(info, out);
+        return succeed();
+    });
+}
+
+int feel_device_address(const feel_device* device, char* out, int32_t capacity) {
+    return guard("feel_device_address", [&] {
+        if (!device) return null_argument("feel_device_address", "device");
+        if (!out) return null_argument("feel_device_address", "out");
+        if (capacity < 1) return out_of_range("feel_device_address", "capacity", capacity, 1, INT32_MAX);
+        std::snprintf(out, static_cast<std::size_t>(capacity), "%s", device->device.address().c_str());
+        return succeed();
+    });
+}
+
+bool feel_device_connected(const feel_device* device) {
+    bool connected = false;
+    (void)guard("feel_device_connected", [&] {
+        if (!device) return null_argument("feel_device_connected", "device");
+        connected = device->device.connected();
+        return succeed();
+    });
+    return connected;
+}
+
+int feel_set_idf(feel_device* device, bool periodic, bool impulse) {
+    return guard("feel_set_idf", [&] {
+        if (!device) return null_argument("feel_set_idf", "device");
+        return from_status(device->device.set_idf(feel::runtime::IdfSettings{periodic, impulse}));
+    });
+}
+
+int feel_set_report_rate(feel_device* device, int32_t hz) {
+    return guard("feel_set_report_rate", [&] {
+        if (!device) return null_argument("feel_set_report_rate", "device");
+        return from_status(device->device.set_report_rate(hz));
     });
 }
 

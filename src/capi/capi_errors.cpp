@@ -74,6 +74,22 @@ int out_of_range(const char* function, const char* name, int64_t value, int64_t 
     return FEEL_ERROR_INVALID_PARAMETER;
 }
 
+int bad_size(const char* function, const char* what, uint32_t size, uint32_t first, uint32_t known) noexcept {
+    char buf[320];
+    if (size < first) {
+        std::snprintf(buf, sizeof buf,
+                      "%s->size = %u is too small (allowed %u..: set it to sizeof the struct before the call)",
+                      what, size, first);
+        set_error(FEEL_ERROR_INVALID_PARAMETER, buf, function);
+        return FEEL_ERROR_INVALID_PARAMETER;
+    }
+    std::snprintf(buf, sizeof buf,
+                  "%s->size = %u: the struct sets fields that this libfeel (%s) does not know (it knows %u bytes)",
+                  what, size, FEEL_VERSION_STRING, known);
+    set_error(FEEL_ERROR_NOT_SUPPORTED, buf, function);
+    return FEEL_ERROR_NOT_SUPPORTED;
+}
+
 }  // namespace feel::capi
 
 extern "C" {

@@ -7,9 +7,23 @@
 // an error code and a message, so no exception can cross into C. The thread's last error
 // lives in a fixed thread_local buffer: recording an error never allocates, so even
 // std::bad_alloc is reported faithfully.
+//
+// Sized structs. Every struct but feel_trigger starts with `uint32_t size` (feel.h). The
+// library fills (write_out) or reads (read_in) only the bytes both sides know: the
+// caller's size or ours, whichever is smaller. A caller's struct may never be smaller than
+// the struct's first published size (kFirstSize), and a caller's struct from newer headers
+// than ours must leave the fields we do not know zero (their "as before" value), or the
+// call is refused rather than silently ignoring them (docs/c-api.md, "ABI evolution").
 #pragma once
 
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <span>
+#include <vector>
+
 #include <cstddef>
+#include <cstdio>
 #include <cstdint>
 #include <exception>
 #include <memory>
@@ -28,8 +42,14 @@ struct feel_device {
     bool borrowed = false;  // a library's device: feel_library_free closes it, not feel_close
 };
 
+// An effect the caller owns (made by feel_create_effect or a wrapper), or a view of one a
+// library owns (feel_library_effect): `effect` points at `owned` or into the library.
 struct feel_effect {
-    feel::host::Effect effect;
+    explicit feel_effect(feel::host::Effect e) : owned(std::move(e)), effect(&owned) {}
+    explicit feel_effect(feel::host::Effect* borrowed_effect) : effect(borrowed_effect), borrowed(true) {}
+    feel::host::Effect owned;
+    feel::host::Effect* effect;
+    bool borrowed = false;
 };
 
 struct feel_subscription {
@@ -39,6 +59,10 @@ struct feel_subscription {
 struct feel_library {
     feel::host::SensationLibrary library;
     std::unique_ptr<feel_device> device;  // borrowed view of library.device()
+    bool owns_device = true;              // false after feel_library_load_on: the caller's
+    std::vector<std::string> names;       // the sensations, for feel_library_sensation_name
+    // Views of the library's effects handed out by feel_library_effect, made on first use.
+    std::map<std::string, std::vector<std::unique_ptr<feel_effect>>, std::less<>> effect_views;
 };
 
 namespace feel::capi {
@@ -66,12 +90,19 @@ inline std::nullptr_t no_handle(int /*recorded error*/) noexcept { return nullpt
 // "<function>: <name> = <value> is out of range (allowed <min>..<max>)".
 int out_of_range(const char* function, const char* name, int64_t value, int64_t min, int64_t max) noexcept;
 
+// Thrown by a body after it recorded its error (for bodies whose return value is not the
+// code): guard() returns the recorded code unchanged.
+struct RecordedError {};
+[[noreturn]] inline void throw_last_error() { throw RecordedError{}; }
+
 // Runs body() (returning int), mapping any exception to FEEL_ERROR_INVALID_PARAMETER
 // (std::invalid_argument) or FEEL_ERROR_INTERNAL (anything else) with its message.
 template <class Body>
 int guard(const char* function, Body&& body) noexcept {
     try {
         return body();
+    } catch (const RecordedError&) {
+        return feel_last_error();
     } catch (const std::invalid_argument& e) {
         return fail(FEEL_ERROR_INVALID_PARAMETER, e.what());
     } catch (const std::bad_alloc&) {
@@ -96,6 +127,62 @@ T* guard_ptr(const char* function, Body&& body) noexcept {
         return out ? succeed() : feel_last_error();
     });
     return out;
+}
+
+// feel_effect_params as EffectParams; the C enumerations' ranges checked (std::invalid_argument
+// naming the field otherwise). The other ranges are the host's to check.
+EffectParams to_cpp(const char* function, const feel_effect_params& params);
+// The samples a caller passes: none, or sample_count (0..65535) of them; std::invalid_argument
+// for a count out of range or NULL samples with a count.
+std::span<const int16_t> samples_of(const char* function, const int16_t* samples, int32_t sample_count);
+
+// Copies a string into a fixed C array, NUL-terminated, truncated to fit.
+template <std::size_t N>
+void copy_string(char (&dst)[N], const std::string& src) noexcept {
+    std::snprintf(dst, N, "%s", src.c_str());
+}
+
+// The first published size of each sized struct; a struct that grows keeps its first
+// size here (the oldest callers' size), and sizeof(T) is what this library knows.
+template <class T>
+inline constexpr uint32_t kFirstSize = sizeof(T);
+
+// "<function>: <what>.size = N is too small (allowed >= first size; set it to sizeof(T))".
+int bad_size(const char* function, const char* what, uint32_t size, uint32_t first, uint32_t known) noexcept;
+
+// Checks the size of a struct the caller hands in for feel to fill.
+template <class T>
+int check_out(const char* function, const char* what, const T* out) noexcept {
+    if (!out) return null_argument(function, what);
+    if (out->size < kFirstSize<T>) return bad_size(function, what, out->size, kFirstSize<T>, sizeof(T));
+    return FEEL_OK;
+}
+
+// Copies `full` (all the fields this library knows) into the caller's struct, as far as
+// the caller's size goes; the caller's size stays.
+template <class T>
+void write_out(T full, T* out) noexcept {
+    const uint32_t size = out->size;
+    full.size = size;
+    std::memcpy(static_cast<void*>(out), &full, std::min<std::size_t>(size, sizeof(T)));
+}
+
+// Reads the caller's struct into `full` (zero, i.e. default, where the caller's struct is
+// shorter). Refuses a struct from newer headers that sets fields this library lacks.
+template <class T>
+int read_in(const char* function, const char* what, const T* in, T& full) noexcept {
+    if (!in) return null_argument(function, what);
+    if (in->size < kFirstSize<T>) return bad_size(function, what, in->size, kFirstSize<T>, sizeof(T));
+    std::memset(static_cast<void*>(&full), 0, sizeof(T));
+    std::memcpy(static_cast<void*>(&full), in, std::min<std::size_t>(in->size, sizeof(T)));
+    if (in->size > sizeof(T)) {
+        const auto* tail = reinterpret_cast<const unsigned char*>(in) + sizeof(T);
+        if (std::any_of(tail, tail + (in->size - sizeof(T)), [](unsigned char b) { return b != 0; })) {
+            return bad_size(function, what, in->size, kFirstSize<T>, sizeof(T));
+        }
+    }
+    full.size = sizeof(T);
+    return FEEL_OK;
 }
 
 }  // namespace feel::capi

@@ -17,7 +17,7 @@ feel_effect* create(const char* function, feel_device* device, Build&& build) no
         const EffectParams params = build();  // a bad argument throws: guard() reports it
         host::Result<host::Effect> effect = device->device.create_effect(params);
         if (!effect) return no_handle(fail(effect.status()));
-        return new feel_effect{std::move(effect).value()};
+        return new feel_effect(std::move(effect).value());
     });
 }
 

@@ -123,6 +123,28 @@ struct DeviceCore {
     uint64_t subscribe(uint64_t effect_key, DynamicCallback callback);
     void unsubscribe(uint64_t id) noexcept;
 
+    // --- for CommandQueue (command_queue.cpp), which runs an Effect's calls later ----------
+
+    // What an Effect refers to (both empty for an empty Effect).
+    static std::shared_ptr<DeviceCore> core_of(const Effect& effect) { return effect.core_; }
+    static std::shared_ptr<EffectRecord> record_of(const Effect& effect) { return effect.record_; }
+    // Runs f(Effect&) on a borrowed Effect made of (core, record): it is the game's effect
+    // for the call, and lets go of both afterwards without unloading anything.
+    template <class F>
+    static auto with_effect(std::shared_ptr<DeviceCore> core, std::shared_ptr<EffectRecord> record, F&& f) {
+        Effect borrowed;
+        borrowed.core_ = std::move(core);
+        borrowed.record_ = std::move(record);
+        struct Release {
+            Effect& e;
+            ~Release() {
+                e.core_.reset();
+                e.record_.reset();
+            }
+        } release{borrowed};
+        return f(borrowed);
+    }
+
     // --- fixed at open ---------------------------------------------------------------------
     const std::string address;
     const OpenOptions options;

@@ -15,7 +15,8 @@ std::string text(const char (&field)[N]) {
 }
 
 sim::DeviceClass device_class_of(uint8_t value) {
-    return value == 0 ? sim::DeviceClass::iforce1 : sim::DeviceClass::iforce2;
+    // decode() has checked the range (1..2): the wire's numbers are DeviceClass's.
+    return static_cast<sim::DeviceClass>(value);
 }
 
 }  // namespace

@@ -11,7 +11,8 @@ using namespace usage;
 
 constexpr Range kEffectTypeRange{0, kEffectTypeCount - 1};
 constexpr Range kBlockLoadStatus{1, 3};
-constexpr Range kDeviceClass{0, 1};  // sim::DeviceClass: I-FORCE 1.x, I-FORCE 2.0
+constexpr Range kDeviceClass{1, 2};  // sim::DeviceClass: 1 I-FORCE 1.x, 2 I-FORCE 2.0
+static_assert(static_cast<int>(sim::DeviceClass::iforce1) == kDeviceClass.min, "DeviceClass's first");
 static_assert(static_cast<int>(sim::DeviceClass::iforce2) == kDeviceClass.max, "DeviceClass's last");
 constexpr Range kPhysical{0, INT32_MAX};         // 0 for an axis the device lacks
 constexpr Range kSensorCounts{0, 1 << 24};       // 0 for an axis the device lacks

@@ -64,10 +64,12 @@ TEST(CapiDevice, BadArgumentsAreRefusedWithTheirRange) {
     EXPECT_EQ(feel_stream_force(d.get(), force, 3), FEEL_ERROR_INVALID_PARAMETER);
     EXPECT_EQ(last_message(), "feel_stream_force: axis_count = 3 is out of range (allowed 2..2)");
     EXPECT_EQ(feel_stream_force(d.get(), nullptr, 2), FEEL_ERROR_INVALID_PARAMETER);
-    feel_input in;
+    feel_input in{};
+    in.size = sizeof in;
     EXPECT_EQ(feel_wait_input(d.get(), 0, &in), FEEL_ERROR_INVALID_PARAMETER);
     EXPECT_EQ(last_message(), "feel_wait_input: timeout_ms = 0 is out of range (allowed 1..60000)");
     feel_open_options o{};
+    o.size = sizeof o;
     o.sim_hand = "octopus";
     EXPECT_EQ(feel_open_ex("sim:iforce2", &o), nullptr);
     EXPECT_EQ(feel_last_error(), FEEL_ERROR_INVALID_PARAMETER);
@@ -93,7 +95,8 @@ TEST(CapiEffect, AnEffectOutlivingItsDeviceIsAnInvalidHandle) {
     EXPECT_EQ(feel_effect_start(e, 1, false), FEEL_OK) << last_message();
     feel_close(d);
     EXPECT_EQ(feel_effect_start(e, 1, false), FEEL_ERROR_INVALID_HANDLE) << last_message();
-    feel_effect_status_info s;
+    feel_effect_status_info s{};
+    s.size = sizeof s;
     EXPECT_EQ(feel_effect_status(e, &s), FEEL_ERROR_INVALID_HANDLE);
     feel_effect_destroy(e);  // still must be freed, and that works
     EXPECT_EQ(feel_last_error(), FEEL_OK);
@@ -184,7 +187,8 @@ TEST(CapiEffect, EveryWrapperCreatesItsEffectThroughC) {
 TEST(CapiEffect, AFullDeviceSaysSo) {
     DevicePtr d = open_device();
     ASSERT_TRUE(d);
-    feel_caps caps;
+    feel_caps caps{};
+    caps.size = sizeof caps;
     ASSERT_EQ(feel_device_caps(d.get(), &caps), FEEL_OK);
     std::vector<feel_effect*> effects;
     for (int i = 0; i < caps.effect_slots; ++i) {
@@ -202,7 +206,8 @@ TEST(CapiEffect, AFullDeviceSaysSo) {
 TEST(CapiEffect, ADynamicOnAnIForce1DeviceIsNotSupported) {
     DevicePtr d = open_device("sim:iforce1");
     ASSERT_TRUE(d);
-    feel_caps caps;
+    feel_caps caps{};
+    caps.size = sizeof caps;
     ASSERT_EQ(feel_device_caps(d.get(), &caps), FEEL_OK);
     ASSERT_EQ(caps.supported_types & FEEL_TYPE_BIT(FEEL_TYPE_DYNAMIC_IMPACT), 0u);
     EXPECT_EQ(feel_dynamic_impact(d.get(), 0, 3000, 5000, 5000, 500), nullptr);
@@ -217,9 +222,11 @@ TEST(CapiLibrary, ALibrarysDeviceIsClosedByTheLibraryNotByFeelClose) {
     feel_close(dev);
     EXPECT_EQ(feel_last_error(), FEEL_ERROR_INVALID_PARAMETER);
     EXPECT_EQ(last_message(), "feel_close: this device belongs to a library; feel_library_free closes it");
-    feel_caps caps;
+    feel_caps caps{};
+    caps.size = sizeof caps;
     EXPECT_EQ(feel_device_caps(dev, &caps), FEEL_OK);  // still open
-    feel_input in;
+    feel_input in{};
+    in.size = sizeof in;
     EXPECT_EQ(feel_poll_input(dev, &in), FEEL_OK) << last_message();
     feel_library_free(lib);
     EXPECT_EQ(feel_library_device(nullptr), nullptr);

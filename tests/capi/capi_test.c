@@ -14,21 +14,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "c_check.h"
 #include "feel/feel.h"
 
-static int failures = 0;
-
-#define CHECK(cond, ...)                                        \
-    do {                                                        \
-        if (cond) {                                             \
-            printf("ok    ");                                   \
-        } else {                                                \
-            printf("FAIL  ");                                   \
-            ++failures;                                         \
-        }                                                       \
-        printf(__VA_ARGS__);                                    \
-        printf("\n");                                           \
-    } while (0)
 
 static void sleep_ms(long ms) {
     struct timespec t;
@@ -48,7 +36,7 @@ static void on_report(const feel_dynamic_event* event, void* user_data) {
 
 static void test_device(void) {
     feel_open_options options;
-    memset(&options, 0, sizeof options);
+    FEEL_INIT(options);
     options.sim_hand = "kinematic";          /* the handle goes exactly where the motion says */
     options.sim_motion = "sine:x:6000:1";    /* ±6000 along x at 1 Hz */
     feel_device* dev = feel_open_ex("sim:iforce2", &options);
@@ -57,6 +45,7 @@ static void test_device(void) {
 
     int rc = FEEL_OK;
     feel_caps caps;
+    FEEL_INIT(caps);
     CHECK(feel_device_caps(dev, &caps) == FEEL_OK, "feel_device_caps: %s, %d axes, %d buttons, class %s",
           caps.device, caps.axis_count, caps.button_count, caps.class_name);
     CHECK(strcmp(caps.device, "iforce2") == 0 && caps.axis_count == 2, "the device is the 2-axis iforce2");
@@ -70,6 +59,7 @@ static void test_device(void) {
         rc = feel_effect_start(spring, FEEL_INFINITE_ITERATIONS, false);
         CHECK(rc == FEEL_OK, "feel_effect_start(INFINITE) %s", feel_last_error_message());
         feel_effect_status_info status;
+        FEEL_INIT(status);
         CHECK(feel_effect_status(spring, &status) == FEEL_OK && status.state == FEEL_STATE_PLAYING,
               "the spring plays (state %d)", status.state);
         CHECK(!status.emulated, "and not emulated");
@@ -80,6 +70,7 @@ static void test_device(void) {
         int64_t t0 = -1;
         for (int i = 0; i < 5000; ++i) {
             feel_input in;
+            FEEL_INIT(in);
             if (feel_wait_input(dev, 500, &in) != FEEL_OK) {
                 CHECK(false, "feel_wait_input: %s", feel_last_error_message());
                 break;
@@ -95,6 +86,8 @@ static void test_device(void) {
               opposing, samples);
 
         feel_input in;
+
+        FEEL_INIT(in);
         CHECK(feel_poll_input(dev, &in) == FEEL_OK && in.reports_received > 0 && in.playing_effects >= 1,
               "feel_poll_input: %llu reports, %d playing, x = %.0f, force x = %.0f",
               (unsigned long long)in.reports_received, in.playing_effects, (double)in.position[0],
@@ -162,6 +155,7 @@ static void test_library(void) {
     float force_x = 0.0f;
     for (int i = 0; i < 100 && force_x > -500.0f; ++i) {
         feel_input in;
+        FEEL_INIT(in);
         if (feel_wait_input(dev, 500, &in) != FEEL_OK) break;
         force_x = in.force[0];
     }
@@ -181,7 +175,7 @@ static void test_library(void) {
 int main(void) {
     test_device();
     test_library();
-    if (failures) printf("%d check(s) failed\n", failures);
+    if (c_check_failures) printf("%d check(s) failed\n", c_check_failures);
     else printf("all checks passed\n");
-    return failures ? 1 : 0;
+    return c_check_failures ? 1 : 0;
 }

@@ -65,7 +65,7 @@ public:
         protocol::DeviceInfoReport d;
         std::strncpy(d.device, "fake", sizeof d.device);
         std::strncpy(d.description, "a scripted test device", sizeof d.description);
-        d.device_class = 1;
+        d.device_class = 2;  // sim::DeviceClass::iforce2
         d.axis_count = 2;
         for (int i = 0; i < 2; ++i) {
             d.axes[i].axis = static_cast<Axis>(i);

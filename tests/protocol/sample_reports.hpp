@@ -129,7 +129,7 @@ inline std::vector<AnyReport> sample_reports() {
     DeviceInfoReport info;
     set_text(info.device, "iforce2");
     set_text(info.description, "I-FORCE 2.0 class joystick, simulated, with a description long en");
-    info.device_class = 1;
+    info.device_class = 2;  // sim::DeviceClass::iforce2
     info.axis_count = 6;
     for (int i = 0; i < kMaxAxes; ++i) {
         info.axes[i].axis = static_cast<Axis>(kMaxAxes - 1 - i);

@@ -389,7 +389,7 @@ struct AxisInfo {
 struct DeviceInfoReport {
     char device[kNameBytes] = {};         // profile name, e.g. "iforce2"
     char description[192] = {};           // one line about the hardware
-    uint8_t device_class = 0;             // sim::DeviceClass: 0 I-FORCE 1.x, 1 I-FORCE 2.0
+    uint8_t device_class = 0;             // sim::DeviceClass: 1 I-FORCE 1.x, 2 I-FORCE 2.0
     uint8_t axis_count = 0;               // 1..6
     AxisInfo axes[kMaxAxes] = {};
     uint8_t button_count = 0;             // 0..32

@@ -48,7 +48,9 @@ struct GripModel {
 // core plays Conditions and Waves but no Dynamics, holds fewer effects and does not run
 // reflexes (the host emulates them, §1.2.c); an I-FORCE 2.0-class core plays the whole
 // master set of §6.4 and runs reflexes. docs/runtime.md, "Capabilities and device classes".
-enum class DeviceClass : uint8_t { iforce1, iforce2 };
+// The numbers are the class's generation, the same in C++, in C (FEEL_DEVICE_CLASS_*) and
+// on the wire (Device Info's device_class); 0 is no class, so a zeroed report is refused.
+enum class DeviceClass : uint8_t { iforce1 = 1, iforce2 = 2 };
 // "I-FORCE 1.x", "I-FORCE 2.0".
 [[nodiscard]] std::string_view device_class_name(DeviceClass c) noexcept;
 
