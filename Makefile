@@ -9,7 +9,7 @@ WERROR     := $(if $(filter true 1 yes,$(CI)),ON,OFF)
 FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 
-.PHONY: all deps build demo plots test unit-tests fuzz bench clean
+.PHONY: all deps build demo plots test unit-tests test-studio fuzz bench clean
 
 all: build
 
@@ -35,10 +35,15 @@ demo: build
 	$(FEEL) stream --rate 60 --seconds 1
 
 # The fuzz run goes first so that the test summary is the last thing printed.
-test: build fuzz unit-tests
+test: build fuzz unit-tests test-studio
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
+
+# The Studio end to end: feel studio in Debian's Chromium, driven by playwright-core;
+# screenshots to out/studio/, latency figures printed (docs/studio.md).
+test-studio: build
+	cd studio && FEEL=$(abspath $(FEEL)) node --test --test-concurrency=1 e2e/
 
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.
