@@ -69,11 +69,11 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
         auto dev = host::Device::attach(
             std::make_unique<SharedPeripheralConnection>(peripheral_, std::move(pair.host)), "sim:" + profile, open);
         if (!dev) throw std::runtime_error("device " + options.address + ": " + dev.status().message);
-        device_ = std::move(dev.value());
+        device_.emplace(std::move(dev.value()));
     } else {
         auto dev = host::Device::open(options.address, open);
         if (!dev) throw std::runtime_error("device " + options.address + ": " + dev.status().message);
-        device_ = std::move(dev.value());
+        device_.emplace(std::move(dev.value()));
     }
     sampler_ = std::thread([this] { sample_loop(); });
 }
@@ -81,11 +81,11 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
 StudioDevice::~StudioDevice() {
     stopping_ = true;
     if (sampler_.joinable()) sampler_.join();
-    device_.close();
+    device_->close();
 }
 
 void StudioDevice::sample_loop() {
-    host::Device device = device_;  // a copy of the shared handle for this thread
+    host::Device device = *device_;  // a copy of the shared handle for this thread
     while (!stopping_) {
         auto in = device.wait_input(std::chrono::milliseconds(50));
         if (!in) {
@@ -122,7 +122,7 @@ uint64_t StudioDevice::newest_seq() const {
 }
 
 json StudioDevice::describe() const {
-    const host::DeviceCaps& c = device_.capabilities();
+    const host::DeviceCaps& c = device_->capabilities();
     json axes = json::array();
     for (int a = 0; a < c.axis_count; ++a) {
         axes.push_back({{"name", axis_name(c.axes[a].axis)},
@@ -131,10 +131,10 @@ json StudioDevice::describe() const {
                         {"max_force", c.axes[a].max_force}});
     }
     json types = {{"condition", json::array()}, {"wave", json::array()}, {"dynamic", json::array()}};
-    for (const host::EffectSupport& e : device_.effects()) {
+    for (const host::EffectSupport& e : device_->effects()) {
         types[std::string(class_key(e.effect_class))].push_back(effect_type_name(e.type));
     }
-    return {{"address", device_.address()},
+    return {{"address", device_->address()},
             {"name", c.device},
             {"description", c.description},
             {"class", c.class_name},

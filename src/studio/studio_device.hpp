@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -53,7 +54,7 @@ public:
     StudioDevice(const StudioDevice&) = delete;
     StudioDevice& operator=(const StudioDevice&) = delete;
 
-    [[nodiscard]] host::Device& device() noexcept { return device_; }
+    [[nodiscard]] host::Device& device() noexcept { return *device_; }
     [[nodiscard]] bool simulated() const noexcept { return peripheral_ != nullptr; }
     // Capabilities for the browser: name, class, axes, buttons, hats, the types the device
     // enumerates (EnumEffects) by class.
@@ -76,7 +77,7 @@ private:
     void sample_loop();
 
     std::shared_ptr<peripheral::Peripheral> peripheral_;  // simulated devices only
-    host::Device device_;
+    std::optional<host::Device> device_;  // set by the constructor
     mutable std::mutex mu_;
     std::string grip_;
     std::vector<DeviceSample> ring_;  // kRingSize, indexed by seq % kRingSize

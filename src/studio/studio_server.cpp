@@ -188,9 +188,10 @@ public:
         : ws_(std::move(socket)), shared_(shared), timer_(ws_.get_executor()) {}
 
     void start(Request req) {
+        request_ = std::move(req);
         ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
         ws_.read_message_max(kMaxWebSocketMessageBytes);
-        ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
+        ws_.async_accept(request_, [self = shared_from_this()](beast::error_code ec) {
             if (ec) return;
             self->session_.emplace(self->shared_.device, self->shared_.schema);
             ++self->shared_.sessions;
@@ -260,6 +261,7 @@ private:
     }
 
     websocket::stream<beast::tcp_stream> ws_;
+    Request request_;  // the upgrade, alive until the handshake is done
     Shared& shared_;
     asio::steady_timer timer_;
     beast::flat_buffer buffer_;
@@ -340,9 +342,11 @@ format::SensationFile starters() {
 }  // namespace
 
 struct StudioServer::Impl {
+    // Declared first, destroyed last: the io_context's pending handlers (and with them the
+    // connections and their sessions) go before what they share.
+    std::unique_ptr<Shared> shared;
     asio::io_context io{1};
     tcp::acceptor acceptor{io};
-    std::unique_ptr<Shared> shared;
     std::thread thread;
     bool loopback = true;
     std::string listen;
@@ -423,8 +427,8 @@ uint16_t StudioServer::port() const noexcept {
 }
 
 std::string StudioServer::url() const {
-    std::string host = impl_->loopback && impl_->listen.find(':') == std::string::npos ? impl_->listen : impl_->listen;
-    if (host.find(':') != std::string::npos) host = "[" + host + "]";
+    std::string host = impl_->listen;
+    if (host.find(':') != std::string::npos) host = "[" + host + "]";  // IPv6
     return "http://" + host + ":" + std::to_string(port()) + "/";
 }
 

@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::string_view kSuffix = ".feel.json";
 
-std::string quoted(std::string_view s) {
+std::string shown_path(std::string_view s) {
     std::string out = "\"";
     for (char c : s) {
         if (static_cast<unsigned char>(c) < 0x20 || c == '"' || c == '\\') {
@@ -29,7 +29,7 @@ std::string quoted(std::string_view s) {
 }
 
 [[noreturn]] void refuse(std::string_view path, const std::string& why) {
-    throw WorkspaceError("path " + quoted(path) + ": " + why);
+    throw WorkspaceError("path " + shown_path(path) + ": " + why);
 }
 
 // The rules that need no disk: characters, shape, components.
@@ -85,7 +85,7 @@ Workspace::Workspace(const fs::path& root) {
     std::error_code ec;
     root_ = fs::canonical(root, ec);
     if (ec || !fs::is_directory(root_)) {
-        throw WorkspaceError("workspace " + quoted(root.string()) + " is not an existing folder");
+        throw WorkspaceError("workspace " + shown_path(root.string()) + " is not an existing folder");
     }
 }
 
@@ -181,8 +181,8 @@ std::string Workspace::combine(const std::vector<std::string>& sources, std::str
         const format::SensationFile file = format::parse_sensation_file(read(source), source);
         for (const format::Sensation& s : file.sensations) {
             if (auto [at, fresh] = origin.emplace(s.name, source); !fresh) {
-                throw WorkspaceError("combine: sensation \"" + s.name + "\" is in both " + quoted(at->second) +
-                                     " and " + quoted(source) + " (rename one first)");
+                throw WorkspaceError("combine: sensation \"" + s.name + "\" is in both " + shown_path(at->second) +
+                                     " and " + shown_path(source) + " (rename one first)");
             }
             combined.sensations.push_back(s);
         }

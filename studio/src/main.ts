@@ -45,6 +45,7 @@ store.subscribe(() => pad.draw());
 let seq = 0;
 const sent = new Map<number, number>();
 export const editTimes: number[] = [];
+const applyTimes: number[] = [];
 store.onDocChange = (s) => {
   const sens = s.doc.sensations[s.doc.current];
   if (!sens) return;
@@ -80,6 +81,7 @@ live.on((m) => {
     case 'validated': {
       const t0 = sent.get(m.seq);
       if (t0 !== undefined) editTimes.push(performance.now() - t0);
+      if (m.ok) applyTimes.push(m.apply_us / 1000);
       sent.delete(m.seq);
       if (m.seq === seq) store.setErrors(m.errors as FieldError[]);
       break;
@@ -147,7 +149,9 @@ export async function saveFavorite(name: string) {
   pad,
   plot,
   editTimes,
+  applyTimes,
   frames: () => frames,
+  liveStates: () => liveStates,
   saveFavorite,
 };
 
