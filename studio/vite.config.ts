@@ -2,7 +2,7 @@
 // (src/studio/CMakeLists.txt passes --outDir). The protocol's schema (src/protocol/schema.ts)
 // is also written as protocol.json there, for the C++ server to check messages against.
 import { defineConfig } from 'vite';
-import { schema } from './src/protocol/schema';
+import { schema } from './src/protocol/schema.ts';
 
 export default defineConfig({
   base: '/',

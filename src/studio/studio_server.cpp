@@ -10,6 +10,8 @@
 // the connection and its session are destroyed, which stops the browser's effects.
 #include "studio_server.hpp"
 
+#include <utility>  // std::exchange, which Boost 1.74's asio uses without including
+
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
@@ -43,6 +45,10 @@ using tcp = asio::ip::tcp;
 using json = nlohmann::json;
 
 using Request = http::request<http::string_body>;
+
+// Boost 1.74's Beast has its own string_view.
+std::string_view sv(beast::string_view s) { return {s.data(), s.size()}; }
+beast::string_view bv(std::string_view s) { return {s.data(), s.size()}; }
 using Response = http::response<http::string_body>;
 
 std::string_view content_type(std::string_view path) {
@@ -68,7 +74,7 @@ struct Shared {
 Response reply(const Request& req, http::status status, std::string body, std::string_view type) {
     Response res{status, req.version()};
     res.set(http::field::server, "feel-studio");
-    res.set(http::field::content_type, type);
+    res.set(http::field::content_type, bv(type));
     res.set(http::field::cache_control, "no-store");
     res.set("X-Content-Type-Options", "nosniff");
     res.keep_alive(req.keep_alive());
@@ -113,7 +119,7 @@ Response api(Shared& shared, const Request& req) {
         return error_reply(req, http::status::bad_request, "the request body is not JSON");
     }
     if (!body.is_object()) return error_reply(req, http::status::bad_request, "the request body must be a JSON object");
-    const std::string_view call = std::string_view(req.target()).substr(5);
+    const std::string_view call = sv(req.target()).substr(5);
     Workspace& ws = shared.workspace;
     try {
         if (call == "list") {
@@ -164,7 +170,7 @@ Response api(Shared& shared, const Request& req) {
 }
 
 Response handle_http(Shared& shared, const Request& req) {
-    const std::string_view target = req.target();
+    const std::string_view target = sv(req.target());
     if (target.starts_with("/api/")) return api(shared, req);
     if (req.method() != http::verb::get && req.method() != http::verb::head) {
         return error_reply(req, http::status::method_not_allowed, "static files take GET");
@@ -174,7 +180,7 @@ Response handle_http(Shared& shared, const Request& req) {
     const Asset* a = find_web_asset(path);
     if (a == nullptr) return error_reply(req, http::status::not_found, "no such page: " + std::string(path.substr(0, 100)));
     Response res = reply(req, http::status::ok, std::string(a->text()), content_type(path));
-    res.set(http::field::content_security_policy,
+    res.set("Content-Security-Policy",
             "default-src 'self'; connect-src 'self' ws://127.0.0.1:* ws://localhost:* ws://[::1]:*; "
             "style-src 'self' 'unsafe-inline'; img-src 'self' data:");
     return res;
@@ -295,8 +301,8 @@ public:
 private:
     void handle(Request req) {
         std::optional<std::string_view> origin;
-        if (auto o = req.find(http::field::origin); o != req.end()) origin = o->value();
-        const std::string_view host = req[http::field::host];
+        if (auto o = req.find(http::field::origin); o != req.end()) origin = sv(o->value());
+        const std::string_view host = sv(req[http::field::host]);
         if (auto refusal = shared_.guard.refusal(host, origin)) {
             req.keep_alive(false);
             respond(error_reply(req, http::status::forbidden, *refusal));

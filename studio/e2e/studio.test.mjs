@@ -38,11 +38,13 @@ before(async () => {
   workspace = mkdtempSync(join(tmpdir(), 'feel-studio-'));
   studio = await startStudio(workspace);
   iforce1 = await startStudio(workspace, 'sim:iforce1');
-  browser = await chromium.launch({
+  // a fresh profile (--user-data-dir, which playwright passes for a persistent context)
+  browser = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'feel-chromium-')), {
     executablePath: '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1400, height: 1000 },
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      `--user-data-dir=${mkdtempSync(join(tmpdir(), 'feel-chromium-'))}`],
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
 });
 after(async () => {
@@ -53,7 +55,7 @@ after(async () => {
 });
 
 async function open(url = studio.url) {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
+  const page = await browser.newPage();
   page.on('dialog', (d) => d.accept(page.nextAnswer ?? ''));
   await page.goto(url);
   await page.waitForFunction(() => window.__studio?.store.state.hello !== null && window.__studio?.frames() > 2);
@@ -92,7 +94,7 @@ test('1. the palette lists every type on iforce2 and no Dynamics on iforce1', as
   const types = await page.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.equal(types.length, 33, `iforce2 palette: ${types}`);
   assert.ok(types.includes('dynamic_paddle') && types.includes('spring') && types.includes('sweep_saw_down'));
-  await page.screenshot({ path: join(shots, 'palette-iforce2.png') });
+  await page.screenshot({ path: join(shots, 'palette-iforce2.png'), timeout: 90000 });
   const p1 = await open(iforce1.url);
   const types1 = await p1.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.ok(types1.length > 0);
@@ -118,8 +120,11 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
   assert.ok(s.position[0] > 2500, `the handle moved toward +4000: ${s.position[0]}`);
   assert.ok(Math.abs(s.force[0] - expected) <= 200, `force ${s.force[0]} vs spring law ${expected} (2% of full scale)`);
   assert.ok(s.force[0] < 0, 'the arrow points back to the centre (force toward -x)');
-  await page.screenshot({ path: join(shots, 'spring.png') });
-  // the pointer -> force-shown latency: back and forth across the spring
+  await page.screenshot({ path: join(shots, 'spring.png'), timeout: 90000 });
+  // the pointer -> force-shown latency: back and forth across the spring, with the stiff
+  // hand (the handle follows the pointer within a few ms), a change of 0.2% of full scale
+  await page.selectOption('#grip', 'stiff');
+  await settle(page, 300);
   const lat = [];
   for (let i = 0; i < 40; ++i) {
     await page.evaluate(() => { window.__studio.pad.latencies.length = 0; });
@@ -147,7 +152,7 @@ test('3. dragging into a wall: the handle stops at the wall, the pointer goes on
   assert.ok(s.position[0] < 6000, `the handle stays near the wall at 5000: ${s.position[0]}`);
   assert.ok(s.position[0] > 3500, `the handle reached the wall: ${s.position[0]}`);
   assert.ok(s.force[0] < -500, `the wall pushes back: ${s.force[0]}`);
-  await page.screenshot({ path: join(shots, 'wall.png') });
+  await page.screenshot({ path: join(shots, 'wall.png'), timeout: 90000 });
   await page.mouse.up();
   await page.close();
 });
@@ -170,7 +175,7 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await page.keyboard.up('2');
   const t1 = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
   await settle(page, 600);
-  await page.screenshot({ path: join(shots, 'trigger-square.png') });
+  await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: 90000 });
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0 && r[0] <= t1);
   const afterRelease = rows.filter((r) => r[0] > t1 + 250);
@@ -227,7 +232,7 @@ test('5. editing a magnitude while it plays changes the plot within 100 ms, with
   const edit = await page.evaluate(() => window.__studio.editTimes.slice());
   const apply = await page.evaluate(() => window.__studio.applyTimes.slice());
   console.log(`LATENCY edit->device applied (server: set_parameters acked after the tick took it): p50=${q(apply, 0.5).toFixed(2)} ms p99=${q(apply, 0.99).toFixed(2)} ms; browser edit->validated: p50=${q(edit, 0.5).toFixed(1)} ms p99=${q(edit, 0.99).toFixed(1)} ms (n=${apply.length})`);
-  await page.screenshot({ path: join(shots, 'edit-live.png') });
+  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: 90000 });
   await page.close();
 });
 
@@ -253,7 +258,7 @@ test('6. save, reload, open: identical, and it plays through SensationLibrary', 
   // the two calls of §9.5, through feel play (SensationLibrary::load + play)
   const out = execFileSync(feel, ['play', join(workspace, 'designed.feel.json'), '--sensation', 'untitled', '--seconds', '0.3']).toString();
   assert.match(out, /untitled/);
-  await page.screenshot({ path: join(shots, 'saved.png') });
+  await page.screenshot({ path: join(shots, 'saved.png'), timeout: 90000 });
   await page.close();
 });
 

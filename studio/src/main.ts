@@ -72,7 +72,9 @@ live.on((m) => {
       plot.push(m.samples as number[][]);
       pad.update(m.position as number[], m.force as number[]);
       if ((m.effects as EffectLive[]).length || liveStates.length) {
-        const changed = JSON.stringify(m.effects) !== JSON.stringify(liveStates);
+        // redraw the views only when a state, a start count or an arming changed
+        const key = (l: EffectLive[]) => JSON.stringify(l.map((e) => [e.state, e.starts, e.armed]));
+        const changed = key(m.effects as EffectLive[]) !== key(liveStates);
         liveStates = m.effects as EffectLive[];
         if (changed) store.render();
       }
@@ -91,11 +93,8 @@ live.on((m) => {
       break;
   }
 });
-const drawLoop = () => {
-  plot.draw();
-  requestAnimationFrame(drawLoop);
-};
-requestAnimationFrame(drawLoop);
+// The plot is redrawn at most 30 times a second, when new samples came.
+window.setInterval(() => plot.draw(), 33);
 
 async function loadPresets() {
   try {

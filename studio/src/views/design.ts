@@ -60,7 +60,7 @@ export function designView(
           h('button', { class: 'dup', title: 'duplicate', onclick: (ev: Event) => {
             ev.stopPropagation();
             store.update((d) => d.sensations[d.current].effects.splice(i + 1, 0, structuredClone(e)), i + 1);
-          } }, '⧉'),
+          } }, 'dup'),
           h('button', { class: 'remove', title: 'remove', onclick: (ev: Event) => {
             ev.stopPropagation();
             store.update((d) => d.sensations[d.current].effects.splice(i, 1), Math.max(-1, i - 1));

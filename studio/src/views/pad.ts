@@ -76,7 +76,7 @@ export class Pad {
     this.state.position = position;
     this.state.force = force;
     if (this.probe) {
-      const moved = force.some((f, a) => Math.abs(f - (this.probe!.force[a] ?? 0)) > 100);
+      const moved = force.some((f, a) => Math.abs(f - (this.probe!.force[a] ?? 0)) > 20);
       if (moved) {
         this.latencies.push(performance.now() - this.probe.t0);
         if (this.latencies.length > 5000) this.latencies.shift();

@@ -42,8 +42,13 @@ export class Plot {
     if (drop) this.rows.splice(0, drop);
   }
 
+  private drawn = -1;
+
   draw(): void {
     if (!this.plot || this.rows.length === 0) return;
+    const newest = this.rows[this.rows.length - 1][0];
+    if (newest === this.drawn) return;
+    this.drawn = newest;
     const n = this.axisNames.length;
     const cols: number[][] = [this.rows.map((r) => r[0] / 1000)];
     for (let c = 1; c <= 2 * n; ++c) cols.push(this.rows.map((r) => r[c] ?? 0));
