@@ -181,7 +181,7 @@ Response handle_http(Shared& shared, const Request& req) {
     if (a == nullptr) return error_reply(req, http::status::not_found, "no such page: " + std::string(path.substr(0, 100)));
     Response res = reply(req, http::status::ok, std::string(a->text()), content_type(path));
     res.set("Content-Security-Policy",
-            "default-src 'self'; connect-src 'self' ws://127.0.0.1:* ws://localhost:* ws://[::1]:*; "
+            "default-src 'self'; connect-src 'self' ws://127.0.0.1:* ws://localhost:*; "
             "style-src 'self' 'unsafe-inline'; img-src 'self' data:");
     return res;
 }
