@@ -223,6 +223,7 @@ test('5. editing a magnitude while it plays changes the plot within 100 ms, with
   assert.ok(after.elapsed_us > 700000, `elapsed time went on: ${after.elapsed_us} us`);
   const liveStates = await page.evaluate(() => [...document.querySelectorAll('#design .icon-meta')].map((e) => e.textContent));
   assert.match(liveStates[0], /playing/);
+  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: 90000 });
   // edit -> device: 40 more edits while it plays
   await page.evaluate(() => { window.__studio.editTimes.length = 0; window.__studio.applyTimes.length = 0; });
   for (let i = 0; i < 40; ++i) {
@@ -234,7 +235,6 @@ test('5. editing a magnitude while it plays changes the plot within 100 ms, with
   const edit = await page.evaluate(() => window.__studio.editTimes.slice());
   const apply = await page.evaluate(() => window.__studio.applyTimes.slice());
   console.log(`LATENCY edit->device applied (server: set_parameters acked after the tick took it): p50=${q(apply, 0.5).toFixed(2)} ms p99=${q(apply, 0.99).toFixed(2)} ms; browser edit->validated: p50=${q(edit, 0.5).toFixed(1)} ms p99=${q(edit, 0.99).toFixed(1)} ms (n=${apply.length})`);
-  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: 90000 });
   await page.close();
 });
 
