@@ -11,7 +11,7 @@ FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests test-install fuzz bench clean test-asan test-tsan firmware
+.PHONY: all deps build demo plots test unit-tests test-install test-studio fuzz bench clean test-asan test-tsan firmware
 
 all: build
 
@@ -38,7 +38,7 @@ demo: build
 
 # The fuzz run goes first so that the test summary is the last thing printed; the
 # sanitizer runs come last: they only judge what the plain run already passed.
-test: build firmware fuzz test-install unit-tests test-asan test-tsan
+test: build firmware fuzz test-install unit-tests test-studio test-asan test-tsan
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -47,6 +47,11 @@ unit-tests:
 # (find_package), a C one (pkg-config, libfeel.so) and Python's ctypes, against it only.
 test-install: build
 	bash scripts/test-install.sh $(BUILD)
+
+# The Studio end to end: feel studio in Debian's Chromium, driven by playwright-core;
+# screenshots to out/studio/, latency figures printed (docs/studio.md).
+test-studio: build
+	cd studio && FEEL=$(abspath $(FEEL)) node --test --test-concurrency=1 e2e/
 
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.

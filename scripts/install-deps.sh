@@ -11,10 +11,11 @@ packages=(
   libbenchmark-dev     # benchmarks
   librapidcheck-dev    # property tests
   libcairo2-dev        # plots (SVG and PNG)
-  libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
+  libboost-dev         # Boost.Asio: Unix-socket and TCP transports; Boost.Beast: the Studio's server (header-only)
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib  # make firmware: the engine on a Cortex-M4F
   qemu-system-arm      # make test runs the Cortex-M4F build on the emulated mps2-an386 board
   python3              # make test-install: the ctypes consumer of libfeel.so
+  chromium             # the Studio's end-to-end tests (headless, driven by playwright-core)
 )
 
 missing=()
@@ -31,4 +32,16 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 else
   echo "install-deps: everything is installed"
+fi
+
+# The Studio's front end (studio/) is built with Node 20 or newer and the npm packages of
+# its package-lock.json; Debian bookworm's own nodejs is 18, so Node comes with the machine.
+node_major=$(node --version 2>/dev/null | sed -E 's/^v([0-9]+).*/\1/' || true)
+if [[ -z $node_major || $node_major -lt 20 ]]; then
+  echo "install-deps: the Studio needs Node.js 20 or newer to build its front end; found: $(node --version 2>/dev/null || echo none)" >&2
+  exit 1
+fi
+if [[ ! -d studio/node_modules ]] || [[ studio/package-lock.json -nt studio/node_modules/.package-lock.json ]]; then
+  echo "install-deps: npm ci (studio/)"
+  (cd studio && npm ci --no-audit --no-fund --loglevel=error)
 fi

@@ -11,6 +11,7 @@
 #include "cli.hpp"
 #include "device_command.hpp"
 #include "feel/version.h"
+#include "studio_command.hpp"
 #include "interrupt.hpp"
 
 namespace feel::cli {
@@ -162,7 +163,23 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(kExitCodes);
 }
 
-constexpr const char* kCommands = "render, check, devices, caps, play, stream, monitor, device, bench";
+constexpr const char* kCommands = "render, check, devices, caps, play, stream, monitor, device, bench, studio";
+
+void add_studio(CLI::App& app, StudioArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "studio", "Design sensations in the browser and feel them live: serves the Studio and prints "
+                  "the URL to open (docs/studio.md)");
+    cmd->add_option("--workspace", a.workspace, "Folder whose *.feel.json files the Studio reads and writes")
+        ->capture_default_str();
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    cmd->add_option("--port", a.port, "TCP port, 0..65535 (0: any free port)")->capture_default_str();
+    cmd->add_option("--listen", a.listen, "IP address to listen on; anything but loopback is "
+                                          "reachable by others (a warning is printed)")
+        ->capture_default_str();
+    cmd->add_option("--hand", a.hand, "The simulated hand at the start: loose, firm or stiff")
+        ->capture_default_str();
+    cmd->footer(kExitCodes);
+}
 
 // The chain of subcommands the command line selected, outermost first.
 std::vector<const CLI::App*> chosen(const CLI::App& app) {
@@ -221,7 +238,7 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
 
 // Whether the command runs until its work ends or it is asked to stop (signals matter).
 bool long_running(const CLI::App& app) {
-    for (const char* name : {"device", "play", "stream", "monitor"}) {
+    for (const char* name : {"device", "play", "stream", "monitor", "studio"}) {
         if (app.got_subcommand(name)) return true;
     }
     return false;
@@ -263,6 +280,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     add_stream(app, stream_args);
     add_monitor(app, monitor_args, monitor_seconds, monitor_seconds_option);
     add_device(app, device_args);
+    StudioArgs studio_args;
+    add_studio(app, studio_args);
     add_bench(app, bench_loop_args);
 
     // Progress is redrawn in place only on a terminal (live_output.hpp).
@@ -304,6 +323,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
         } else if (app.got_subcommand("monitor")) {
             if (monitor_seconds_option->count() > 0) monitor_args.seconds = monitor_seconds;
             run_monitor(monitor_args, out, err);
+        } else if (app.got_subcommand("studio")) {
+            return run_studio(studio_args, out, err, stop_requested());
         } else if (app.got_subcommand("device")) {
             return run_device(device_args, out, err, stop_requested());
         } else if (app.got_subcommand("bench")) {

@@ -364,6 +364,10 @@ transport::Address Peripheral::address() const {
 runtime::DeviceRuntime& Peripheral::runtime() noexcept { return *impl_->rt; }
 
 bool Peripheral::set_buttons(uint32_t pressed) noexcept { return impl_->sim->set_buttons(pressed); }
+bool Peripheral::set_hand_target(int32_t x, int32_t y, int32_t z) noexcept {
+    return impl_->sim->set_hand_target(x, y, z);
+}
+void Peripheral::set_grip(sim::Grip grip) noexcept { impl_->sim->set_grip(grip); }
 
 bool Peripheral::set_hats(uint32_t pushed) noexcept { return impl_->sim->set_hats(pushed); }
 

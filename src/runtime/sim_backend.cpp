@@ -41,6 +41,18 @@ void SimBackend::sense(int64_t t_us, TickInput& in) noexcept {
     if (const uint64_t h = pending_hats_.exchange(0, std::memory_order_acquire); h & kPendingBit) {
         (void)device_.set_hats(static_cast<uint32_t>(h));
     }
+    if (const uint64_t g = pending_grip_.exchange(0, std::memory_order_acquire); g & kPendingBit) {
+        device_.set_grip(static_cast<sim::Grip>(g & 0xFF));
+    }
+    if (const uint64_t t = pending_target_.exchange(0, std::memory_order_acquire); t & kTargetPendingBit) {
+        if (t & kTargetClearBit) {
+            device_.clear_live_target();
+        } else {
+            double target[3] = {};
+            for (int a = 0; a < 3; ++a) target[a] = static_cast<int16_t>((t >> (16 * a)) & 0xFFFF);
+            (void)device_.set_live_target(target, std::min(3, device_.profile().axis_count));
+        }
+    }
     device_.sense(in);
 }
 
@@ -50,6 +62,26 @@ bool SimBackend::set_buttons(uint32_t pressed) noexcept {
     if ((pressed & ~allowed) != 0) return false;
     pending_buttons_.store(kPendingBit | pressed, std::memory_order_release);
     return true;
+}
+
+bool SimBackend::set_hand_target(int32_t x, int32_t y, int32_t z) noexcept {
+    uint64_t packed = kTargetPendingBit;
+    int shift = 0;
+    for (int32_t v : {x, y, z}) {
+        if (v < -kFullScale || v > kFullScale) return false;
+        packed |= uint64_t{static_cast<uint16_t>(static_cast<int16_t>(v))} << shift;
+        shift += 16;
+    }
+    pending_target_.store(packed, std::memory_order_release);
+    return true;
+}
+
+void SimBackend::set_grip(sim::Grip grip) noexcept {
+    pending_grip_.store(kPendingBit | static_cast<uint64_t>(grip), std::memory_order_release);
+}
+
+void SimBackend::clear_hand_target() noexcept {
+    pending_target_.store(kTargetPendingBit | kTargetClearBit, std::memory_order_release);
 }
 
 bool SimBackend::set_hats(uint32_t pushed) noexcept {

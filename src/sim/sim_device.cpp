@@ -110,8 +110,22 @@ SimDevice::SimDevice(const DeviceProfile& profile, Grip grip, TargetMotion motio
                                     std::string(profile.name) + "\" has " +
                                     std::to_string(profile.axis_count));
     }
+    update_rates();
+    // The hand puts the handle where the motion starts; a holding hand is already moving
+    // with the target, so the tether starts unstretched.
+    const TargetMotion::Sample start = motion_.at(0);
     for (int a = 0; a < profile.axis_count; ++a) {
-        const AxisModel& ax = profile.axes[a];
+        const double scale = profile.axes[a].half_travel / kScale;
+        x_[a] = start.position[a] * scale;
+        v_[a] = grip_ == Grip::none ? 0 : start.velocity[a] * scale;
+    }
+}
+
+void SimDevice::update_rates() noexcept {
+    rate_ = 0;
+    rate_free_ = 0;
+    for (int a = 0; a < profile_->axis_count; ++a) {
+        const AxisModel& ax = profile_->axes[a];
         if (grip_ != Grip::kinematic) {
             const double m = ax.mass + grip_model_.added_mass;
             const double k = grip_model_.stiffness + ax.end_stop_stiffness;
@@ -122,14 +136,12 @@ SimDevice::SimDevice(const DeviceProfile& profile, Grip grip, TargetMotion motio
         rate_free_ = std::max({rate_free_, std::sqrt(ax.end_stop_stiffness / ax.mass),
                                b_free / ax.mass});
     }
-    // The hand puts the handle where the motion starts; a holding hand is already moving
-    // with the target, so the tether starts unstretched.
-    const TargetMotion::Sample start = motion_.at(0);
-    for (int a = 0; a < profile.axis_count; ++a) {
-        const double scale = profile.axes[a].half_travel / kScale;
-        x_[a] = start.position[a] * scale;
-        v_[a] = grip_ == Grip::none ? 0 : start.velocity[a] * scale;
-    }
+}
+
+void SimDevice::set_grip(Grip grip) noexcept {
+    grip_ = grip;
+    grip_model_ = grip_model(*profile_, grip);
+    update_rates();
 }
 
 int32_t SimDevice::substeps(double dt_s) const noexcept {
@@ -151,8 +163,26 @@ void SimDevice::sense(TickInput& in) const noexcept {
     in.handle_held = profile_->dead_man_switch ? handle_held() : true;
 }
 
+bool SimDevice::set_live_target(const double* positions, int count) noexcept {
+    if (count < 0 || count > kMaxAxes) return false;
+    for (int a = 0; a < count; ++a) {
+        if (!std::isfinite(positions[a]) || std::abs(positions[a]) > kScale) return false;
+    }
+    for (int a = 0; a < kMaxAxes; ++a) live_position_[a] = a < count ? positions[a] : 0.0;
+    live_target_ = true;
+    return true;
+}
+
 TargetMotion::Sample SimDevice::hand_target(double t_s) const noexcept {
     TargetMotion::Sample target = motion_.at(t_s);
+    if (live_target_) {
+        // A live target is where the person's pointer is: the hand wants the handle there,
+        // at rest (the pointer's own speed is not known between its events).
+        for (int a = 0; a < kMaxAxes; ++a) {
+            target.position[a] = live_position_[a];
+            target.velocity[a] = 0;
+        }
+    }
     bool offset = false;
     for (int a = 0; a < profile_->axis_count; ++a) offset = offset || grab_offset_[a] != 0;
     if (!offset) return target;

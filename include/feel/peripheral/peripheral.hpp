@@ -84,6 +84,11 @@ public:
     // nothing changes, for a control the profile lacks.
     bool set_buttons(uint32_t pressed) noexcept;
     bool set_hats(uint32_t pushed) noexcept;
+    // The simulated hand's live target (SimBackend::set_hand_target): the hand pulls the
+    // handle toward these normalized positions instead of following its motion. Any thread.
+    bool set_hand_target(int32_t x, int32_t y, int32_t z) noexcept;
+    // Another grip for the simulated hand (SimBackend::set_grip). Any thread.
+    void set_grip(sim::Grip grip) noexcept;
 
     // The device's runtime, e.g. for a test to reach the simulated device while the loop is
     // stopped (runtime().stop(); ...; runtime().start()).

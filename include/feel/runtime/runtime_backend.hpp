@@ -78,6 +78,15 @@ public:
     // changes nothing, for a bit naming a control the profile lacks.
     bool set_buttons(uint32_t pressed) noexcept;
     bool set_hats(uint32_t pushed) noexcept;
+    // The hand's live target (a person's pointer in the Studio): the hand pulls the handle
+    // toward these normalized positions of the first three axes, in whole units, from the
+    // next sense() on, instead of its target motion (a lock-free handoff, any thread).
+    // Returns false, and changes nothing, for a position outside -10000..10000.
+    // clear_hand_target() goes back to the target motion.
+    bool set_hand_target(int32_t x, int32_t y, int32_t z) noexcept;
+    void clear_hand_target() noexcept;
+    // Another hand grip from the next sense() on (SimDevice::set_grip), any thread.
+    void set_grip(sim::Grip grip) noexcept;
 
 private:
     // A mask waiting for the next sense(): bit 32 set when there is one.
@@ -86,6 +95,12 @@ private:
     sim::SimDevice device_;
     std::atomic<uint64_t> pending_buttons_{0};
     std::atomic<uint64_t> pending_hats_{0};
+    // A live target waiting for the next sense(): three int16 positions in bits 0..47,
+    // kTargetPendingBit set when there is one, kTargetClearBit to go back to the motion.
+    static constexpr uint64_t kTargetPendingBit = uint64_t{1} << 63;
+    static constexpr uint64_t kTargetClearBit = uint64_t{1} << 62;
+    std::atomic<uint64_t> pending_target_{0};
+    std::atomic<uint64_t> pending_grip_{0};  // kPendingBit | grip
     std::optional<sim::InputSchedule> schedule_;
     float force_[kMaxAxes] = {};
     bool sensed_ = false;   // a sense() happened: t_us_ is the handle's time

@@ -98,6 +98,17 @@ public:
     // Real-time safe.
     bool set_hats(uint32_t pushed) noexcept;
     [[nodiscard]] uint32_t hats() const noexcept { return hats_; }
+    // A live target (the Studio's pointer): from now on the hand wants the handle at these
+    // normalized positions (at rest) instead of its target motion, until
+    // clear_live_target(). Returns false and changes nothing for a position outside
+    // -10000..10000 or not finite. Axes past `count` hold 0. Real-time safe.
+    bool set_live_target(const double* positions, int count) noexcept;
+    // Another hand takes the handle (the Studio's hand menu): the tether's spring, damper
+    // and added mass become the new grip's from the next step on; the handle keeps its
+    // position and velocity. Real-time safe.
+    void set_grip(Grip grip) noexcept;
+    void clear_live_target() noexcept { live_target_ = false; }
+    [[nodiscard]] bool has_live_target() const noexcept { return live_target_; }
 
     // The substeps step(dt_s) will take now (they depend on whether the hand is present);
     // h = dt_s / substeps(dt_s).
@@ -110,6 +121,7 @@ private:
     // Where the hand wants the handle at t_s: the motion plus what is left of the offset
     // of the last grab. Normalized units.
     [[nodiscard]] TargetMotion::Sample hand_target(double t_s) const noexcept;
+    void update_rates() noexcept;  // rate_ and rate_free_ from the profile and the grip
     void step_tethered(const double motor[kMaxAxes], double dt_s) noexcept;
     void step_kinematic(const double motor[kMaxAxes], double dt_s) noexcept;
 
@@ -122,6 +134,8 @@ private:
     bool hand_present_ = true;
     uint32_t buttons_ = 0;    // bit i = button i+1 pressed
     uint32_t hats_ = 0;       // bit h-1 = hat h pushed off center
+    bool live_target_ = false;               // set_live_target() replaces the motion
+    double live_position_[kMaxAxes] = {};    // normalized
     // The last grab: when, and the handle's offset from the motion then (normalized).
     double grab_t_s_ = 0;
     double grab_offset_[kMaxAxes] = {};

@@ -1,0 +1,313 @@
+// One browser's live session (live_session.hpp).
+#include "live_session.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+
+#include "feel/effect_type.hpp"
+#include "feel/engine.hpp"
+#include "protocol_check.hpp"
+
+namespace feel::studio {
+namespace {
+
+using json = nlohmann::json;
+constexpr size_t kMaxFrameSamples = 1000;  // the schema allows 2000
+
+json error_reply(const std::string& message, std::string_view request = {}) {
+    json e = {{"type", "error"}, {"message", message.substr(0, 2000)}};
+    if (!request.empty()) e["request"] = request;
+    return e;
+}
+
+// The fields of `after` that differ from `before`, as effect_field bits.
+uint32_t changed_fields(const EffectParams& before, const EffectParams& after, bool samples_changed) {
+    using namespace effect_field;
+    uint32_t mask = 0;
+    if (before.duration_us != after.duration_us) mask |= kDuration;
+    if (before.start_delay_us != after.start_delay_us) mask |= kStartDelay;
+    if (before.gain != after.gain) mask |= kGain;
+    if (before.iterations != after.iterations) mask |= kIterations;
+    bool axes = before.axis_count != after.axis_count;
+    for (int a = 0; a < after.axis_count && !axes; ++a) axes = before.axes[a] != after.axes[a];
+    if (axes) mask |= kAxes;
+    if (!(before.direction == after.direction)) mask |= kDirection;
+    if (!(before.trigger == after.trigger)) mask |= kTrigger;
+    if (before.trigger_repeat_interval_us != after.trigger_repeat_interval_us) mask |= kTriggerRepeat;
+    if (before.has_envelope != after.has_envelope || !(before.envelope == after.envelope)) mask |= kEnvelope;
+    // The type's block: everything else. Copy the common fields over and compare the rest.
+    EffectParams rest = before;
+    rest.duration_us = after.duration_us;
+    rest.start_delay_us = after.start_delay_us;
+    rest.gain = after.gain;
+    rest.iterations = after.iterations;
+    rest.axis_count = after.axis_count;
+    for (int a = 0; a < kMaxAxes; ++a) rest.axes[a] = after.axes[a];
+    rest.direction = after.direction;
+    rest.trigger = after.trigger;
+    rest.trigger_repeat_interval_us = after.trigger_repeat_interval_us;
+    rest.has_envelope = after.has_envelope;
+    rest.envelope = after.envelope;
+    if (!(rest == after) || samples_changed) mask |= kTypeSpecific;
+    return mask;
+}
+
+// Splits a format message ("ORIGIN: sensation \"NAME\": effects[1].periodic.magnitude = ...")
+// into the effect's index and the field path; the message itself is kept whole.
+json locate(const std::string& message, bool compound) {
+    json out = {{"effect", -1}, {"field", ""}, {"message", message}};
+    const size_t s = message.find("sensation \"");
+    if (s == std::string::npos) return out;
+    const size_t close = message.find("\": ", s + 11);
+    if (close == std::string::npos) return out;
+    std::string rest = message.substr(close + 3);
+    int effect = 0;
+    if (rest.starts_with("effects[")) {
+        const size_t end = rest.find(']');
+        try {
+            effect = std::stoi(rest.substr(8, end - 8));
+        } catch (const std::exception&) {
+            return out;
+        }
+        rest = end + 1 < rest.size() && rest[end + 1] == '.' ? rest.substr(end + 2) : "";
+    } else if (compound) {
+        effect = -1;
+    }
+    const size_t stop = rest.find_first_of(" :");
+    out["effect"] = effect;
+    out["field"] = rest.substr(0, stop);
+    return out;
+}
+
+}  // namespace
+
+LiveSession::LiveSession(std::shared_ptr<StudioDevice> device, const ProtocolSchema& schema)
+    : device_(std::move(device)), schema_(schema), last_sample_(device_->newest_seq()) {}
+
+LiveSession::~LiveSession() {
+    // A lost browser stops what it started: its effects go (RAII), its buttons come up.
+    if (buttons_ != 0) (void)device_->set_buttons(0);
+    if (hats_ != 0) (void)device_->set_hats(0);
+    slots_.clear();
+}
+
+const host::Effect* LiveSession::effect(size_t i) const noexcept {
+    return i < slots_.size() && slots_[i].effect ? &*slots_[i].effect : nullptr;
+}
+
+EffectParams LiveSession::device_params(const Slot& slot) const {
+    EffectParams p = slot.spec.params;
+    if (!slot.armed) {
+        p.trigger = {};
+        p.trigger_repeat_interval_us = 0;
+    }
+    return p;
+}
+
+std::vector<json> LiveSession::handle(std::string_view text) {
+    json m;
+    try {
+        m = json::parse(text);
+    } catch (const json::exception& e) {
+        return {error_reply(std::string("malformed message: not JSON (") + e.what() + ")")};
+    }
+    if (auto problem = schema_.problem("client", m)) return {error_reply("malformed message: " + *problem)};
+    const std::string type = m["type"].get<std::string>();
+    try {
+        if (type == "set_sensation") return {set_sensation(m)};
+        if (type == "pointer") {
+            pointer_seq_ = m["seq"].get<int64_t>();
+            if (!device_->set_hand_target(m["x"].get<int32_t>(), m["y"].get<int32_t>())) {
+                return {error_reply("the hand of a device in another process is a person's: the pad only shows it",
+                                    type)};
+            }
+            return {};
+        }
+        if (type == "grip") {
+            if (!device_->set_grip(m["grip"].get<std::string>())) {
+                return {error_reply("the grip can only be changed on a simulated device", type)};
+            }
+            return {};
+        }
+        if (type == "gain") {
+            const host::Status s = device_->device().set_gain(m["gain"].get<int32_t>());
+            if (!s.ok()) return {error_reply(s.message, type)};
+            return {};
+        }
+        if (type == "button" || type == "hat") {
+            const bool is_button = type == "button";
+            const int index = m[is_button ? "button" : "hat"].get<int>();
+            uint32_t& mask = is_button ? buttons_ : hats_;
+            const uint32_t bit = uint32_t{1} << (index - 1);
+            const uint32_t next = m["down"].get<bool>() ? (mask | bit) : (mask & ~bit);
+            const bool ok = is_button ? device_->set_buttons(next) : device_->set_hats(next);
+            if (!ok) {
+                const host::DeviceCaps& c = device_->device().capabilities();
+                return {error_reply(type + " " + std::to_string(index) + ": the device has " +
+                                        std::to_string(is_button ? c.button_count : c.hat_count) + " " + type +
+                                        "s" + (device_->simulated() ? "" : " (press the device's own)"),
+                                    type)};
+            }
+            mask = next;
+            return {};
+        }
+        if (type == "stop_all") {
+            for (Slot& s : slots_) {
+                if (s.effect) (void)s.effect->stop();
+                s.playing = false;
+            }
+            return {};
+        }
+        const auto index = m["effect"].get<size_t>();
+        if (index >= slots_.size() || !slots_[index].effect) {
+            return {error_reply(type + ": effect " + std::to_string(index) + " is not on the device (the sensation has " +
+                                    std::to_string(slots_.size()) + " valid effects)",
+                                type)};
+        }
+        Slot& slot = slots_[index];
+        if (type == "play") {
+            const host::Status s = slot.effect->start();
+            if (!s.ok()) return {error_reply(s.message, type)};
+            slot.playing = true;
+            ++slot.starts;
+        } else if (type == "stop") {
+            const host::Status s = slot.effect->stop();
+            if (!s.ok()) return {error_reply(s.message, type)};
+            slot.playing = false;
+        } else if (type == "arm") {
+            slot.armed = m["on"].get<bool>();
+            const EffectParams p = device_params(slot);
+            const host::Status s = slot.effect->set_parameters(
+                p, effect_field::kTrigger | effect_field::kTriggerRepeat, false);
+            if (!s.ok()) return {error_reply(s.message, type)};
+        }
+        return {};
+    } catch (const std::exception& e) {
+        return {error_reply(type + ": " + e.what(), type)};
+    }
+}
+
+json LiveSession::set_sensation(const json& m) {
+    const auto started = std::chrono::steady_clock::now();
+    const json& effects = m["effects"];
+    const std::string name = m["name"].get<std::string>();
+    const std::string origin = m.contains("file") ? m["file"].get<std::string>() : std::string("(unsaved)");
+    json reply = {{"type", "validated"}, {"seq", m["seq"]}, {"ok", true}, {"errors", json::array()},
+                  {"apply_us", 0}, {"restarted", json::array()}};
+    format::Sensation parsed;
+    if (!effects.empty()) {
+        const bool compound = effects.size() > 1;
+        json sensation = compound ? json{{"effects", effects}} : effects[0];
+        const json file = {{"format", "feel/1"}, {"sensations", {{name, sensation}}}};
+        try {
+            parsed = format::parse_sensation_file(file.dump(), origin).sensations.front();
+        } catch (const format::FormatError& e) {
+            reply["ok"] = false;
+            reply["errors"].push_back(locate(e.what(), compound));
+            return reply;  // the device keeps the last valid sensation
+        }
+    }
+    // Valid: bring the device's effects in line, by index.
+    while (slots_.size() > parsed.effects.size()) slots_.pop_back();
+    slots_.resize(parsed.effects.size());
+    for (size_t i = 0; i < parsed.effects.size(); ++i) {
+        bool restarted = false;
+        if (auto problem = apply(i, parsed.effects[i], restarted)) {
+            reply["ok"] = false;
+            json where = {{"effect", static_cast<int>(i)}, {"field", ""}, {"message", *problem}};
+            reply["errors"].push_back(where);
+        }
+        if (restarted) reply["restarted"].push_back(i);
+    }
+    reply["apply_us"] =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
+    return reply;
+}
+
+std::optional<std::string> LiveSession::apply(size_t index, const format::EffectSpec& spec, bool& restarted) {
+    Slot& slot = slots_[index];
+    const bool samples_changed = slot.spec.samples != spec.samples;
+    const EffectParams before = slot.effect ? slot.effect->parameters() : EffectParams{};
+    slot.spec = spec;
+    const EffectParams wanted = device_params(slot);
+    if (slot.effect && slot.effect->valid() && before.type == wanted.type && before.axis_count == wanted.axis_count) {
+        const uint32_t mask = changed_fields(before, wanted, samples_changed);
+        if (mask == 0) return std::nullopt;
+        const host::Status s = slot.effect->set_parameters(wanted, mask, false, spec.samples);
+        if (s.ok()) return std::nullopt;
+        if (s.kind != host::ErrorKind::invalid_parameter && s.kind != host::ErrorKind::not_supported) {
+            return s.message;
+        }
+        // A change the effect cannot take in place: a new effect below.
+    }
+    const bool was_playing = slot.playing;
+    slot.effect.reset();
+    auto made = device_->device().create_effect(wanted, spec.samples);
+    if (!made) {
+        slot.playing = false;
+        return made.status().message;
+    }
+    slot.effect = std::move(made.value());
+    if (was_playing) {
+        if (slot.effect->start().ok()) {
+            ++slot.starts;
+            restarted = true;
+        } else {
+            slot.playing = false;
+        }
+    }
+    return std::nullopt;
+}
+
+json LiveSession::effect_states() {
+    json out = json::array();
+    for (Slot& s : slots_) {
+        json e = {{"state", "none"}, {"starts", s.starts}, {"armed", s.armed}, {"elapsed_us", 0}};
+        if (s.effect) {
+            auto st = s.effect->status();
+            if (st) {
+                e["state"] = runtime::reported_effect_state_name(st->state);
+                e["elapsed_us"] = st->elapsed_us;
+                if (st->state == runtime::ReportedEffectState::stopped) s.playing = false;
+            }
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+json LiveSession::state_frame() {
+    std::vector<DeviceSample> samples = device_->samples_after(last_sample_);
+    if (samples.size() > kMaxFrameSamples) {  // a browser that fell behind gets the newest
+        samples.erase(samples.begin(), samples.end() - static_cast<std::ptrdiff_t>(kMaxFrameSamples));
+    }
+    json rows = json::array();
+    json force = json::array(), position = json::array();
+    uint32_t buttons = 0;
+    double t_us = 0;
+    for (const DeviceSample& s : samples) {
+        json row = json::array({static_cast<double>(s.t_us) / 1000.0});
+        for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.force[a]));
+        for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.position[a]));
+        rows.push_back(row);
+        last_sample_ = s.seq;
+    }
+    if (!samples.empty()) {
+        const DeviceSample& s = samples.back();
+        for (int a = 0; a < s.axis_count; ++a) {
+            force.push_back(s.force[a]);
+            position.push_back(s.position[a]);
+        }
+        buttons = s.buttons;
+        t_us = static_cast<double>(s.t_us);
+    }
+    // Effect states cost a round trip each: every sixth frame (10 Hz).
+    if (frames_++ % 6 == 0) last_effect_states_ = effect_states();
+    return {{"type", "state"},       {"t_us", t_us},       {"samples", rows},
+            {"position", position},  {"force", force},     {"buttons", buttons},
+            {"pointer_seq", pointer_seq_}, {"effects", last_effect_states_}};
+}
+
+}  // namespace feel::studio

@@ -1,0 +1,311 @@
+// End to end: the real `feel studio` in Debian's Chromium, driven by playwright-core.
+// The seven scenarios of issue 10 §7, screenshots to out/studio/, and the latency figures
+// (pointer -> force shown, edit -> device applied) printed for the README.
+//
+//   FEEL=build/apps/feel/feel node --test studio/e2e/   (make test-studio)
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn, execFileSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, writeFileSync, readFileSync, symlinkSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import http from 'node:http';
+import { chromium } from 'playwright-core';
+
+const repo = resolve(import.meta.dirname, '../..');
+const feel = resolve(repo, process.env.FEEL ?? 'build/apps/feel/feel');
+const shots = resolve(repo, 'out/studio');
+mkdirSync(shots, { recursive: true });
+
+// Starts `feel studio` on a free port; resolves with its URL.
+function startStudio(workspace, device = 'sim:iforce2') {
+  return new Promise((ok, fail) => {
+    const p = spawn(feel, ['studio', '--workspace', workspace, '--device', device, '--port', '0'], {
+      stdio: ['ignore', 'pipe', 'inherit'],
+    });
+    let out = '';
+    p.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/open (http:\/\/\S+)/);
+      if (m) ok({ url: m[1], proc: p });
+    });
+    p.on('exit', (code) => fail(new Error(`feel studio exited ${code}: ${out}`)));
+  });
+}
+
+let browser, workspace, studio, iforce1;
+before(async () => {
+  workspace = mkdtempSync(join(tmpdir(), 'feel-studio-'));
+  studio = await startStudio(workspace);
+  iforce1 = await startStudio(workspace, 'sim:iforce1');
+  // a fresh profile (--user-data-dir, which playwright passes for a persistent context)
+  browser = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'feel-chromium-')), {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1400, height: 1000 },
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+});
+after(async () => {
+  await browser?.close();
+  studio?.proc.kill('SIGTERM');
+  iforce1?.proc.kill('SIGTERM');
+  rmSync(workspace, { recursive: true, force: true });
+});
+
+async function open(url = studio.url) {
+  const page = await browser.newPage();
+  page.on('dialog', (d) => d.accept(page.nextAnswer ?? ''));
+  await page.goto(url);
+  await page.waitForFunction(() => window.__studio?.store.state.hello !== null && window.__studio?.frames() > 2);
+  return page;
+}
+const state = (page) => page.evaluate(() => {
+  const s = window.__studio;
+  return { ...s.pad.state, errors: s.store.state.errors, effects: s.store.effects() };
+});
+async function addType(page, type) {
+  await page.click(`#palette li[data-type="${type}"]`);
+  await page.waitForFunction(() => window.__studio.store.state.errors.length === 0);
+}
+async function setField(page, path, value) {
+  const input = page.locator(`#editor .field[data-path="${path}"] input[type=number]`);
+  await input.fill(String(value));
+  await input.press('Enter');
+  await input.blur();
+}
+// Drags the pad's pointer to a device position (normalized), in steps.
+async function dragTo(page, x, y, from = [0, 0], steps = 20) {
+  const box = await page.locator('#pad-canvas').boundingBox();
+  const m = 14 * box.width / 320, s = (box.width - 2 * m) / 20000;
+  const at = (px, py) => [box.x + m + (px + 10000) * s, box.y + m + (10000 - py) * s];
+  await page.mouse.move(...at(...from));
+  await page.mouse.down();
+  for (let i = 1; i <= steps; ++i) {
+    await page.mouse.move(...at(from[0] + ((x - from[0]) * i) / steps, from[1] + ((y - from[1]) * i) / steps));
+    await page.waitForTimeout(10);
+  }
+}
+const settle = (page, ms = 600) => page.waitForTimeout(ms);
+
+test('1. the palette lists every type on iforce2 and no Dynamics on iforce1', async () => {
+  const page = await open();
+  const types = await page.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
+  assert.equal(types.length, 33, `iforce2 palette: ${types}`);
+  assert.ok(types.includes('dynamic_paddle') && types.includes('spring') && types.includes('sweep_saw_down'));
+  await page.screenshot({ path: join(shots, 'palette-iforce2.png'), timeout: 90000 });
+  const p1 = await open(iforce1.url);
+  const types1 = await p1.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
+  assert.ok(types1.length > 0);
+  assert.equal(types1.filter((t) => t.startsWith('dynamic_')).length, 0, `iforce1 palette: ${types1}`);
+  assert.equal(await p1.locator('#palette details[data-class="dynamic"]').count(), 0);
+  await p1.close();
+  await page.close();
+});
+
+test('2. a spring of coefficient 5000: the force follows the spring law, the arrow points back', async () => {
+  const page = await open();
+  await addType(page, 'spring');
+  for (const a of [0, 1]) {
+    await setField(page, `conditions[${a}].pos_coefficient`, 5000);
+    await setField(page, `conditions[${a}].neg_coefficient`, 5000);
+  }
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await dragTo(page, 4000, 0);
+  await settle(page, 800);
+  const s = await state(page);
+  // The spring law (§3.1): F = -coefficient/10000 · (x - offset), offset 0.
+  const expected = -0.5 * s.position[0];
+  assert.ok(s.position[0] > 2500, `the handle moved toward +4000: ${s.position[0]}`);
+  assert.ok(Math.abs(s.force[0] - expected) <= 200, `force ${s.force[0]} vs spring law ${expected} (2% of full scale)`);
+  assert.ok(s.force[0] < 0, 'the arrow points back to the centre (force toward -x)');
+  await page.screenshot({ path: join(shots, 'spring.png'), timeout: 90000 });
+  // the pointer -> force-shown latency: back and forth across the spring, with the stiff
+  // hand (the handle follows the pointer within a few ms), a change of 0.2% of full scale
+  await page.selectOption('#grip', 'stiff');
+  await settle(page, 300);
+  const lat = [];
+  for (let i = 0; i < 40; ++i) {
+    await page.evaluate(() => { window.__studio.pad.latencies.length = 0; });
+    const x = i % 2 ? 6000 : -6000;
+    const box = await page.locator('#pad-canvas').boundingBox();
+    await page.mouse.move(box.x + box.width / 2 + (x / 20000) * (box.width - 28), box.y + box.height / 2);
+    await page.waitForFunction(() => window.__studio.pad.latencies.length > 0, null, { timeout: 2000 });
+    lat.push(await page.evaluate(() => window.__studio.pad.latencies[0]));
+  }
+  await page.mouse.up();
+  lat.sort((a, b) => a - b);
+  const q = (p) => lat[Math.min(lat.length - 1, Math.floor(p * lat.length))];
+  console.log(`LATENCY pointer->force shown: p50=${q(0.5).toFixed(1)} ms p99=${q(0.99).toFixed(1)} ms (n=${lat.length})`);
+  await page.close();
+});
+
+test('3. dragging into a wall: the handle stops at the wall, the pointer goes on', async () => {
+  const page = await open();
+  await addType(page, 'axis_wall'); // x, offset 5000, positive sense, clipping
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await dragTo(page, 9500, 0);
+  await settle(page, 800);
+  const s = await state(page);
+  assert.equal(s.target[0], 9500);
+  assert.ok(s.position[0] < 6000, `the handle stays near the wall at 5000: ${s.position[0]}`);
+  assert.ok(s.position[0] > 3500, `the handle reached the wall: ${s.position[0]}`);
+  assert.ok(s.force[0] < -500, `the wall pushes back: ${s.force[0]}`);
+  await page.screenshot({ path: join(shots, 'wall.png'), timeout: 90000 });
+  await page.mouse.up();
+  await page.close();
+});
+
+test('4. a square wave on button 2: plays while key 2 is held, repeats at the interval', async () => {
+  const page = await open();
+  await addType(page, 'square');
+  await setField(page, 'duration_us', 150000);
+  await setField(page, 'periodic.magnitude', 6000);
+  await setField(page, 'periodic.period_us', 50000);
+  await page.selectOption('#editor .field[data-path="trigger_button"] select', '2');
+  await page.waitForSelector('#triggers .button[data-button="2"] .reflex');
+  await page.fill('#triggers .button[data-button="2"] input.repeat', '400000');
+  await page.press('#triggers .button[data-button="2"] input.repeat', 'Enter');
+  await page.locator('#pad-canvas').click({ position: { x: 160, y: 160 } }); // focus away from inputs
+  await settle(page, 300);
+  const t0 = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
+  await page.keyboard.down('2');
+  await settle(page, 2000);
+  await page.keyboard.up('2');
+  await settle(page, 1500);
+  await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: 90000 });
+  const rows = await page.evaluate(() => window.__studio.plot.window());
+  const held = rows.filter((r) => r[0] > t0);
+  // onsets (device time): |force| above half the magnitude after at least 100 ms of quiet
+  const onsets = [];
+  let last = -1e9;
+  for (const r of held) {
+    if (Math.abs(r[1]) > 2500) { if (r[0] - last > 100) onsets.push(r[0]); last = r[0]; }
+  }
+  const why = await page.evaluate(() => JSON.stringify([window.__studio.liveStates(), document.querySelector('#status').textContent]));
+  assert.ok(onsets.length >= 3, `the reflex repeated while held: onsets at ${onsets.map((t) => (t - t0).toFixed(0))} (${held.length} samples; ${why})`);
+  for (let i = 1; i < onsets.length; ++i) {
+    assert.ok(Math.abs(onsets[i] - onsets[i - 1] - 400) < 40, `repeat interval ${onsets[i] - onsets[i - 1]} ms vs 400`);
+  }
+  // released: the repeats stop (the newest 600 ms of the plot are quiet)
+  const newest = rows[rows.length - 1][0];
+  const afterRelease = rows.filter((r) => r[0] > newest - 600);
+  const peak = Math.max(...held.map((r) => Math.abs(r[1])));
+  assert.ok(Math.abs(peak - 6000) < 300, `square magnitude ${peak}`);
+  assert.ok(afterRelease.length > 0 && afterRelease.every((r) => Math.abs(r[1]) < 100), 'no force after the key is released');
+  await page.close();
+});
+
+test('5. editing a magnitude while it plays changes the plot within 100 ms, without restart', async () => {
+  const page = await open();
+  await addType(page, 'sine');
+  await setField(page, 'duration_us', 20000000);
+  await setField(page, 'periodic.magnitude', 2000);
+  await setField(page, 'periodic.period_us', 20000);
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await settle(page, 500);
+  const startsBefore = await page.evaluate(() => window.__studio.liveStates()[0]?.starts);
+  assert.equal(startsBefore, 1);
+  const input = page.locator('#editor .field[data-path="periodic.magnitude"] input[type=number]');
+  await input.fill('7000');
+  const tEdit = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
+  await input.press('Enter');
+  await settle(page, 500);
+  const rows = await page.evaluate(() => window.__studio.plot.window());
+  const firstBig = rows.find((r) => r[0] > tEdit && Math.abs(r[1]) > 2500);
+  assert.ok(firstBig, 'the larger sine shows in the plot');
+  assert.ok(firstBig[0] - tEdit < 100, `changed ${(firstBig[0] - tEdit).toFixed(1)} ms after the edit (device time)`);
+  await settle(page, 300);
+  const after = await page.evaluate(() => window.__studio.liveStates()[0]);
+  assert.equal(after.starts, 1, 'not restarted: started once');
+  assert.equal(after.state, 'playing');
+  assert.ok(after.elapsed_us > 700000, `elapsed time went on: ${after.elapsed_us} us`);
+  const liveStates = await page.evaluate(() => [...document.querySelectorAll('#design .icon-meta')].map((e) => e.textContent));
+  assert.match(liveStates[0], /playing/);
+  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: 90000 });
+  // edit -> device: 40 more edits while it plays
+  await page.evaluate(() => { window.__studio.editTimes.length = 0; window.__studio.applyTimes.length = 0; });
+  for (let i = 0; i < 40; ++i) {
+    await input.fill(String(3000 + 100 * i));
+    await input.press('Enter');
+    await page.waitForFunction((n) => window.__studio.applyTimes.length >= n, i + 1);
+  }
+  const q = (list, p) => { const l = [...list].sort((a, b) => a - b); return l[Math.min(l.length - 1, Math.floor(p * l.length))]; };
+  const edit = await page.evaluate(() => window.__studio.editTimes.slice());
+  const apply = await page.evaluate(() => window.__studio.applyTimes.slice());
+  console.log(`LATENCY edit->device applied (server: set_parameters acked after the tick took it): p50=${q(apply, 0.5).toFixed(2)} ms p99=${q(apply, 0.99).toFixed(2)} ms; browser edit->validated: p50=${q(edit, 0.5).toFixed(1)} ms p99=${q(edit, 0.99).toFixed(1)} ms (n=${apply.length})`);
+  await page.close();
+});
+
+test('6. save, reload, open: identical, and it plays through SensationLibrary', async () => {
+  const page = await open();
+  await addType(page, 'spring');
+  await addType(page, 'sine');
+  await page.selectOption('#editor .field[data-path="trigger_button"] select', '3');
+  await settle(page, 200);
+  page.nextAnswer = 'designed.feel.json';
+  await page.click('#save');
+  await page.waitForFunction(() => window.__studio.store.state.doc.file === 'designed.feel.json');
+  const saved = readFileSync(join(workspace, 'designed.feel.json'), 'utf8');
+  const docBefore = await page.evaluate(() => JSON.stringify(window.__studio.store.state.doc.sensations));
+  await page.reload();
+  await page.waitForFunction(() => window.__studio?.store.state.hello !== null);
+  page.nextAnswer = 'designed.feel.json';
+  await page.click('#open');
+  await page.waitForFunction(() => window.__studio.store.state.doc.file === 'designed.feel.json');
+  const docAfter = await page.evaluate(() => JSON.stringify(window.__studio.store.state.doc.sensations));
+  assert.equal(docAfter, docBefore);
+  assert.match(saved, /"trigger_button": 3/);
+  // the two calls of §9.5, through feel play (SensationLibrary::load + play)
+  const out = execFileSync(feel, ['play', join(workspace, 'designed.feel.json'), '--sensation', 'untitled', '--seconds', '0.3']).toString();
+  assert.match(out, /untitled/);
+  await page.screenshot({ path: join(shots, 'saved.png'), timeout: 90000 });
+  await page.close();
+});
+
+function raw(url, path, headers, body) {
+  const u = new URL(url);
+  return new Promise((ok, fail) => {
+    const req = http.request({ host: u.hostname, port: u.port, path, method: body ? 'POST' : 'GET', headers }, (res) => {
+      let data = '';
+      res.on('data', (d) => (data += d));
+      res.on('end', () => ok({ status: res.statusCode, body: data }));
+    });
+    req.on('upgrade', (res) => ok({ status: res.statusCode, body: '' }));
+    req.on('error', fail);
+    if (body) req.write(body);
+    req.end();
+  });
+}
+
+test('7. a path outside the workspace and a wrong Origin are refused', async () => {
+  const page = await open();
+  const results = await page.evaluate(async () => {
+    const call = async (body) => {
+      const r = await fetch('/api/read', { method: 'POST', body: JSON.stringify(body) });
+      return { status: r.status, body: await r.json() };
+    };
+    return [await call({ path: '../etc/passwd.feel.json' }), await call({ path: '/etc/x.feel.json' })];
+  });
+  assert.equal(results[0].status, 403);
+  assert.match(results[0].body.error, /'\.\.'/);
+  assert.equal(results[1].status, 403);
+  assert.match(results[1].body.error, /absolute/);
+  mkdirSync(join(workspace, 'sub'), { recursive: true });
+  symlinkSync('/tmp', join(workspace, 'out-link'));
+  const link = await raw(studio.url, '/api/read', { Host: new URL(studio.url).host }, JSON.stringify({ path: 'out-link/x.feel.json' }));
+  assert.equal(link.status, 403);
+  const host = new URL(studio.url).host;
+  const evil = await raw(studio.url, '/api/list', { Host: host, Origin: 'http://evil.example' }, '{}');
+  assert.equal(evil.status, 403);
+  assert.match(evil.body, /Origin/);
+  const rebound = await raw(studio.url, '/', { Host: `attacker.example:${new URL(studio.url).port}` });
+  assert.equal(rebound.status, 403);
+  const ws = await raw(studio.url, '/live', {
+    Host: host, Origin: 'http://evil.example', Connection: 'Upgrade', Upgrade: 'websocket',
+    'Sec-WebSocket-Version': '13', 'Sec-WebSocket-Key': 'dGhlIHNhbXBsZSBub25jZQ==',
+  });
+  assert.equal(ws.status, 403);
+  await page.close();
+});

@@ -1,0 +1,241 @@
+// The generated form: every field of every type, driven by the server's one field
+// description (src/studio/field_schema.cpp: the format's field table with the validator's
+// ranges). Nothing here knows a particular type. Errors appear at their field with the
+// message `feel check` prints.
+import { h } from '../dom';
+import type { EffectJson } from '../document';
+import type { FieldError, State, Store } from '../store';
+
+export interface FieldInfo {
+  name: string;
+  kind: 'integer' | 'boolean' | 'choice';
+  required: boolean;
+  choices?: string[];
+  min?: number;
+  max?: number;
+  infinite?: boolean;
+  unit: string;
+}
+export interface TypeInfo {
+  type: string;
+  class: string;
+  block: string;
+  shape: 'object' | 'per_axis' | 'one_block';
+  envelope: boolean;
+  samples: boolean;
+  fields: FieldInfo[];
+  control_law?: FieldInfo[];
+  envelope_fields?: FieldInfo[];
+}
+export interface FieldsDescription {
+  types: TypeInfo[];
+  common: FieldInfo[];
+}
+
+type Get = () => unknown;
+type Set = (v: unknown) => void;
+
+function range(f: FieldInfo): string {
+  const r = f.min !== undefined ? `${f.min}..${f.max}` : '';
+  return [r, f.infinite ? 'or infinite' : '', f.unit].filter(Boolean).join(' ');
+}
+
+function fieldRow(path: string, f: FieldInfo, get: Get, set: Set, errors: FieldError[]): HTMLElement {
+  const value = get();
+  let input: HTMLElement;
+  if (f.kind === 'boolean') {
+    input = h('input', { type: 'checkbox', checked: value === true, onchange: (e: Event) => set((e.target as HTMLInputElement).checked) });
+  } else if (f.kind === 'choice') {
+    input = h(
+      'select',
+      { onchange: (e: Event) => set((e.target as HTMLSelectElement).value || undefined) },
+      f.required ? null : h('option', { value: '' }, '(default)'),
+      ...(f.choices ?? []).map((c) => h('option', { value: c, selected: value === c }, c)),
+    );
+  } else {
+    const infinite = value === 'infinite';
+    input = h(
+      'span',
+      { class: 'number' },
+      h('input', {
+        type: 'number',
+        step: 1,
+        value: infinite || value === undefined ? '' : String(value),
+        placeholder: f.required ? '' : 'default',
+        disabled: infinite,
+        onchange: (e: Event) => {
+          const t = (e.target as HTMLInputElement).value.trim();
+          set(t === '' ? undefined : Number(t));
+        },
+      }),
+      f.infinite
+        ? h('label', {}, h('input', { type: 'checkbox', class: 'infinite', checked: infinite, onchange: (e: Event) => set((e.target as HTMLInputElement).checked ? 'infinite' : (f.max ?? 1000000)) }), '∞')
+        : null,
+    );
+  }
+  const mine = errors.filter((e) => e.field === path || e.field.startsWith(path + '[') || e.field.startsWith(path + '.'));
+  return h(
+    'div',
+    { class: `field ${mine.length ? 'has-error' : ''}`, 'data-path': path },
+    h('label', { class: 'name', title: path }, f.name, f.required ? h('span', { class: 'req' }, '*') : null),
+    input,
+    h('span', { class: 'range' }, range(f)),
+    ...mine.map((e) => h('div', { class: 'error', 'data-error-for': path }, e.message)),
+  );
+}
+
+function obj(parent: Record<string, unknown>, key: string): Record<string, unknown> {
+  if (typeof parent[key] !== 'object' || parent[key] === null) parent[key] = {};
+  return parent[key] as Record<string, unknown>;
+}
+
+export function formEditor(root: HTMLElement, store: Store) {
+  return (s: State) => {
+    const i = s.selected;
+    const effects = store.effects();
+    const fx = effects[i];
+    const desc = s.hello?.fields as unknown as FieldsDescription | undefined;
+    if (!fx || !desc) {
+      root.replaceChildren(h('p', { class: 'hint' }, 'Select an effect to edit it.'));
+      const general = s.errors.filter((e) => e.effect === -1 || e.field === '');
+      root.append(...general.map((e) => h('div', { class: 'error' }, e.message)));
+      return;
+    }
+    const info = desc.types.find((t) => t.type === fx.type);
+    const errors = s.errors.filter((e) => e.effect === i || e.effect === -1);
+    const edit = (change: (e: EffectJson) => void) =>
+      store.update((d) => change(d.sensations[d.current].effects[i]), i);
+    const setIn = (target: (e: EffectJson) => Record<string, unknown>, key: string): Set => (v) =>
+      edit((e) => {
+        const t = target(e);
+        if (v === undefined) delete t[key];
+        else t[key] = v;
+      });
+    const rows: HTMLElement[] = [];
+    rows.push(h('h3', {}, `#${i + 1} ${fx.type}`, h('span', { class: 'class' }, info?.class ?? '')));
+    for (const f of desc.common) {
+      rows.push(fieldRow(f.name, f, () => fx[f.name], setIn((e) => e, f.name), errors));
+    }
+    // axes: the device's, in order
+    const deviceAxes = ((s.hello?.device.axes as { name: string }[]) ?? []).map((a) => a.name);
+    const axes = (fx.axes as string[]) ?? [];
+    rows.push(
+      h(
+        'div',
+        { class: `field ${errors.some((e) => e.field.startsWith('axes')) ? 'has-error' : ''}`, 'data-path': 'axes' },
+        h('label', { class: 'name' }, 'axes', h('span', { class: 'req' }, '*')),
+        h('span', {}, ...deviceAxes.map((a) =>
+          h('label', { class: 'axis' }, h('input', { type: 'checkbox', 'data-axis': a, checked: axes.includes(a), onchange: (e: Event) => edit((x) => {
+            const on = (e.target as HTMLInputElement).checked;
+            const next = deviceAxes.filter((n) => (n === a ? on : axes.includes(n)));
+            x.axes = next;
+          }) }), a))),
+        h('span', { class: 'range' }, 'the device’s axes'),
+        ...errors.filter((e) => e.field.startsWith('axes')).map((e) => h('div', { class: 'error' }, e.message)),
+      ),
+    );
+    // trigger button: the device's buttons and hats
+    const buttons = Number(s.hello?.device.buttons ?? 0);
+    const hats = Number(s.hello?.device.hats ?? 0);
+    rows.push(
+      h(
+        'div',
+        { class: 'field', 'data-path': 'trigger_button' },
+        h('label', { class: 'name' }, 'trigger_button'),
+        h('select', { onchange: (e: Event) => {
+          const v = (e.target as HTMLSelectElement).value;
+          setIn((x) => x, 'trigger_button')(v === '' ? undefined : v.startsWith('hat') ? v : Number(v));
+        } },
+          h('option', { value: '' }, '(none)'),
+          ...Array.from({ length: buttons }, (_, b) => h('option', { value: String(b + 1), selected: fx.trigger_button === b + 1 }, `button ${b + 1}`)),
+          ...Array.from({ length: hats }, (_, t) => h('option', { value: `hat${t + 1}`, selected: fx.trigger_button === `hat${t + 1}` }, `hat ${t + 1}`)),
+        ),
+        h('span', { class: 'range' }, 'a reflex (§1.2.c)'),
+        ...errors.filter((e) => e.field === 'trigger_button').map((e) => h('div', { class: 'error' }, e.message)),
+      ),
+    );
+    // direction: any of the format's forms, as JSON
+    rows.push(
+      h(
+        'div',
+        { class: `field ${errors.some((e) => e.field.startsWith('direction')) ? 'has-error' : ''}`, 'data-path': 'direction' },
+        h('label', { class: 'name' }, 'direction'),
+        h('input', { type: 'text', class: 'json', value: fx.direction ? JSON.stringify(fx.direction) : '', placeholder: '{"polar": 9000}', onchange: (e: Event) => {
+          const t = (e.target as HTMLInputElement).value.trim();
+          try {
+            setIn((x) => x, 'direction')(t === '' ? undefined : JSON.parse(t));
+          } catch {
+            (e.target as HTMLInputElement).setCustomValidity('not JSON');
+          }
+        } }),
+        h('span', { class: 'range' }, 'polar/spherical 0.01°, cartesian/moments ±10000'),
+        ...errors.filter((e) => e.field.startsWith('direction')).map((e) => h('div', { class: 'error' }, e.message)),
+      ),
+    );
+    if (info?.envelope) {
+      const has = typeof fx.envelope === 'object';
+      rows.push(h('h4', {}, h('label', {}, h('input', { type: 'checkbox', class: 'envelope-on', checked: has, onchange: (e: Event) => edit((x) => {
+        if ((e.target as HTMLInputElement).checked) x.envelope = { impulse_level: 10000, settle_time_us: 0 };
+        else delete x.envelope;
+      }) }), 'envelope')));
+      if (has) {
+        for (const f of info.envelope_fields ?? []) {
+          rows.push(fieldRow(`envelope.${f.name}`, f, () => (fx.envelope as Record<string, unknown>)[f.name], setIn((e) => obj(e, 'envelope'), f.name), errors));
+        }
+      }
+    }
+    if (info) {
+      rows.push(h('h4', {}, info.block));
+      if (info.shape === 'object') {
+        const block = (fx[info.block] as Record<string, unknown>) ?? {};
+        for (const f of info.fields) {
+          rows.push(fieldRow(`${info.block}.${f.name}`, f, () => block[f.name], setIn((e) => obj(e, info.block), f.name), errors));
+        }
+        if (info.control_law) {
+          const laws = (block.control_law as Record<string, unknown>[]) ?? [];
+          laws.forEach((law, a) => {
+            rows.push(h('h5', {}, `control_law[${a}] (${axes[a] ?? '?'})`));
+            for (const f of info.control_law ?? []) {
+              rows.push(fieldRow(`dynamic.control_law[${a}].${f.name}`, f, () => law[f.name], setIn((e) => ((obj(e, 'dynamic').control_law as Record<string, unknown>[])[a]), f.name), errors));
+            }
+          });
+          rows.push(h('button', { onclick: () => edit((e) => {
+            const list = (obj(e, 'dynamic').control_law as Record<string, unknown>[]) ?? [];
+            list.push(structuredClone(list[0] ?? { mass: 1000, k_pos: 1000, k_neg: 1000 }));
+            obj(e, 'dynamic').control_law = list;
+          }) }, '+ control law (one per axis)'));
+        }
+        if (info.samples) {
+          const samples = (block.samples as number[]) ?? [];
+          rows.push(
+            h('div', { class: `field ${errors.some((e) => e.field.includes('samples')) ? 'has-error' : ''}`, 'data-path': 'custom.samples' },
+              h('label', { class: 'name' }, 'samples'),
+              h('input', { type: 'text', class: 'json', value: samples.join(', '), onchange: (e: Event) => {
+                const list = (e.target as HTMLInputElement).value.split(',').map((x) => Number(x.trim())).filter((x) => !Number.isNaN(x));
+                setIn((x) => obj(x, info.block), 'samples')(list);
+              } }),
+              h('span', { class: 'range' }, '±10000 each, interleaved by channel'),
+              ...errors.filter((e) => e.field.includes('samples')).map((e) => h('div', { class: 'error' }, e.message)),
+            ),
+          );
+        }
+      } else {
+        const blocks = (fx[info.block] as Record<string, unknown>[]) ?? [];
+        const count = info.shape === 'one_block' ? 1 : Math.max(1, axes.length);
+        for (let a = 0; a < count; ++a) {
+          rows.push(h('h5', {}, info.shape === 'one_block' ? `${info.block}[0]` : `${info.block}[${a}] (${axes[a] ?? '?'})`));
+          for (const f of info.fields) {
+            rows.push(fieldRow(`${info.block}[${a}].${f.name}`, f, () => blocks[a]?.[f.name], setIn((e) => {
+              const list = (e[info.block] as Record<string, unknown>[]) ?? [];
+              while (list.length <= a) list.push({});
+              e[info.block] = list;
+              return list[a];
+            }, f.name), errors));
+          }
+        }
+      }
+    }
+    const unplaced = errors.filter((e) => !rows.some((r) => r.querySelector?.(`[data-error-for]`) && r.textContent?.includes(e.message)));
+    root.replaceChildren(...rows, ...unplaced.filter((e) => !root.isConnected || true).filter((e) => e.field === '' ).map((e) => h('div', { class: 'error general' }, e.message)));
+  };
+}

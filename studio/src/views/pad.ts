@@ -1,0 +1,206 @@
+// The handle pad: the device's travel as a square in its own axes and signs
+// (docs/conventions.md: +x right, +y forward = up on the screen). Dragging moves the
+// simulated hand's target; the handle is drawn where the device reports it, the force as
+// an arrow from it, and the spatial effects of the sensation where they are: spring
+// centres, walls, barriers, texture bumps. A 1-axis device gets a slider.
+import { h } from '../dom';
+import type { EffectJson } from '../document';
+import type { Live } from '../live';
+import type { Store } from '../store';
+
+export interface PadState {
+  position: number[];
+  force: number[];
+  target: [number, number] | null;
+}
+
+const kSize = 320;
+const kMargin = 14;
+
+export class Pad {
+  readonly canvas: HTMLCanvasElement;
+  private seq = 0;
+  private dragging = false;
+  state: PadState = { position: [0, 0], force: [0, 0], target: null };
+  // pointer -> force shown, for the latency figure (docs/studio.md)
+  probe: { t0: number; force: number[] } | null = null;
+  latencies: number[] = [];
+
+  constructor(
+    root: HTMLElement,
+    private store: Store,
+    private live: Live,
+    private axes: () => number,
+  ) {
+    this.canvas = h('canvas', { width: kSize, height: kSize, id: 'pad-canvas', title: 'drag to move the hand' });
+    const grip = h(
+      'select',
+      { id: 'grip', onchange: (e: Event) => live.send({ type: 'grip', grip: (e.target as HTMLSelectElement).value as 'firm' }) },
+      ...['loose', 'firm', 'stiff'].map((g) => h('option', { value: g, selected: g === 'firm' }, `${g} hand`)),
+    );
+    root.replaceChildren(h('h2', {}, 'Handle'), this.canvas, h('div', { class: 'pad-tools' }, grip, h('span', { id: 'readout' })));
+    this.canvas.addEventListener('pointerdown', (e) => {
+      this.dragging = true;
+      this.canvas.setPointerCapture(e.pointerId);
+      this.move(e);
+    });
+    this.canvas.addEventListener('pointermove', (e) => this.dragging && this.move(e));
+    this.canvas.addEventListener('pointerup', () => (this.dragging = false));
+  }
+
+  setGrip(g: string): void {
+    (document.getElementById('grip') as HTMLSelectElement).value = g;
+  }
+
+  private toScreen(x: number, y: number): [number, number] {
+    const s = (kSize - 2 * kMargin) / 20000;
+    const oneAxis = this.axes() === 1;
+    return [kMargin + (x + 10000) * s, oneAxis ? kSize / 2 : kMargin + (10000 - y) * s];
+  }
+
+  private move(e: PointerEvent): void {
+    const r = this.canvas.getBoundingClientRect();
+    const s = (kSize - 2 * kMargin) / 20000;
+    const px = ((e.clientX - r.left) * kSize) / r.width;
+    const py = ((e.clientY - r.top) * kSize) / r.height;
+    const clamp = (v: number) => Math.max(-10000, Math.min(10000, Math.round(v)));
+    const x = clamp((px - kMargin) / s - 10000);
+    const y = this.axes() === 1 ? 0 : clamp(10000 - (py - kMargin) / s);
+    this.state.target = [x, y];
+    this.probe = { t0: performance.now(), force: [...this.state.force] };
+    this.live.send({ type: 'pointer', seq: ++this.seq, x, y });
+    this.draw();
+  }
+
+  update(position: number[], force: number[]): void {
+    this.state.position = position;
+    this.state.force = force;
+    if (this.probe) {
+      const moved = force.some((f, a) => Math.abs(f - (this.probe!.force[a] ?? 0)) > 20);
+      if (moved) {
+        this.latencies.push(performance.now() - this.probe.t0);
+        if (this.latencies.length > 5000) this.latencies.shift();
+        this.probe = null;
+      }
+    }
+    this.draw();
+    const fmt = (v: number[]) => v.map((n) => Math.round(n)).join(', ');
+    const readout = document.getElementById('readout');
+    if (readout) readout.textContent = `position ${fmt(position)} · force ${fmt(force)}`;
+  }
+
+  draw(): void {
+    const c = this.canvas.getContext('2d')!;
+    const oneAxis = this.axes() === 1;
+    c.clearRect(0, 0, kSize, kSize);
+    c.fillStyle = '#f7f8fa';
+    c.fillRect(0, 0, kSize, kSize);
+    c.strokeStyle = '#c5cad3';
+    c.lineWidth = 1;
+    if (oneAxis) {
+      const [x0, y0] = this.toScreen(-10000, 0);
+      const [x1] = this.toScreen(10000, 0);
+      c.strokeRect(x0, y0 - 10, x1 - x0, 20);
+    } else {
+      const [x0, y0] = this.toScreen(-10000, 10000);
+      const [x1, y1] = this.toScreen(10000, -10000);
+      c.strokeRect(x0, y0, x1 - x0, y1 - y0);
+      c.beginPath();
+      const [cx, cy] = this.toScreen(0, 0);
+      c.moveTo(cx, y0); c.lineTo(cx, y1); c.moveTo(x0, cy); c.lineTo(x1, cy);
+      c.stroke();
+    }
+    for (const fx of this.store.effects()) this.drawEffect(c, fx);
+    if (this.state.target) {
+      const [tx, ty] = this.toScreen(this.state.target[0], this.state.target[1]);
+      c.strokeStyle = '#8a93a3';
+      c.setLineDash([3, 3]);
+      c.beginPath(); c.arc(tx, ty, 9, 0, 2 * Math.PI); c.stroke();
+      c.setLineDash([]);
+    }
+    const [hx, hy] = this.toScreen(this.state.position[0] ?? 0, oneAxis ? 0 : (this.state.position[1] ?? 0));
+    c.fillStyle = '#2458d6';
+    c.beginPath(); c.arc(hx, hy, 7, 0, 2 * Math.PI); c.fill();
+    // the force: 10000 (full scale) is a third of the pad
+    const k = (kSize / 3) / 10000;
+    const fx = (this.state.force[0] ?? 0) * k;
+    const fy = oneAxis ? 0 : -(this.state.force[1] ?? 0) * k;
+    if (Math.hypot(fx, fy) > 2) {
+      c.strokeStyle = '#d63a24';
+      c.fillStyle = '#d63a24';
+      c.lineWidth = 3;
+      c.beginPath(); c.moveTo(hx, hy); c.lineTo(hx + fx, hy + fy); c.stroke();
+      const a = Math.atan2(fy, fx);
+      c.beginPath();
+      c.moveTo(hx + fx, hy + fy);
+      c.lineTo(hx + fx - 9 * Math.cos(a - 0.45), hy + fy - 9 * Math.sin(a - 0.45));
+      c.lineTo(hx + fx - 9 * Math.cos(a + 0.45), hy + fy - 9 * Math.sin(a + 0.45));
+      c.fill();
+      c.lineWidth = 1;
+    }
+  }
+
+  // Spatial effects where they act, from their parameters (the format's JSON).
+  private drawEffect(c: CanvasRenderingContext2D, fx: EffectJson): void {
+    const axes = (fx.axes as string[]) ?? [];
+    const num = (o: unknown, k: string) => Number((o as Record<string, unknown> | undefined)?.[k] ?? 0);
+    const line = (x0: number, y0: number, x1: number, y1: number) => {
+      const [a, b] = this.toScreen(x0, y0);
+      const [d, e] = this.toScreen(x1, y1);
+      c.beginPath(); c.moveTo(a, b); c.lineTo(d, e); c.stroke();
+    };
+    // a line across the pad at distance `offset` along the compass angle (0 = +y, 9000 = +x)
+    const across = (angle: number, offset: number) => {
+      const t = (angle / 100) * (Math.PI / 180);
+      const ux = Math.sin(t), uy = Math.cos(t);
+      const px = ux * offset, py = uy * offset;
+      line(px - uy * 15000, py + ux * 15000, px + uy * 15000, py - ux * 15000);
+    };
+    const alongAxis = (axis: string, offset: number) => (axis === 'x' ? across(9000, offset) : axis === 'y' ? across(0, offset) : undefined);
+    c.save();
+    c.beginPath();
+    c.rect(kMargin, kMargin, kSize - 2 * kMargin, kSize - 2 * kMargin);
+    c.clip();
+    switch (fx.type) {
+      case 'spring': case 'damper': case 'inertia': case 'friction': case 'angle_spring': {
+        const conds = (fx.conditions as Record<string, unknown>[]) ?? [];
+        if (fx.type !== 'spring' && fx.type !== 'angle_spring') break;
+        const ox = axes.indexOf('x') >= 0 ? num(conds[fx.type === 'angle_spring' ? 0 : axes.indexOf('x')], 'offset') : 0;
+        const oy = axes.indexOf('y') >= 0 && fx.type === 'spring' ? num(conds[axes.indexOf('y')], 'offset') : 0;
+        const [sx, sy] = this.toScreen(ox, oy);
+        c.strokeStyle = '#1b9e5a';
+        c.lineWidth = 2;
+        c.beginPath(); c.moveTo(sx - 8, sy); c.lineTo(sx + 8, sy); c.moveTo(sx, sy - 8); c.lineTo(sx, sy + 8); c.stroke();
+        break;
+      }
+      case 'axis_wall': case 'angle_wall': {
+        const w = fx.wall as Record<string, unknown>;
+        c.strokeStyle = '#7a3fc4';
+        c.lineWidth = 4;
+        if (fx.type === 'axis_wall') alongAxis(axes[0], num(w, 'offset'));
+        else across(num(w, 'angle'), num(w, 'offset'));
+        break;
+      }
+      case 'axis_barrier': case 'angle_barrier': {
+        const b = fx.barrier as Record<string, unknown>;
+        c.strokeStyle = 'rgba(196, 120, 63, 0.55)';
+        const px = (kSize - 2 * kMargin) / 20000;
+        c.lineWidth = Math.max(2, num(b, 'thickness') * px);
+        if (fx.type === 'axis_barrier') alongAxis(axes[0], num(b, 'offset'));
+        else across(num(b, 'angle'), num(b, 'offset'));
+        break;
+      }
+      case 'texture': {
+        const t = fx.texture as Record<string, unknown>;
+        const spacing = Math.max(200, num(t, 'spacing'));
+        c.strokeStyle = 'rgba(120, 120, 120, 0.5)';
+        c.lineWidth = 1;
+        for (let p = 0; p <= 10000; p += spacing) {
+          for (const s of p === 0 ? [0] : [p, -p]) alongAxis(axes[0], s);
+        }
+        break;
+      }
+    }
+    c.restore();
+  }
+}

@@ -1,0 +1,228 @@
+// The Studio's server over real sockets: the HTTP API, the WebSocket live session, and
+// every refusal of docs/studio.md "Safety" (Host, Origin, paths, sizes, malformed
+// messages, a lost browser). A Beast client plays the browser.
+#include <gtest/gtest.h>
+
+#include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "feel/host/sensation_library.hpp"
+#include "studio_server.hpp"
+
+namespace feel::studio {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+namespace fs = std::filesystem;
+using tcp = asio::ip::tcp;
+using json = nlohmann::json;
+
+struct Reply {
+    unsigned status = 0;
+    std::string body;
+};
+
+class ServerTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = fs::temp_directory_path() /
+                ("feel-studio-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(root_);
+        fs::create_directories(root_);
+        StudioOptions o;
+        o.workspace = root_;
+        o.port = 0;
+        server_ = std::make_unique<StudioServer>(o);
+        server_->start();
+        host_ = "127.0.0.1:" + std::to_string(server_->port());
+    }
+    void TearDown() override {
+        server_.reset();
+        fs::remove_all(root_);
+    }
+
+    Reply request(http::verb verb, const std::string& target, const std::string& body = "",
+                  const std::string& host = "", const std::string& origin = "") {
+        asio::io_context io;
+        beast::tcp_stream s(io);
+        s.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server_->port()));
+        http::request<http::string_body> req{verb, target, 11};
+        req.set(http::field::host, host.empty() ? host_ : host);
+        if (!origin.empty()) req.set(http::field::origin, origin);
+        req.body() = body;
+        req.prepare_payload();
+        http::write(s, req);
+        beast::flat_buffer b;
+        http::response<http::string_body> res;
+        beast::error_code ec;
+        http::read(s, b, res, ec);
+        return {res.result_int(), res.body()};
+    }
+    Reply api(const std::string& call, const json& body) { return request(http::verb::post, "/api/" + call, body.dump()); }
+
+    std::unique_ptr<websocket::stream<tcp::socket>> open_live(const std::string& origin = "") {
+        auto ws = std::make_unique<websocket::stream<tcp::socket>>(io_);
+        ws->next_layer().connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server_->port()));
+        ws->set_option(websocket::stream_base::decorator([origin](websocket::request_type& r) {
+            if (!origin.empty()) r.set(http::field::origin, origin);
+        }));
+        ws->handshake(host_, "/live");
+        return ws;
+    }
+    static json next(websocket::stream<tcp::socket>& ws, const std::string& type) {
+        for (int i = 0; i < 500; ++i) {
+            beast::flat_buffer b;
+            ws.read(b);
+            json m = json::parse(beast::buffers_to_string(b.data()));
+            if (m["type"] == type) return m;
+        }
+        return {};
+    }
+
+    fs::path root_;
+    std::unique_ptr<StudioServer> server_;
+    std::string host_;
+    asio::io_context io_;
+};
+
+TEST_F(ServerTest, ServesTheEmbeddedPageAndTheProtocol) {
+    const Reply page = request(http::verb::get, "/");
+    EXPECT_EQ(page.status, 200u);
+    EXPECT_NE(page.body.find("feel Studio"), std::string::npos);
+    const Reply protocol = request(http::verb::get, "/protocol.json");
+    EXPECT_EQ(protocol.status, 200u);
+    EXPECT_TRUE(json::parse(protocol.body).contains("client"));
+    EXPECT_EQ(request(http::verb::get, "/nothing-here").status, 404u);
+}
+
+TEST_F(ServerTest, RefusesWrongHostAndOriginOnRequestsAndUpgrades) {
+    EXPECT_EQ(request(http::verb::get, "/", "", "rebound.example:" + std::to_string(server_->port())).status, 403u);
+    const Reply evil = request(http::verb::post, "/api/list", "{}", "", "http://evil.example");
+    EXPECT_EQ(evil.status, 403u);
+    EXPECT_NE(evil.body.find("Origin"), std::string::npos);
+    EXPECT_THROW((void)open_live("http://evil.example"), boost::system::system_error);
+    EXPECT_NO_THROW((void)open_live("http://" + host_));
+}
+
+TEST_F(ServerTest, RefusesPathsOutsideTheWorkspace) {
+    for (const char* p : {"../x.feel.json", "/etc/passwd.feel.json", "a/../../x.feel.json"}) {
+        const Reply r = api("read", {{"path", p}});
+        EXPECT_EQ(r.status, 403u) << p;
+        EXPECT_TRUE(json::parse(r.body).contains("error"));
+    }
+    fs::create_directory_symlink(fs::temp_directory_path(), root_ / "out");
+    EXPECT_EQ(api("save", {{"path", "out/x.feel.json"}, {"text", "{}"}}).status, 403u);
+}
+
+TEST_F(ServerTest, BoundsBodiesAndAnswersMalformedRequests) {
+    EXPECT_EQ(request(http::verb::post, "/api/read", "not json").status, 400u);
+    EXPECT_EQ(request(http::verb::post, "/api/list", "[1]").status, 400u);
+    EXPECT_EQ(request(http::verb::get, "/api/list").status, 405u);
+    EXPECT_EQ(api("nonsense", json::object()).status, 404u);
+    EXPECT_EQ(request(http::verb::post, "/api/save", std::string(kMaxHttpBodyBytes + 10, 'x')).status, 413u);
+    const Reply bad = api("save", {{"path", "bad.feel.json"}, {"text", R"({"format": "feel/1", "sensations": {}})"}});
+    EXPECT_EQ(bad.status, 422u);
+}
+
+TEST_F(ServerTest, SavedFilesLoadAndPlayWithSensationLibraryInTwoCalls) {
+    const std::string text = R"({"format": "feel/1", "sensations": {"hum": {"type": "sine", "duration_us": 200000,
+      "axes": ["x"], "trigger_button": 2, "periodic": {"magnitude": 3000, "period_us": 10000}}}})";
+    const Reply saved = api("save", {{"path", "hum.feel.json"}, {"text", text}});
+    ASSERT_EQ(saved.status, 200u) << saved.body;
+    auto library = host::SensationLibrary::load(root_ / "hum.feel.json");
+    ASSERT_TRUE(library) << library.status().message;
+    EXPECT_TRUE(library->play("hum").ok());
+    EXPECT_EQ(library->effects("hum")[0].parameters().trigger.index, 2);
+}
+
+TEST_F(ServerTest, LiveSessionAnswersMalformedMessagesAndAppliesValidSensations) {
+    auto ws = open_live();
+    const json hello = next(*ws, "hello");
+    EXPECT_EQ(hello["device"]["name"], "iforce2");
+    EXPECT_EQ(hello["fields"]["types"].size(), 33u);
+    for (const std::string bad : {"{", "[]", R"({"type": "nope"})", R"({"type": "pointer", "seq": 1, "x": 20000, "y": 0})",
+                                  R"({"type": "play"})", R"({"type": "gain", "gain": 1.5})",
+                                  R"({"type": "stop_all", "extra": 1})"}) {
+        ws->write(asio::buffer(bad));
+        const json e = next(*ws, "error");
+        EXPECT_NE(e["message"].get<std::string>().find("malformed"), std::string::npos) << bad << " -> " << e;
+    }
+    // An invalid sensation: the format's message at its field, and nothing reaches the device.
+    json msg = {{"type", "set_sensation"}, {"seq", 1}, {"name", "s"}, {"file", "s.feel.json"},
+                {"effects", json::array({json{{"type", "sine"}, {"duration_us", 1000000}, {"axes", {"x"}},
+                                              {"periodic", {{"magnitude", 20000}, {"period_us", 10000}}}}})}};
+    ws->write(asio::buffer(msg.dump()));
+    json v = next(*ws, "validated");
+    EXPECT_FALSE(v["ok"].get<bool>());
+    EXPECT_EQ(v["errors"][0]["field"], "periodic.magnitude");
+    EXPECT_EQ(v["errors"][0]["message"],
+              "s.feel.json: sensation \"s\": periodic.magnitude = 20000 is out of range (allowed 0..10000)");
+    msg["seq"] = 2;
+    msg["effects"][0]["periodic"]["magnitude"] = 5000;
+    ws->write(asio::buffer(msg.dump()));
+    v = next(*ws, "validated");
+    EXPECT_TRUE(v["ok"].get<bool>()) << v;
+    ws->write(asio::buffer(json{{"type", "play"}, {"effect", 0}}.dump()));
+    // The wave shows in the state frames.
+    double peak = 0;
+    for (int i = 0; i < 60; ++i) {
+        const json s = next(*ws, "state");
+        for (const json& row : s["samples"]) peak = std::max(peak, std::abs(row[1].get<double>()));
+    }
+    EXPECT_NEAR(peak, 5000, 150);
+}
+
+TEST_F(ServerTest, ALostBrowserStopsItsEffects) {
+    auto ws = open_live();
+    (void)next(*ws, "hello");
+    const json msg = {{"type", "set_sensation"}, {"seq", 1}, {"name", "c"},
+                      {"effects", json::array({json{{"type", "constant"}, {"duration_us", "infinite"}, {"axes", {"x"}},
+                                                    {"constant", {{"magnitude", 4000}}}}})}};
+    ws->write(asio::buffer(msg.dump()));
+    ASSERT_TRUE(next(*ws, "validated")["ok"].get<bool>());
+    ws->write(asio::buffer(json{{"type", "play"}, {"effect", 0}}.dump()));
+    double force = 0;
+    for (int i = 0; i < 30 && std::abs(force) < 3500; ++i) {
+        const json s = next(*ws, "state");
+        if (!s["force"].empty()) force = s["force"][0].get<double>();
+    }
+    EXPECT_NEAR(force, 4000, 100);
+    ws->next_layer().close();  // the browser goes away without a goodbye
+    ws.reset();
+    for (int i = 0; i < 100 && server_->sessions() > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_EQ(server_->sessions(), 0);
+    auto watcher = open_live();
+    (void)next(*watcher, "hello");
+    double after = 1e9;
+    for (int i = 0; i < 30; ++i) {
+        const json s = next(*watcher, "state");
+        if (!s["force"].empty()) after = s["force"][0].get<double>();
+    }
+    EXPECT_NEAR(after, 0, 1);
+}
+
+TEST_F(ServerTest, RefusesOversizedWebSocketMessages) {
+    auto ws = open_live();
+    (void)next(*ws, "hello");
+    const std::string huge(kMaxWebSocketMessageBytes + 100, ' ');
+    beast::error_code ec;
+    ws->write(asio::buffer(huge), ec);
+    beast::flat_buffer b;
+    for (int i = 0; i < 500 && !ec; ++i) ws->read(b, ec), b.consume(b.size());
+    EXPECT_TRUE(ec) << "the server closed the connection";
+}
+
+}  // namespace
+}  // namespace feel::studio
