@@ -1,0 +1,89 @@
+#!/bin/sh
+# /init of the test VM (tests/linux/run.sh builds the initramfs around it).
+#
+# Loads the USB gadget and HID modules in dependency order, starts feel's USB device on
+# dummy_hcd, waits for the kernel's hid-pidff to take it, runs the judges (fftest, SDL2's
+# testhaptic) against the event device, stops feel (which unbinds its gadget) and prints
+# feel's device log between markers on the console, for the host to pick up. Never exits
+# without powering off: a hung step is cut by its own timeout.
+export PATH=/usr/bin:/bin:/sbin
+mount -t proc proc /proc
+mount -t sysfs sysfs /sys
+mount -t devtmpfs devtmpfs /dev
+mount -t tmpfs tmpfs /tmp
+mount -t tmpfs tmpfs /run
+
+hs=1
+for word in $(cat /proc/cmdline); do
+    case $word in feel.hs=*) hs=${word#feel.hs=} ;; esac
+done
+
+mark() { echo "==== $* t=$(cut -d' ' -f1 /proc/uptime)"; }
+finish() {
+    mark "end"
+    sync
+    poweroff -f
+}
+
+mark "modules"
+for m in $(cat /etc/modules.order); do
+    case $m in
+        */dummy_hcd.ko) insmod "$m" is_high_speed="$hs" || { echo "insmod $m failed"; finish; } ;;
+        *) insmod "$m" || { echo "insmod $m failed"; finish; } ;;
+    esac
+done
+mount -t configfs none /sys/kernel/config
+mount -t debugfs none /sys/kernel/debug 2>/dev/null
+mark "modules loaded"
+
+# --- feel's device, bound to dummy_hcd's UDC --------------------------------------------
+feel device --sim --usb --profile iforce2 --log /tmp/device.log > /tmp/feel.out 2>&1 &
+feel_pid=$!
+mark "feel started"
+
+# Wait for hid-pidff's event device: the one whose capabilities have EV_FF (bit 21).
+event=
+for i in $(seq 1 200); do
+    for caps in /sys/class/input/event*/device/capabilities/ev; do
+        [ -e "$caps" ] || continue
+        ev=$(cat "$caps")
+        if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
+            event=/dev/input/$(basename "$(dirname "$(dirname "$(dirname "$caps")")")")
+        fi
+    done
+    [ -n "$event" ] && break
+    sleep 0.1
+done
+if [ -z "$event" ]; then
+    mark "no force-feedback event device"
+else
+    mark "event device $event"
+    sleep 0.5
+    # fftest: one of each of its effects, in its order, each played for a few seconds.
+    # It reads the effect number from stdin; -1 ends it.
+    mark "fftest begin"
+    ( for n in 0 1 2 3 4 5; do echo $n; sleep 1.2; done; echo -1 ) |
+        FF_SPY_LOG=/tmp/fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 60 fftest "$event" 2>&1
+    mark "fftest end"
+    mark "testhaptic begin"
+    FF_SPY_LOG=/tmp/testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
+    mark "testhaptic end"
+fi
+
+mark "feel stop"
+kill -TERM "$feel_pid"
+for i in $(seq 1 50); do kill -0 "$feel_pid" 2>/dev/null || break; sleep 0.1; done
+wait "$feel_pid"
+echo "feel device exit status $?"
+cat /tmp/feel.out
+ls /sys/kernel/config/usb_gadget/ 2>/dev/null | sed 's/^/gadget left: /'
+echo "==== feel device.log begin"
+cat /tmp/device.log 2>/dev/null
+echo "==== feel device.log end"
+for judge in fftest testhaptic; do
+    echo "==== $judge spy begin"
+    cat /tmp/$judge.spy 2>/dev/null
+    echo "==== $judge spy end"
+done
+dmesg | grep -iE 'pidff|force|hid|usb' | sed 's/^/dmesg: /'
+finish
