@@ -34,26 +34,45 @@ for m in $(cat /etc/modules.order); do
 done
 mount -t configfs none /sys/kernel/config
 mount -t debugfs none /sys/kernel/debug 2>/dev/null
+# hid-pidff's reasons (it lives in usbhid) at debug level, in dmesg.
+echo "module usbhid +p" > /sys/kernel/debug/dynamic_debug/control 2>/dev/null
 mark "modules loaded"
 
 # --- feel's device, bound to dummy_hcd's UDC --------------------------------------------
-feel device --sim --usb --profile iforce2 --log /tmp/device.log > /tmp/feel.out 2>&1 &
+feel device --sim --usb --profile iforce2 --log /tmp/device.log &
 feel_pid=$!
 mark "feel started"
 
-# Wait for hid-pidff's event device: the one whose capabilities have EV_FF (bit 21).
-event=
-for i in $(seq 1 200); do
-    for caps in /sys/class/input/event*/device/capabilities/ev; do
-        [ -e "$caps" ] || continue
-        ev=$(cat "$caps")
-        if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
-            event=/dev/input/$(basename "$(dirname "$(dirname "$(dirname "$caps")")")")
-        fi
-    done
-    [ -n "$event" ] && break
-    sleep 0.1
+# Wait (up to 60 s of VM time) for the HID device, then find hid-pidff's event device: the one whose EV bitmask in
+# /proc/bus/input/devices has EV_FF (bit 21). Shell builtins only: forks are slow under TCG.
+find_ff_event() {
+    event=
+    handlers=
+    while read -r line; do
+        case $line in
+            "H: Handlers="*) handlers=${line#H: Handlers=} ;;
+            "B: EV="*)
+                ev=${line#B: EV=}
+                if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
+                    for h in $handlers; do
+                        case $h in event*) event=/dev/input/$h ;; esac
+                    done
+                fi
+                ;;
+        esac
+    done < /proc/bus/input/devices
+}
+read -r up rest < /proc/uptime
+deadline=$(( ${up%.*} + 60 ))
+# hid_connect() makes the hidraw node after the force-feedback init (hid-pidff's), so once
+# it is there the kernel has decided.
+while [ ! -e /sys/class/hidraw/hidraw0 ]; do
+    read -r up rest < /proc/uptime
+    [ "${up%.*}" -ge "$deadline" ] && break
+    sleep 0.2
 done
+mark "hidraw"
+find_ff_event
 if [ -z "$event" ]; then
     mark "no force-feedback event device"
 else
@@ -75,7 +94,6 @@ kill -TERM "$feel_pid"
 for i in $(seq 1 50); do kill -0 "$feel_pid" 2>/dev/null || break; sleep 0.1; done
 wait "$feel_pid"
 echo "feel device exit status $?"
-cat /tmp/feel.out
 ls /sys/kernel/config/usb_gadget/ 2>/dev/null | sed 's/^/gadget left: /'
 echo "==== feel device.log begin"
 cat /tmp/device.log 2>/dev/null
