@@ -12,6 +12,9 @@ packages=(
   librapidcheck-dev    # property tests
   libcairo2-dev        # plots (SVG and PNG)
   libboost-dev         # Boost.Asio: Unix-socket and TCP transports (header-only)
+  libaio-dev           # feel device --usb: FunctionFS endpoints' asynchronous I/O
+  qemu-system-x86 cpio kmod  # make test-linux: boot Debian's kernel in a VM (initramfs, depmod)
+  joystick libsdl2-tests     # make test-linux: the judges fftest and SDL2's testhaptic, copied into the VM
 )
 
 missing=()

@@ -147,6 +147,7 @@ public:
         switch (frame.kind) {
             case FrameKind::input_report:
                 note_refusal(frame.payload);
+                note_status(frame.payload);
                 if (channel_->input_reports.size() >= kInputQueue) {
                     channel_->input_reports.pop_front();
                     ++channel_->input_dropped;
@@ -210,8 +211,41 @@ private:
         }
     }
 
+    // DeviceStatus (page 0): the log gets a "motor" line when the motors' force goes from
+    // zero to non-zero or back (the latency measurement's end point, docs/usb-device.md) and
+    // a "loop" line each second with the loop's measured rate and overruns.
+    void note_status(const std::vector<uint8_t>& bytes) {
+        if (channel_->log == nullptr || bytes.empty() ||
+            bytes[0] != static_cast<uint8_t>(protocol::ReportId::device_status)) {
+            return;
+        }
+        protocol::AnyReport report;
+        if (protocol::decode(bytes, report)) return;
+        const auto& status = std::get<protocol::DeviceStatusReport>(report);
+        if (status.page != 0) return;
+        bool pushing = false;
+        for (const int16_t f : status.force) pushing = pushing || f != 0;
+        if (pushing != pushing_) {
+            pushing_ = pushing;
+            std::string line = "motor t_us=" + std::to_string(status.t_us);
+            for (std::size_t i = 0; i < std::size(status.force); ++i) {
+                line += " force[" + std::to_string(i) + "]=" + std::to_string(status.force[i]);
+            }
+            channel_->log->line(line);
+        }
+        if (status.t_us >= next_loop_line_us_) {
+            next_loop_line_us_ = status.t_us + 1'000'000;
+            channel_->log->line("loop t_us=" + std::to_string(status.t_us) + " rate_hz=" +
+                                std::to_string(status.loop_rate_hz) +
+                                " measured_millihz=" + std::to_string(status.measured_rate_millihz) +
+                                " overruns=" + std::to_string(status.overruns));
+        }
+    }
+
     std::shared_ptr<Channel> channel_;
     std::string peer_;
+    bool pushing_ = false;
+    uint64_t next_loop_line_us_ = 0;
 };
 
 }  // namespace

@@ -276,6 +276,97 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
     c.expect(!refused, at + "no report about the block refused");
 }
 
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const auto i = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
+    return v[std::min(i, v.size() - 1)];
+}
+
+// The kernel's printk time of the first console line holding `what`, or -1.
+double kernel_time(const std::vector<std::string>& console, const std::string& what) {
+    for (const std::string& l : console) {
+        if (l.find(what) == std::string::npos) continue;
+        const std::size_t open = l.find('[');
+        if (open != std::string::npos) return std::atof(l.c_str() + open + 1);
+    }
+    return -1;
+}
+
+// §4's figures, printed (never asserted: under TCG they are indicative only).
+void measure(const std::vector<std::string>& console, const std::vector<Line>& log, const std::string& probe_path,
+             Checks& c) {
+    const double t_new = kernel_time(console, "USB device number");
+    const double t_hid = kernel_time(console, "USB HID v1.11 Joystick");
+    if (t_new >= 0 && t_hid >= 0) {
+        std::printf("measure %senumeration: %.0f ms from the kernel's \"new USB device\" to hid-generic/hid-pidff "
+                    "bound (kernel clock, TCG)\n", c.prefix.c_str(), (t_hid - t_new) * 1e3);
+    }
+    // Device time -> CLOCK_MONOTONIC: the least delayed status report gives the offset.
+    double offset = 1e18;
+    for (const Line& l : log) {
+        if ((l.verb == "motor" || l.verb == "loop") && l.fields.count("t_us")) {
+            offset = std::min(offset, l.t - static_cast<double>(l.fields.at("t_us")) * 1e-6);
+        }
+    }
+    std::vector<double> seen_ms, tick_ms;
+    std::vector<Line> probe;
+    for (const std::string& t : read_lines(probe_path)) {
+        std::istringstream in(t);
+        std::string verb;
+        in >> verb;
+        if (auto l = parse("0 " + t, false)) probe.push_back(*l);
+    }
+    for (const Line& p : probe) {
+        if (p.verb != "latency") continue;
+        // start= was parsed as an integer prefix; read the real number from the text.
+        const std::size_t at = p.text.find("start=");
+        const double start = std::atof(p.text.c_str() + at + 6);
+        for (const Line& l : log) {
+            if (l.verb != "motor" || l.t < start) continue;
+            bool pushing = false;
+            for (const auto& [k, v] : l.fields) pushing = pushing || (k.rfind("force", 0) == 0 && v != 0);
+            if (!pushing) continue;
+            seen_ms.push_back((l.t - start) * 1e3);
+            tick_ms.push_back((static_cast<double>(l.fields.at("t_us")) * 1e-6 + offset - start) * 1e3);
+            break;
+        }
+    }
+    c.expect(!seen_ms.empty() || probe.empty(), "the latency trials' forces reached the motors");
+    if (!seen_ms.empty()) {
+        std::printf("measure %sEVIOCSFF + play -> first motor tick with the force: p50 %.1f ms, p99 %.1f ms "
+                    "(%zu trials; tick time from the status report's device time; the report reaching the USB "
+                    "side: p50 %.1f ms, p99 %.1f ms; TCG: indicative only)\n",
+                    c.prefix.c_str(), percentile(tick_ms, 0.5), percentile(tick_ms, 0.99), tick_ms.size(),
+                    percentile(seen_ms, 0.5), percentile(seen_ms, 0.99));
+    }
+    for (const Line& p : probe) {
+        if (p.verb != "flood") continue;
+        const double start = std::atof(p.text.c_str() + p.text.find("start=") + 6);
+        const double end = std::atof(p.text.c_str() + p.text.find("end=") + 4);
+        double before = 0, worst = 1e18;
+        int64_t overruns_before = -1, overruns_after = -1;
+        for (const Line& l : log) {
+            if (l.verb != "loop") continue;
+            const double rate = static_cast<double>(l.fields.at("measured_millihz")) * 1e-3;
+            if (l.t < start) {
+                before = rate;
+                overruns_before = l.fields.at("overruns");
+            } else if (l.t <= end + 1.0) {
+                worst = std::min(worst, rate);
+                overruns_after = l.fields.at("overruns");
+            }
+        }
+        c.expect(worst < 1e18, "the loop reported its rate during the host's flood");
+        if (worst < 1e18) {
+            std::printf("measure %sloop under a flood of %s Set Constant Force updates: measured rate %.0f Hz "
+                        "before, at least %.0f Hz during; overruns %lld -> %lld\n",
+                        c.prefix.c_str(), p.text.substr(p.text.find("updates=") + 8).c_str(), before, worst,
+                        static_cast<long long>(overruns_before), static_cast<long long>(overruns_after));
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -352,6 +443,7 @@ int main(int argc, char** argv) {
         }
         c.equal(seen, plays, who + " plays and stops that reached the device as Effect Operations");
     }
+    measure(console, log, args["--probe"], c);
     std::cout << c.prefix << c.passed << " passed, " << c.failed << " failed\n";
     return c.failed == 0 ? 0 : 1;
 }

@@ -87,6 +87,10 @@ else
     mark "testhaptic begin"
     FF_SPY_LOG=/tmp/testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
     mark "testhaptic end"
+    # The measurements: EVIOCSFF + play -> first motor tick, and the loop under a flood.
+    ff_probe "$event" latency 40 > /tmp/probe.log 2>&1
+    ff_probe "$event" flood 3 >> /tmp/probe.log 2>&1
+    mark "probe end"
 fi
 
 mark "feel stop"
@@ -98,6 +102,9 @@ ls /sys/kernel/config/usb_gadget/ 2>/dev/null | sed 's/^/gadget left: /'
 echo "==== feel device.log begin"
 cat /tmp/device.log 2>/dev/null
 echo "==== feel device.log end"
+echo "==== probe begin"
+cat /tmp/probe.log 2>/dev/null
+echo "==== probe end"
 for judge in fftest testhaptic; do
     echo "==== $judge spy begin"
     cat /tmp/$judge.spy 2>/dev/null

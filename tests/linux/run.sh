@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Linux kernel as judge: feel's USB device in a virtual machine (docs/usb-device.md).
 #
-#   tests/linux/run.sh FEEL_BINARY CHECKER_BINARY FF_SPY_LIBRARY [OUT_DIR]
+#   tests/linux/run.sh FEEL_BINARY CHECKER_BINARY FF_SPY_LIBRARY FF_PROBE [OUT_DIR]
 #
 # Why a VM. These machines have no USB and their kernel cannot load modules. Debian's own
 # kernel package (linux-image-6.1.0-*-amd64) has everything as modules: dummy_hcd (a USB
@@ -23,7 +23,8 @@ set -euo pipefail
 feel=$(realpath "$1")
 checker=$(realpath "$2")
 spy=$(realpath "$3")
-out=${4:-out/linux}
+probe=$(realpath "$4")
+out=${5:-out/linux}
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 cache=${FEEL_LINUX_CACHE:-$repo/build/linux-cache}
@@ -31,7 +32,8 @@ mkdir -p "$cache" "$out"
 out=$(realpath "$out")
 
 say() { echo "test-linux: $*"; }
-started=$(date +%s.%N)
+started=$(date +%s%N)
+seconds_since() { echo $(( ($(date +%s%N) - $1) / 1000000 )) | sed -E 's/([0-9]{3})$/.\1/; s/^\./0./'; }
 
 # --- the kernel and busybox, from Debian's archive (cached) -----------------------------
 kernel_pkg=$(apt-cache depends linux-image-amd64 2>/dev/null | sed -n 's/.*Depends: \(linux-image-6\.1\.0-[0-9]*-amd64\)$/\1/p' | head -1)
@@ -51,18 +53,26 @@ fetch() {  # fetch PACKAGE: its .deb into the cache, unless it is there
 kernel_deb=$(fetch "$kernel_pkg")
 busybox_deb=$(fetch busybox-static)
 
-work=$cache/work
+# Each .deb is extracted once, next to it (the kernel's module tree is large).
+extract() {  # extract DEB: prints the directory it is extracted in
+    local dir=$cache/extract/$(basename "$1" .deb)
+    if [[ ! -d $dir ]]; then
+        rm -rf "$dir.tmp" && mkdir -p "$dir.tmp" && dpkg-deb -x "$1" "$dir.tmp" && mv "$dir.tmp" "$dir"
+    fi
+    echo "$dir"
+}
+kernel_dir=$(extract "$kernel_deb")
+busybox_dir=$(extract "$busybox_deb")
+work=$out/vm
 rm -rf "$work"
-mkdir -p "$work/kernel" "$work/busybox" "$work/root"
-dpkg-deb -x "$kernel_deb" "$work/kernel"
-dpkg-deb -x "$busybox_deb" "$work/busybox"
-kver=$(ls "$work/kernel/lib/modules" | head -1)
-vmlinuz=$work/kernel/boot/vmlinuz-$kver
+mkdir -p "$work/root"
+kver=$(ls "$kernel_dir/lib/modules" | head -1)
+vmlinuz=$kernel_dir/boot/vmlinuz-$kver
 
 # --- the initramfs ---------------------------------------------------------------------
 root=$work/root
 mkdir -p "$root"/{bin,sbin,etc,proc,sys,dev,tmp,run,mnt,usr/bin,lib/modules/$kver}
-cp "$work/busybox/bin/busybox" "$root/bin/busybox"
+cp "$busybox_dir/bin/busybox" "$root/bin/busybox"
 for applet in $("$root/bin/busybox" --list); do
     [[ -e $root/bin/$applet ]] || ln -s busybox "$root/bin/$applet"
 done
@@ -72,12 +82,13 @@ modules=(drivers/usb/common/usb-common drivers/usb/core/usbcore drivers/usb/gadg
          drivers/hid/hid-generic drivers/input/evdev)
 : > "$root/etc/modules.order"
 for m in "${modules[@]}"; do
-    src=$work/kernel/lib/modules/$kver/kernel/$m.ko
+    src=$kernel_dir/lib/modules/$kver/kernel/$m.ko
     mkdir -p "$root/lib/modules/$kver/kernel/$(dirname "$m")"
     cp "$src" "$root/lib/modules/$kver/kernel/$m.ko"
     echo "/lib/modules/$kver/kernel/$m.ko" >> "$root/etc/modules.order"
 done
-cp "$work/kernel/lib/modules/$kver/modules.builtin"* "$root/lib/modules/$kver/" 2>/dev/null || true
+cp "$kernel_dir/lib/modules/$kver/modules.builtin"* "$root/lib/modules/$kver/" 2>/dev/null || true
+sed "s|^/lib/modules/$kver/||" "$root/etc/modules.order" > "$root/lib/modules/$kver/modules.order"
 depmod -b "$root" "$kver"
 
 # Programs and the shared libraries they load (ldd), at the same paths as here.
@@ -91,6 +102,7 @@ add_program() {  # add_program PATH [NAME_IN_VM]
     done
 }
 add_program "$feel" feel
+add_program "$probe" ff_probe
 fftest=$(command -v fftest || true)
 testhaptic=/usr/libexec/installed-tests/SDL2/testhaptic
 [[ -x $fftest ]] || { say "fftest is missing (Debian package joystick: scripts/install-deps.sh)"; exit 1; }
@@ -109,17 +121,17 @@ boot() {  # boot SPEED: high or full
     local speed=$1 hs=1
     [[ $speed == full ]] && hs=0
     local console=$out/console-$speed.log
-    local t0 t1
-    t0=$(date +%s.%N)
+    local t0
+    t0=$(date +%s%N)
     timeout 600 qemu-system-x86_64 -accel tcg -m 512M -smp 2 -nographic -no-reboot -nic none \
         -kernel "$vmlinuz" -initrd "$work/initramfs.gz" \
         -append "console=ttyS0 panic=-1 quiet loglevel=4 feel.hs=$hs usbhid.dyndbg=+p" \
         > "$console" 2>&1 </dev/null || { say "qemu failed ($speed speed), see $console"; return 1; }
-    t1=$(date +%s.%N)
-    say "$speed speed: VM ran $(echo "$t1 - $t0" | bc) s"
+    say "$speed speed: the VM ran $(seconds_since "$t0") s"
     # The VM writes its device log between markers on the console.
     sed -n '/^==== feel device.log begin/,/^==== feel device.log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
         > "$out/device-$speed.log"
+    sed -n '/^==== probe begin/,/^==== probe end/p' "$console" | sed '1d;$d' | tr -d '\r' > "$out/probe-$speed.log"
     for judge in fftest testhaptic; do
         sed -n "/^==== $judge spy begin/,/^==== $judge spy end/p" "$console" | sed '1d;$d' | tr -d '\r' \
             > "$out/$judge-$speed.spy"
@@ -134,8 +146,8 @@ cp "$out/device-$first.log" "$out/device.log"
 status=0
 for speed in $speeds; do
     "$checker" --speed $speed --console "$out/console-$speed.log" --device-log "$out/device-$speed.log" \
-        --fftest "$out/fftest-$speed.spy" --testhaptic "$out/testhaptic-$speed.spy" || status=1
+        --fftest "$out/fftest-$speed.spy" --testhaptic "$out/testhaptic-$speed.spy" \
+        --probe "$out/probe-$speed.log" || status=1
 done
-ended=$(date +%s.%N)
-say "done in $(echo "$ended - $started" | bc) s (console: $out/console.log, device log: $out/device.log)"
+say "done in $(seconds_since "$started") s (console: $out/console.log, device log: $out/device.log)"
 exit $status
