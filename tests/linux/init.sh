@@ -43,36 +43,30 @@ feel device --sim --usb --profile iforce2 --log /tmp/device.log &
 feel_pid=$!
 mark "feel started"
 
-# Wait (up to 60 s of VM time) for the HID device, then find hid-pidff's event device: the one whose EV bitmask in
-# /proc/bus/input/devices has EV_FF (bit 21). Shell builtins only: forks are slow under TCG.
-find_ff_event() {
-    event=
-    handlers=
-    while read -r line; do
-        case $line in
-            "H: Handlers="*) handlers=${line#H: Handlers=} ;;
-            "B: EV="*)
-                ev=${line#B: EV=}
-                if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
-                    for h in $handlers; do
-                        case $h in event*) event=/dev/input/$h ;; esac
-                    done
-                fi
-                ;;
-        esac
-    done < /proc/bus/input/devices
-}
+# A heartbeat on the console every 5 s: how far the kernel and feel got.
+( while :; do sleep 5; mark "heartbeat"; dmesg | tail -n 3; tail -n 2 /tmp/device.log; done ) &
+heartbeat=$!
+
+# Wait (up to 90 s of VM time) until hid_connect() is done: it prints "HID v1.11" after the
+# force-feedback init (hid-pidff's). Then find the event device whose capabilities have
+# EV_FF (bit 21).
 read -r up rest < /proc/uptime
-deadline=$(( ${up%.*} + 60 ))
-# hid_connect() makes the hidraw node after the force-feedback init (hid-pidff's), so once
-# it is there the kernel has decided.
-while [ ! -e /sys/class/hidraw/hidraw0 ]; do
+deadline=$(( ${up%.*} + 90 ))
+until dmesg | grep -q "HID v1.11"; do
     read -r up rest < /proc/uptime
     [ "${up%.*}" -ge "$deadline" ] && break
-    sleep 0.2
+    sleep 1
 done
-mark "hidraw"
-find_ff_event
+mark "hid connected"
+event=
+for caps in /sys/class/input/event*/device/capabilities/ev; do
+    [ -e "$caps" ] || continue
+    read -r ev < "$caps"
+    if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
+        dir=${caps%/device/capabilities/ev}
+        event=/dev/input/${dir##*/}
+    fi
+done
 if [ -z "$event" ]; then
     mark "no force-feedback event device"
 else
@@ -93,6 +87,7 @@ else
     mark "probe end"
 fi
 
+kill "$heartbeat" 2>/dev/null
 mark "feel stop"
 kill -TERM "$feel_pid"
 for i in $(seq 1 50); do kill -0 "$feel_pid" 2>/dev/null || break; sleep 0.1; done
