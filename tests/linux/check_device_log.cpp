@@ -388,6 +388,19 @@ int main(int argc, char** argv) {
     c.expect(has("feel device exit status 0"), "feel device exited 0 on SIGTERM");
     c.expect(!has("gadget left: "), "the gadget was removed from configfs on exit");
 
+    // feel's protocol through hidraw (tests/linux/hidraw_probe.cpp): every USB path.
+    c.expect(has("hidraw get device_info bytes=") && !has("hidraw get device_info bytes=-") &&
+                 has("decoded=1 device=iforce2"),
+             "GET_REPORT(Feature) on ep0: Device Info came back whole and decodes");
+    c.expect(has("hidraw set create_new_effect result="), "SET_REPORT(Feature) on ep0: Create New Effect sent");
+    c.expect(has("hidraw get block_load") && has(" block=1 status=1"),
+             "Block Load on ep0: block 1, status success");
+    c.expect(has("hidraw status command=17 block=0 code=0"),
+             "interrupt IN: Create New Effect answered ok (CommandStatus)");
+    c.expect(has("hidraw status command=5 block=1 code=0"), "interrupt OUT -> IN: Set Constant Force answered ok");
+    c.expect(has("hidraw status command=1 block=1 code=0"), "interrupt OUT -> IN: Set Effect answered ok");
+    c.expect(has("hidraw status command=10 block=1 code=0"), "interrupt OUT -> IN: Effect Operation start answered ok");
+
     std::vector<Line> log;
     for (const std::string& t : read_lines(args["--device-log"])) {
         if (auto l = parse(t, true)) log.push_back(*l);

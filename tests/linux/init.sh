@@ -67,6 +67,11 @@ for caps in /sys/class/input/event*/device/capabilities/ev; do
         event=/dev/input/${dir##*/}
     fi
 done
+# feel's own protocol through hidraw: every USB path of the backend, whatever hid-pidff
+# decided (tests/linux/hidraw_probe.cpp).
+mark "hidraw probe"
+timeout 30 hidraw_probe /dev/hidraw0 > /tmp/hidraw.log 2>&1
+cat /tmp/hidraw.log
 if [ -z "$event" ]; then
     mark "no force-feedback event device"
 else

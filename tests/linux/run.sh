@@ -103,6 +103,7 @@ add_program() {  # add_program PATH [NAME_IN_VM]
 }
 add_program "$feel" feel
 add_program "$probe" ff_probe
+add_program "$(dirname "$probe")/hidraw_probe" hidraw_probe
 fftest=$(command -v fftest || true)
 testhaptic=/usr/libexec/installed-tests/SDL2/testhaptic
 [[ -x $fftest ]] || { say "fftest is missing (Debian package joystick: scripts/install-deps.sh)"; exit 1; }
