@@ -34,7 +34,8 @@
 // thread stops reading the OUT endpoint until the Peripheral catches up, which pushes back
 // on the host through USB flow control); input reports wait in at most kInputQueue, the
 // oldest dropped and counted when the host does not read them (a HID host reads its
-// interrupt IN endpoint only while someone has the device open).
+// interrupt IN endpoint only while someone has the device open); the periodic state
+// reports keep only their latest, so that they never crowd out an answer.
 #include <fcntl.h>
 #include <libaio.h>
 #include <linux/usb/functionfs.h>
@@ -52,6 +53,7 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <ostream>
@@ -76,7 +78,7 @@ using transport::Frame;
 using transport::FrameKind;
 
 constexpr std::size_t kInboundFrames = 64;
-constexpr std::size_t kInputQueue = 64;
+constexpr std::size_t kInputQueue = 256;  // answers and events; the session has at most 256 in flight
 constexpr auto kReplyTimeout = 1000ms;
 constexpr auto kHostHandover = 3000ms;  // how long a new host waits for the last one's reset
 constexpr std::size_t kBufferBytes = 4096;
@@ -120,7 +122,11 @@ struct Channel {
     std::condition_variable arrived;
     std::deque<Frame> inbound;            // host -> device frames, in order
     bool closed = false;
-    std::deque<std::vector<uint8_t>> input_reports;  // device -> host, interrupt IN
+    // Device -> host, interrupt IN. Answers and events (CommandStatus, PID State, dynamics'
+    // reports) wait in order; the periodic state (Joystick Input, each Device Status page)
+    // keeps only its latest report, which supersedes the ones the host did not read yet.
+    std::deque<std::vector<uint8_t>> input_events;
+    std::map<uint16_t, std::vector<uint8_t>> input_state;  // (report id << 8) | page -> latest
     std::optional<std::vector<uint8_t>> reply;       // device -> host, ep0 data stage
     bool reply_refused = false;                      // the session refused the pending get
     bool reply_pending = false;
@@ -148,11 +154,19 @@ public:
             case FrameKind::input_report:
                 note_refusal(frame.payload);
                 note_status(frame.payload);
-                if (channel_->input_reports.size() >= kInputQueue) {
-                    channel_->input_reports.pop_front();
+                if (const std::optional<uint16_t> key = state_key(frame.payload)) {
+                    auto [it, fresh] = channel_->input_state.try_emplace(*key, frame.payload);
+                    if (!fresh) {
+                        it->second = frame.payload;  // the unread one is superseded
+                        ++channel_->input_dropped;
+                    }
+                    break;
+                }
+                if (channel_->input_events.size() >= kInputQueue) {
+                    channel_->input_events.pop_front();
                     ++channel_->input_dropped;
                 }
-                channel_->input_reports.push_back(frame.payload);
+                channel_->input_events.push_back(frame.payload);
                 break;
             case FrameKind::feature_reply:
                 if (channel_->log != nullptr) {
@@ -211,6 +225,17 @@ private:
         }
     }
 
+    // The periodic state reports' slot: Joystick Input, and Device Status per page.
+    static std::optional<uint16_t> state_key(const std::vector<uint8_t>& bytes) {
+        if (bytes.empty()) return std::nullopt;
+        const uint8_t id = bytes[0];
+        if (id == static_cast<uint8_t>(protocol::ReportId::joystick_input)) return static_cast<uint16_t>(id << 8);
+        if (id != static_cast<uint8_t>(protocol::ReportId::device_status)) return std::nullopt;
+        protocol::AnyReport report;
+        if (protocol::decode(bytes, report)) return std::nullopt;
+        return static_cast<uint16_t>((id << 8) | std::get<protocol::DeviceStatusReport>(report).page);
+    }
+
     // DeviceStatus (page 0): the log gets a "motor" line when the motors' force goes from
     // zero to non-zero or back (the latency measurement's end point, docs/usb-device.md) and
     // a "loop" line each second with the loop's measured rate and overruns.
@@ -267,6 +292,7 @@ struct FunctionFsServer::Impl {
     std::shared_ptr<Channel> channel;
     iocb out_cb{}, in_cb{};
     bool out_busy = false, in_busy = false;
+    uint16_t last_state_key = 0;  // the state slot sent last (round robin)
     alignas(64) uint8_t out_buf[kBufferBytes]{};
     alignas(64) uint8_t in_buf[kBufferBytes]{};
     detail::ReportAssembler assembler{detail::kFullSpeedPacketBytes};
@@ -378,10 +404,20 @@ struct FunctionFsServer::Impl {
         if (!enabled || in_busy || !channel) return;
         std::vector<uint8_t> next;
         {
+            // Answers and events first; then the state slot least recently sent.
             std::lock_guard lock(channel->mutex);
-            if (channel->input_reports.empty()) return;
-            next = std::move(channel->input_reports.front());
-            channel->input_reports.pop_front();
+            if (!channel->input_events.empty()) {
+                next = std::move(channel->input_events.front());
+                channel->input_events.pop_front();
+            } else if (!channel->input_state.empty()) {
+                auto it = channel->input_state.upper_bound(last_state_key);
+                if (it == channel->input_state.end()) it = channel->input_state.begin();
+                last_state_key = it->first;
+                next = std::move(it->second);
+                channel->input_state.erase(it);
+            } else {
+                return;
+            }
         }
         const std::size_t n = std::min(next.size(), kBufferBytes);
         std::memcpy(in_buf, next.data(), n);

@@ -104,8 +104,12 @@ int main(int argc, char** argv) {
     EffectOperationReport start;
     start.sequence = 4;
     start.block = block;
-    std::printf("hidraw write set_constant_force=%d set_effect=%d effect_operation=%d\n", send_output(fd, force),
-                send_output(fd, effect), send_output(fd, start));
+    // In this order: feel's transaction (the type block, then Set Effect), then play.
+    const bool wrote_force = send_output(fd, force);
+    const bool wrote_effect = send_output(fd, effect);
+    const bool wrote_start = send_output(fd, start);
+    std::printf("hidraw write set_constant_force=%d set_effect=%d effect_operation=%d\n", wrote_force, wrote_effect,
+                wrote_start);
     read_statuses(fd, 1500);
     ::close(fd);
     return 0;
