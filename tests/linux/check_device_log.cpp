@@ -395,11 +395,19 @@ int main(int argc, char** argv) {
     c.expect(has("hidraw set create_new_effect result="), "SET_REPORT(Feature) on ep0: Create New Effect sent");
     c.expect(has("hidraw get block_load") && has(" block=1 status=1"),
              "Block Load on ep0: block 1, status success");
-    c.expect(has("hidraw status command=17 block=0 code=0"),
+    c.expect(has("hidraw status command=17 block=1 code=0"),
              "interrupt IN: Create New Effect answered ok (CommandStatus)");
     c.expect(has("hidraw status command=5 block=1 code=0"), "interrupt OUT -> IN: Set Constant Force answered ok");
     c.expect(has("hidraw status command=1 block=1 code=0"), "interrupt OUT -> IN: Set Effect answered ok");
     c.expect(has("hidraw status command=10 block=1 code=0"), "interrupt OUT -> IN: Effect Operation start answered ok");
+    {
+        // ... and the motors pushed: a "motor" line with a force after the probe's start.
+        bool pushed = false;
+        for (const std::string& t : read_lines(args["--device-log"])) {
+            if (t.find(" motor ") != std::string::npos && t.find("force[0]=0 ") == std::string::npos) pushed = true;
+        }
+        c.expect(pushed, "the constant force played: the device log shows the motors pushing");
+    }
 
     std::vector<Line> log;
     for (const std::string& t : read_lines(args["--device-log"])) {
