@@ -205,7 +205,7 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
             at + "effect type usage");
     c.equal(field(*effect, {"duration_ms"}, c, at), a.fields.at("length"), at + "duration ms");
     c.equal(field(*effect, {"start_delay_ms"}, c, at), a.fields.at("delay"), at + "start delay ms");
-    c.equal(field(*effect, {"trigger_button"}, c, at), a.fields.at("trigger_button"), at + "trigger button");
+    c.equal(field(*effect, {"trigger_index", "trigger_button"}, c, at), a.fields.at("trigger_button"), at + "trigger button");
     c.equal(field(*effect, {"gain"}, c, at), kLevel, at + "effect gain (hid-pidff: the field's maximum)");
     c.equal(field(*effect, {"direction_angle[0]", "direction[0]"}, c, at),
             rescale(a.fields.at("direction"), 0xffff, 0, kAngle), at + "direction (evdev 0..0xFFFF -> 0..36000)");
@@ -231,19 +231,31 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
             const Line* r = find_field_line(log, "set_periodic", block, a.t, until);
             c.expect(r != nullptr, at + "Set Periodic received");
             if (r) {
-                c.equal(field(*r, {"magnitude"}, c, at), set_signed(a.fields.at("magnitude"), 0, kLevel), at + "magnitude");
+                c.equal(field(*r, {"magnitude"}, c, at), set_signed(a.fields.at("magnitude"), -kLevel, kLevel), at + "magnitude");
                 c.equal(field(*r, {"offset"}, c, at), set_signed(a.fields.at("offset"), -kLevel, kLevel), at + "offset");
                 c.equal(field(*r, {"period_ms"}, c, at), a.fields.at("period"), at + "period ms");
             }
             check_envelope(find_field_line(log, "set_envelope", block, a.t, until));
             break;
         }
+        case 0x50: {  // rumble: ff-core's compat_effect() makes it a 50 ms sine of magnitude
+                      // strong/3 + weak/6, no offset, no envelope (drivers/input/ff-core.c)
+            const Line* r = find_field_line(log, "set_periodic", block, a.t, until);
+            c.expect(r != nullptr, at + "Set Periodic received (rumble as a sine)");
+            if (r) {
+                const int64_t magnitude = a.fields.at("strong_magnitude") / 3 + a.fields.at("weak_magnitude") / 6;
+                c.equal(field(*r, {"magnitude"}, c, at), set_signed(magnitude, -kLevel, kLevel), at + "rumble magnitude");
+                c.equal(field(*r, {"period_ms"}, c, at), 50, at + "rumble period ms");
+                c.equal(field(*r, {"offset"}, c, at), 0, at + "rumble offset");
+            }
+            break;
+        }
         case 0x57: {  // ramp
             const Line* r = find_field_line(log, "set_ramp_force", block, a.t, until);
             c.expect(r != nullptr, at + "Set Ramp Force received");
             if (r) {
-                c.equal(field(*r, {"ramp_start", "start_level"}, c, at), set_signed(a.fields.at("start_level"), -kLevel, kLevel), at + "ramp start");
-                c.equal(field(*r, {"ramp_end", "end_level"}, c, at), set_signed(a.fields.at("end_level"), -kLevel, kLevel), at + "ramp end");
+                c.equal(field(*r, {"start", "ramp_start"}, c, at), set_signed(a.fields.at("start_level"), -kLevel, kLevel), at + "ramp start");
+                c.equal(field(*r, {"end", "ramp_end"}, c, at), set_signed(a.fields.at("end_level"), -kLevel, kLevel), at + "ramp end");
             }
             check_envelope(find_field_line(log, "set_envelope", block, a.t, until));
             break;
