@@ -344,7 +344,12 @@ void measure(const std::vector<std::string>& console, const std::vector<Line>& l
             break;
         }
     }
-    c.expect(!seen_ms.empty() || probe.empty(), "the latency trials' forces reached the motors");
+    const auto trials = std::count_if(probe.begin(), probe.end(), [](const Line& p) { return p.verb == "latency"; });
+    if (trials > 0) {
+        c.expect(static_cast<std::size_t>(trials) == seen_ms.size(),
+                 "each latency trial's force reached the motors (" + std::to_string(seen_ms.size()) + " of " +
+                     std::to_string(trials) + ")");
+    }
     if (!seen_ms.empty()) {
         std::printf("measure %sEVIOCSFF + play -> first motor tick with the force: p50 %.1f ms, p99 %.1f ms "
                     "(%zu trials; tick time from the status report's device time; the report reaching the USB "
@@ -371,7 +376,7 @@ void measure(const std::vector<std::string>& console, const std::vector<Line>& l
         }
         c.expect(worst < 1e18, "the loop reported its rate during the host's flood");
         if (worst < 1e18) {
-            std::printf("measure %sloop under a flood of %s Set Constant Force updates: measured rate %.0f Hz "
+            std::printf("measure %sloop under a host's flood of %s output reports: measured rate %.0f Hz "
                         "before, at least %.0f Hz during; overruns %lld -> %lld\n",
                         c.prefix.c_str(), p.text.substr(p.text.find("updates=") + 8).c_str(), before, worst,
                         static_cast<long long>(overruns_before), static_cast<long long>(overruns_after));

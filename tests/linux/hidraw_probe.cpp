@@ -68,7 +68,7 @@ void read_statuses(int fd, int milliseconds) {
 
 int main(int argc, char** argv) {
     const char* path = argc > 1 ? argv[1] : "/dev/hidraw0";
-    const int fd = ::open(path, O_RDWR);
+    const int fd = ::open(path, O_RDWR | O_NONBLOCK);
     if (fd < 0) {
         std::perror(path);
         return 1;
@@ -111,6 +111,26 @@ int main(int argc, char** argv) {
     std::printf("hidraw write set_constant_force=%d set_effect=%d effect_operation=%d\n", wrote_force, wrote_effect,
                 wrote_start);
     read_statuses(fd, 1500);
+
+    // A host flooding the device: Device Gain reports as fast as the interrupt OUT endpoint
+    // takes them, for 3 s, while the device logs its loop rate (the checker compares).
+    timespec t0{}, t{};
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    long updates = 0;
+    std::vector<uint8_t> drain(4096);
+    for (;;) {
+        clock_gettime(CLOCK_MONOTONIC, &t);
+        if (static_cast<double>(t.tv_sec - t0.tv_sec) + static_cast<double>(t.tv_nsec - t0.tv_nsec) * 1e-9 >= 3.0) break;
+        DeviceGainReport gain;
+        gain.sequence = static_cast<uint32_t>(100 + updates);
+        gain.gain = static_cast<uint16_t>(5000 + updates % 5000);
+        if (!send_output(fd, gain)) break;
+        ++updates;
+        while (::read(fd, drain.data(), drain.size()) > 0) {
+        }
+    }
+    std::printf("flood start=%ld.%06ld end=%ld.%06ld updates=%ld\n", static_cast<long>(t0.tv_sec), t0.tv_nsec / 1000,
+                static_cast<long>(t.tv_sec), t.tv_nsec / 1000, updates);
     ::close(fd);
     return 0;
 }

@@ -72,6 +72,7 @@ done
 mark "hidraw probe"
 timeout 30 hidraw_probe /dev/hidraw0 > /tmp/hidraw.log 2>&1
 cat /tmp/hidraw.log
+cat /tmp/hidraw.log >> /tmp/probe.log
 if [ -z "$event" ]; then
     mark "no force-feedback event device"
 else
