@@ -11,7 +11,7 @@ FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests test-install test-studio fuzz bench clean test-asan test-tsan firmware
+.PHONY: all deps build demo plots test unit-tests test-install test-studio test-linux fuzz bench clean test-asan test-tsan firmware
 
 all: build
 
@@ -38,7 +38,7 @@ demo: build
 
 # The fuzz run goes first so that the test summary is the last thing printed; the
 # sanitizer runs come last: they only judge what the plain run already passed.
-test: build firmware fuzz test-install unit-tests test-studio test-asan test-tsan
+test: build firmware fuzz test-install test-linux unit-tests test-studio test-asan test-tsan
 
 unit-tests:
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -56,7 +56,7 @@ test-studio: build
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.
 # New inputs go to the build tree; the committed seeds in fuzz/corpus/<target> are only read.
-FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session
+FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session usb_requests
 fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DFEEL_WERROR=$(WERROR) -DFEEL_BUILD_FUZZ=ON -DFEEL_BUILD_TESTS=OFF -DFEEL_BUILD_BENCH=OFF
@@ -98,6 +98,14 @@ firmware: deps
 	cmake -S firmware -B $(BUILD)-firmware -G Ninja -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/firmware/arm-none-eabi.cmake
 	cmake --build $(BUILD)-firmware
 	bash firmware/size-report.sh $(BUILD)-firmware
+
+# The Linux kernel as judge (docs/usb-device.md): Debian's kernel in a qemu VM (TCG, no KVM)
+# binds usbhid + hid-pidff to `feel device --sim --usb`; fftest and SDL2's testhaptic play
+# their effects; the device log is checked per effect. Leaves out/linux/console.log and
+# out/linux/device.log. The .debs are cached in $(BUILD)/linux-cache.
+test-linux: build
+	bash tests/linux/run.sh $(FEEL) $(BUILD)/tests/linux/feel_check_device_log \
+	    $(BUILD)/tests/linux/ff_spy.so $(BUILD)/tests/linux/ff_probe out/linux
 
 # Every sensation of every example file, rendered and plotted under out/examples/.
 plots: build

@@ -16,6 +16,9 @@ packages=(
   qemu-system-arm      # make test runs the Cortex-M4F build on the emulated mps2-an386 board
   python3              # make test-install: the ctypes consumer of libfeel.so
   chromium             # the Studio's end-to-end tests (headless, driven by playwright-core)
+  libaio-dev           # feel device --usb: FunctionFS endpoints' asynchronous I/O
+  qemu-system-x86 cpio kmod  # make test-linux: boot Debian's kernel in a VM (initramfs, depmod)
+  joystick libsdl2-tests     # make test-linux: the judges fftest and SDL2's testhaptic, copied into the VM
 )
 
 missing=()

@@ -12,6 +12,7 @@
 #include "device_command.hpp"
 #include "feel/version.h"
 #include "studio_command.hpp"
+#include "usb_device_command.hpp"
 #include "interrupt.hpp"
 
 namespace feel::cli {
@@ -124,7 +125,7 @@ void add_monitor(CLI::App& app, MonitorArgs& a, double& seconds, CLI::Option*& s
     cmd->footer(kExitCodes);
 }
 
-void add_device(CLI::App& app, DeviceArgs& a) {
+void add_device(CLI::App& app, DeviceArgs& a, UsbDeviceArgs& u) {
     CLI::App* cmd = app.add_subcommand(
         "device", "Run the simulated device and its runtime as a process of its own, like a "
                   "peripheral on a cable: it listens for one host at a time until Ctrl-C or SIGTERM");
@@ -147,6 +148,20 @@ void add_device(CLI::App& app, DeviceArgs& a) {
                     "$FEEL_DEVICE_TOKEN on the host); default: $FEEL_DEVICE_TOKEN, else none");
     cmd->add_option("--group", a.group,
                     "unix: give the socket file to this group, mode 0660 (default: mode 0600, you alone)");
+    cmd->add_flag("--usb", u.usb, "Be a USB HID PID device on the Linux gadget stack (configfs + FunctionFS; "
+                                  "root; docs/usb-device.md)");
+    cmd->add_option("--udc", u.udc, "With --usb: the USB device controller to bind to (default: the first in "
+                                    "/sys/class/udc)");
+    cmd->add_option("--ffs", u.ffs, "With --usb: serve this mounted FunctionFS instance, set up and bound by "
+                                    "someone else");
+    cmd->add_option("--vid", u.vid, "With --usb: vendor ID (default 0x1209, pid.codes: test only)")
+        ->capture_default_str();
+    cmd->add_option("--pid", u.pid, "With --usb: product ID (default 0x0001, pid.codes' test product: test only)")
+        ->capture_default_str();
+    cmd->add_option("--manufacturer", u.manufacturer, "With --usb: the manufacturer string")->capture_default_str();
+    cmd->add_option("--product", u.product, "With --usb: the product string")->capture_default_str();
+    cmd->add_option("--serial", u.serial, "With --usb: the serial number string")->capture_default_str();
+    cmd->add_option("--log", u.log, "With --usb: write one line per host report and refusal to FILE");
     cmd->footer(kExitCodes);
 }
 
@@ -266,6 +281,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     StreamArgs stream_args;
     MonitorArgs monitor_args;
     DeviceArgs device_args;
+    UsbDeviceArgs usb_args;
     double duration_s = 0;
     CLI::Option* duration = nullptr;
     double play_seconds = 0;
@@ -279,7 +295,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     add_play(app, play_args, play_seconds, play_seconds_option);
     add_stream(app, stream_args);
     add_monitor(app, monitor_args, monitor_seconds, monitor_seconds_option);
-    add_device(app, device_args);
+    add_device(app, device_args, usb_args);
     StudioArgs studio_args;
     add_studio(app, studio_args);
     add_bench(app, bench_loop_args);
@@ -326,6 +342,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
         } else if (app.got_subcommand("studio")) {
             return run_studio(studio_args, out, err, stop_requested());
         } else if (app.got_subcommand("device")) {
+            if (usb_args.usb) return run_usb_device(device_args, usb_args, out, err, stop_requested());
             return run_device(device_args, out, err, stop_requested());
         } else if (app.got_subcommand("bench")) {
             run_bench_loop(bench_loop_args, out, err);  // "loop" is bench's only subcommand

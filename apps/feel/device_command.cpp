@@ -145,6 +145,18 @@ transport::Address listen_address(const DeviceArgs& args, std::ostream& err) {
 
 }  // namespace
 
+peripheral::PeripheralOptions peripheral_options(const DeviceArgs& args) {
+    const sim::DeviceProfile& profile = checked_profile(args.profile);
+    check_hand(args.hand);
+    check_motion(args.motion, profile);
+    peripheral::PeripheralOptions options;
+    options.profile = args.profile;
+    options.hand = args.hand;
+    options.motion = args.motion;
+    options.loop_rate_hz = checked_rate(args.rate_hz, profile);
+    return options;
+}
+
 std::string default_device_address(const std::string& profile) {
     return "unix:" + (std::filesystem::path(transport::default_socket_dir()) / (profile + ".sock")).string();
 }
@@ -154,14 +166,7 @@ int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& err, std
         throw UsageError("only simulated devices exist yet: run `feel device --sim` (a backend for real "
                          "hardware would run without --sim)");
     }
-    const sim::DeviceProfile& profile = checked_profile(args.profile);
-    check_hand(args.hand);
-    check_motion(args.motion, profile);
-    peripheral::PeripheralOptions options;
-    options.profile = args.profile;
-    options.hand = args.hand;
-    options.motion = args.motion;
-    options.loop_rate_hz = checked_rate(args.rate_hz, profile);
+    const peripheral::PeripheralOptions options = peripheral_options(args);
     const transport::Address wanted = listen_address(args, err);
     transport::ListenOptions access;
     access.allow_remote = args.allow_remote;

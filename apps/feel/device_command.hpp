@@ -17,6 +17,8 @@
 #include <iosfwd>
 #include <string>
 
+#include "feel/peripheral/peripheral.hpp"
+
 namespace feel::cli {
 
 struct DeviceArgs {
@@ -38,6 +40,10 @@ struct DeviceArgs {
 // or hand, a bad address or rate), and std::runtime_error / transport::TransportError
 // (exit 1) when it cannot listen.
 int run_device(const DeviceArgs& args, std::ostream& out, std::ostream& err, std::atomic<bool>& stop);
+
+// The Peripheral's options from the flags: throws UsageError naming a wrong profile, hand,
+// motion or rate (what `feel device --usb` shares with the socket device).
+[[nodiscard]] peripheral::PeripheralOptions peripheral_options(const DeviceArgs& args);
 
 // The default listen address of a profile: unix:<transport::default_socket_dir()>/<profile>.sock.
 [[nodiscard]] std::string default_device_address(const std::string& profile);
