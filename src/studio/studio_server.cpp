@@ -210,9 +210,7 @@ public:
         });
     }
 
-    ~LiveConnection() {
-        if (session_) --shared_.sessions;
-    }
+    ~LiveConnection() { end_session(); }
 
 private:
     void read() {
@@ -263,7 +261,13 @@ private:
         if (closed_) return;
         closed_ = true;
         timer_.cancel();
-        session_.reset();  // the browser's effects stop now, not when the last handler runs
+        end_session();  // the browser's effects stop now, not when the last handler runs
+    }
+
+    void end_session() {
+        if (!session_) return;
+        session_.reset();
+        --shared_.sessions;
     }
 
     websocket::stream<beast::tcp_stream> ws_;
