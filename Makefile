@@ -114,6 +114,7 @@ plots: build
 bench: build
 	$(BUILD)/bench/feel_bench_tick
 	$(BUILD)/bench/feel_bench_friction
+	$(BUILD)/bench/feel_bench_motion_estimator
 	$(BUILD)/bench/feel_bench_runtime
 	$(BUILD)/bench/feel_bench_host_latency
 	$(BUILD)/bench/feel_bench_streaming

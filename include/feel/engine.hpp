@@ -207,7 +207,9 @@ struct TickInput {
 struct TickOutput {
     float force[kMaxAxes] = {};         // normalized ±10000, physical sign, clamped
     float velocity[kMaxAxes] = {};      // the engine's velocity estimate, normalized units/s
-    float acceleration[kMaxAxes] = {};  // the engine's acceleration estimate, units/s²
+    // The engine's acceleration estimate, units/s²: fitted only in ticks where an inertia
+    // condition plays (it costs as much as the velocity), else 0.
+    float acceleration[kMaxAxes] = {};
     // The position the device reports to the host: the sensed position, except where a
     // wall with clipping on holds it at the wall surface while the handle penetrates (§3.7).
     float reported_position[kMaxAxes] = {};
