@@ -398,7 +398,13 @@ int main(int argc, char** argv) {
         return std::any_of(console.begin(), console.end(), [&](const std::string& l) { return l.find(s) != std::string::npos; });
     };
     c.expect(has("==== modules loaded"), "the gadget and HID modules loaded");
-    c.expect(has(speed == "full" ? "new full-speed USB device" : "new high-speed USB device"),
+    // The speed: the kernel's "new ...-speed USB device" line, or (when hid-pidff's debug
+    // trace pushed it out of the kernel's log) the packet size of the endpoint descriptors
+    // FunctionFS enabled, which the device log states.
+    const std::string packet = speed == "full" ? "(max packet 64 bytes)" : "(max packet 1024 bytes)";
+    bool packet_seen = false;
+    for (const std::string& l : read_lines(args["--device-log"])) packet_seen = packet_seen || l.find(packet) != std::string::npos;
+    c.expect(has(speed == "full" ? "new full-speed USB device" : "new high-speed USB device") || packet_seen,
              "the kernel enumerated feel's gadget at " + speed + " speed");
     c.expect(has("Force feedback for USB HID PID devices by Anssi Hannula"), "hid-pidff initialised on feel's device");
     c.expect(has("==== event device /dev/input/event"), "an event device with EV_FF appeared");
