@@ -182,6 +182,19 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
     }
     c.expect(block > 0, name + ": Block Load gave block " + std::to_string(block));
     if (block <= 0) return;
+    // The block is this effect's until a later Create New Effect is given the same block:
+    // output reports may come after the program's next upload began (they are queued).
+    until = 1e18;
+    bool past_own = false;
+    for (const Line& l : log) {
+        if (l.t < created_at || l.verb != "feature_reply" || l.report != "block_load") continue;
+        if (!l.fields.count("block") || l.fields.at("block") != block) continue;
+        if (past_own) {
+            until = l.t;
+            break;
+        }
+        past_own = true;
+    }
     const std::string at = name + " block " + std::to_string(block) + ": ";
 
     const bool garbage_trigger = a.fields.at("trigger_button") > 32;
