@@ -198,9 +198,6 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
     const std::string at = name + " block " + std::to_string(block) + ": ";
 
     const bool garbage_trigger = a.fields.at("trigger_button") > 32;
-    const Line* effect = find_field_line(log, "set_effect", block, a.t, until);
-    c.expect(effect != nullptr, at + "Set Effect received");
-    if (effect == nullptr) return;
     if (garbage_trigger) {
         // fftest's rumble leaves trigger and direction uninitialised: the device must refuse
         // the Set Effect cleanly (an error status naming the field), nothing else.
@@ -214,6 +211,9 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
                               " (uninitialised by the program) refused with an error status");
         return;
     }
+    const Line* effect = find_field_line(log, "set_effect", block, a.t, until);
+    c.expect(effect != nullptr, at + "Set Effect received");
+    if (effect == nullptr) return;
     c.equal(field(*effect, {"type_usage"}, c, at), pid_effect_usage(type, a.fields.count("waveform") ? a.fields.at("waveform") : 0),
             at + "effect type usage");
     c.equal(field(*effect, {"duration_ms"}, c, at), a.fields.at("length"), at + "duration ms");
