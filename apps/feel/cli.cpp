@@ -78,6 +78,17 @@ void add_caps(CLI::App& app, CapsArgs& a) {
     cmd->footer(kExitCodes);
 }
 
+void add_descriptor(CLI::App& app, DescriptorArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "descriptor", "Print the HID report descriptor of a feel device with a profile's axes, buttons "
+                      "and hats, for device builders (docs/protocol.md)");
+    cmd->add_option("--profile", a.profile, "Device profile whose inputs the descriptor declares")
+        ->capture_default_str();
+    cmd->add_option("--format", a.format, "hex (bytes), c (a C array, items decoded in comments) or decoded")
+        ->capture_default_str();
+    cmd->footer(kExitCodes);
+}
+
 void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds_option) {
     CLI::App* cmd = app.add_subcommand(
         "play", "Load a sensation file onto a device and play one sensation, showing the elapsed "
@@ -89,7 +100,7 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
                                      "Stop after this many seconds, 0 < s <= 3600 (default: when the "
                                      "sensation ends, at most 10 s for one that never ends)");
     cmd->add_option("--iterations", a.iterations,
-                    "Play each effect this many times: a whole number 1..254 or infinite (default: "
+                    "Play each effect this many times: a whole number 1..255 or infinite (default: "
                     "each effect's own count)");
     cmd->footer(kExitCodes);
 }
@@ -178,7 +189,7 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(kExitCodes);
 }
 
-constexpr const char* kCommands = "render, check, devices, caps, play, stream, monitor, device, bench, studio";
+constexpr const char* kCommands = "render, check, devices, caps, descriptor, play, stream, monitor, device, bench, studio";
 
 void add_studio(CLI::App& app, StudioArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -277,6 +288,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     BenchLoopArgs bench_loop_args;
     DevicesArgs devices_args;
     CapsArgs caps_args;
+    DescriptorArgs descriptor_args;
     PlayArgs play_args;
     StreamArgs stream_args;
     MonitorArgs monitor_args;
@@ -292,6 +304,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     add_check(app, check_args);
     add_devices(app, devices_args);
     add_caps(app, caps_args);
+    add_descriptor(app, descriptor_args);
     add_play(app, play_args, play_seconds, play_seconds_option);
     add_stream(app, stream_args);
     add_monitor(app, monitor_args, monitor_seconds, monitor_seconds_option);
@@ -331,6 +344,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_devices(devices_args, out);
         } else if (app.got_subcommand("caps")) {
             run_caps(caps_args, out);
+        } else if (app.got_subcommand("descriptor")) {
+            run_descriptor(descriptor_args, out);
         } else if (app.got_subcommand("play")) {
             if (play_seconds_option->count() > 0) play_args.seconds = play_seconds;
             run_play(play_args, out, err);

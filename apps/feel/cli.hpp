@@ -58,6 +58,10 @@ struct CapsArgs {
     std::string device = kDefaultDeviceAddress;  // sim:PROFILE, unix:PATH, tcp:HOST:PORT or PROFILE
 };
 
+struct DescriptorArgs {
+    std::string profile = "iforce2";  // a built-in device profile: its inputs shape the descriptor
+    std::string format = "hex";       // hex, c or decoded
+};
 struct BenchLoopArgs {
     double rate_hz = 1000;  // whole Hz, runtime::kMinLoopRateHz..kMaxLoopRateHz
     double seconds = 60;    // 1..3600
@@ -102,6 +106,8 @@ void run_check(const CheckArgs& args, std::ostream& out, std::ostream& err);
 void run_devices(const DevicesArgs& args, std::ostream& out);
 // feel caps: a device's capabilities, read through the host API (docs/cli.md).
 void run_caps(const CapsArgs& args, std::ostream& out);
+// feel descriptor: the HID report descriptor of a device with the profile's inputs.
+void run_descriptor(const DescriptorArgs& args, std::ostream& out);
 // feel bench loop: the real-time loop's period jitter under a busy mix (docs/runtime.md).
 void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& err);
 // feel play: load a sensation file onto a device, play one sensation, show its force live.

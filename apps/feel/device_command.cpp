@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "cli.hpp"
+#include "flag_checks.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/runtime/realtime_loop.hpp"
 #include "feel/sim/device_profile.hpp"
@@ -32,22 +33,6 @@ namespace {
 using namespace std::chrono_literals;
 
 constexpr auto kStopPoll = 20ms;
-
-std::string number(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-const sim::DeviceProfile& checked_profile(const std::string& name) {
-    if (const sim::DeviceProfile* p = sim::find_device_profile(name)) return *p;
-    std::string names;
-    for (const sim::DeviceProfile& p : sim::device_profiles()) {
-        names += names.empty() ? "" : ", ";
-        names += p.name;
-    }
-    throw UsageError("--profile \"" + name + "\" is not a known device (available: " + names + ")");
-}
 
 void check_hand(const std::string& name) {
     if (sim::grip_from_name(name)) return;

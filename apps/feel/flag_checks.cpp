@@ -45,4 +45,14 @@ double checked_range(const char* flag, double value, double min, double max, con
     return value;
 }
 
+const sim::DeviceProfile& checked_profile(const std::string& name) {
+    if (const sim::DeviceProfile* p = sim::find_device_profile(name)) return *p;
+    std::string names;
+    for (const sim::DeviceProfile& p : sim::device_profiles()) {
+        names += names.empty() ? "" : ", ";
+        names += p.name;
+    }
+    throw UsageError("--profile \"" + name + "\" is not a known device (available: " + names + ")");
+}
+
 }  // namespace feel::cli

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <string>
 
+#include "feel/sim/device_profile.hpp"
+
 namespace feel::cli {
 
 // 0.35 -> "0.35", 1e-7 -> "1e-07": the shortest %g form.
@@ -21,5 +23,8 @@ namespace feel::cli {
 // A finite number in min..max (min itself allowed only if min_inclusive).
 [[nodiscard]] double checked_range(const char* flag, double value, double min, double max, const char* unit,
                                    bool min_inclusive = true);
+
+// The built-in profile named by --profile; a UsageError listing them when none is.
+[[nodiscard]] const sim::DeviceProfile& checked_profile(const std::string& name);
 
 }  // namespace feel::cli

@@ -63,9 +63,9 @@ int32_t parse_iterations(const std::string& text) {
         used = 0;
     }
     if (used != text.size()) {
-        throw UsageError("--iterations = " + text + " is not a number (allowed a whole number 1..254, or infinite)");
+        throw UsageError("--iterations = " + text + " is not a number (allowed a whole number 1..255, or infinite)");
     }
-    return checked_whole("--iterations", value, 1, 254);
+    return checked_whole("--iterations", value, 1, 255);
 }
 
 const format::Sensation& sensation_by_name(const format::SensationFile& file, const std::string& name,

@@ -315,7 +315,7 @@ FEEL_API int feel_stream_force(feel_device* device, const int32_t* force, int32_
 
 /* Unloads the effect from its device (if still there) and frees the handle; NULL ignored. */
 FEEL_API void feel_effect_destroy(feel_effect* effect);
-/* Start (iterations: FEEL_EFFECT_ITERATIONS, 1..254 or FEEL_INFINITE_ITERATIONS; solo:
+/* Start (iterations: FEEL_EFFECT_ITERATIONS, 1..255 or FEEL_INFINITE_ITERATIONS; solo:
  * stop every other effect first, DIES_SOLO) and Stop. */
 FEEL_API int feel_effect_start(feel_effect* effect, int32_t iterations, bool solo);
 FEEL_API int feel_effect_stop(feel_effect* effect);

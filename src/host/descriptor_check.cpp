@@ -4,6 +4,7 @@
 #include "descriptor_check.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <string_view>
 
 #include "feel/protocol/codec.hpp"
@@ -52,13 +53,60 @@ std::string report_label(uint32_t id) {
     return out;
 }
 
+// The joystick inputs the descriptor declares in Joystick Input: Generic Desktop axes
+// X..Rz in order, Button usages, Hat Switches. std::nullopt with `why` when it declares
+// something else.
+std::optional<protocol::JoystickLayout> layout_of(const protocol::hid::DescriptorReport& r, std::string& why) {
+    protocol::JoystickLayout layout;
+    layout.axis_count = 0;
+    layout.button_count = 0;
+    layout.hat_count = 0;
+    for (const protocol::hid::DescriptorField& f : r.fields) {
+        if (f.is_constant() || f.usages.empty()) continue;
+        for (uint32_t k = 0; k < f.report_count; ++k) {
+            const uint32_t u = f.usage_of(k);
+            if (u >= 0x00010030u && u <= 0x00010035u && layout.axis_count < kMaxAxes) {
+                layout.axes[layout.axis_count++] = static_cast<Axis>(u - 0x00010030u);
+            } else if ((u >> 16) == 0x0009 && layout.button_count < 32) {
+                ++layout.button_count;
+            } else if (u == 0x00010039u && layout.hat_count < 4) {
+                ++layout.hat_count;
+            } else {
+                why = "Joystick Input declares usage " + hex(u) + ", which is not an axis, a button or a hat this host reads";
+                return std::nullopt;
+            }
+        }
+    }
+    if (const Error e = protocol::check_layout(layout)) {
+        why = "Joystick Input's inputs are not a joystick this host reads: " + e.message();
+        return std::nullopt;
+    }
+    return layout;
+}
+
+// A standard PID device's Effect Operation: Loop Count 8 bits (feel's is 16).
+bool has_standard_loop_count(const protocol::hid::ParsedDescriptor& d) {
+    const auto id = static_cast<uint8_t>(protocol::ReportId::effect_operation);
+    const protocol::hid::DescriptorReport* r = d.find(protocol::hid::MainItemKind::output, id);
+    if (r == nullptr) return false;
+    for (const protocol::hid::DescriptorField& f : r->fields) {
+        if (!f.usages.empty() && f.usages.front() == 0x000F007Cu) return f.report_size == 8;
+    }
+    return false;
+}
+
 }  // namespace
 
-std::string check_report_descriptor(std::span<const uint8_t> descriptor) {
+std::string check_report_descriptor(std::span<const uint8_t> descriptor, protocol::JoystickLayout* joystick) {
     const protocol::hid::DescriptorParse parse = protocol::hid::parse_report_descriptor(descriptor);
     if (!parse.ok()) return "the report descriptor does not parse: " + parse.error;
     const protocol::hid::ParsedDescriptor& d = parse.descriptor;
     if (!d.uses_report_ids) return "the report descriptor declares no report ids";
+    if (has_standard_loop_count(d)) {
+        return "Effect Operation's Loop Count is 8 bits, as on a standard PID device (where 255 means "
+               "infinite and 255 iterations cannot be asked for): this host needs a feel device's 16-bit "
+               "loop count, which plays 1..255 iterations and infinite";
+    }
     for (const protocol::hid::DescriptorReport& r : d.reports) {
         const auto kind = protocol::report_kind(r.id);
         if (!kind) return "the report descriptor declares " + report_label(r.id) + ", which this host does not know";
@@ -67,7 +115,14 @@ std::string check_report_descriptor(std::span<const uint8_t> descriptor) {
                    ", this host expects " + std::string(kind_name(*kind));
         }
         const std::size_t bytes = 1 + static_cast<std::size_t>((r.bit_length + 7) / 8);
-        const std::size_t expected = protocol::report_size(r.id);
+        std::size_t expected = protocol::report_size(r.id);
+        if (r.id == static_cast<uint8_t>(protocol::ReportId::joystick_input)) {
+            std::string why;
+            const std::optional<protocol::JoystickLayout> layout = layout_of(r, why);
+            if (!layout) return why;
+            if (joystick != nullptr) *joystick = *layout;
+            expected = protocol::joystick_input_size(*layout);
+        }
         if (bytes != expected) {
             return report_label(r.id) + " is declared as " + std::to_string(bytes) + " bytes, this host sends and reads " +
                    std::to_string(expected);

@@ -149,11 +149,16 @@ Result<Device> Device::attach(std::unique_ptr<transport::Connection> connection,
         std::lock_guard call(core->call_mu);
         Result<std::vector<uint8_t>> descriptor = core->get_descriptor();
         if (!descriptor) return prefixed(descriptor.status(), what);
-        if (const std::string problem = check_report_descriptor(descriptor.value()); !problem.empty()) {
+        protocol::JoystickLayout joystick;
+        if (const std::string problem = check_report_descriptor(descriptor.value(), &joystick); !problem.empty()) {
             return Status::failure(ErrorKind::protocol,
                                    what + ": the device speaks another version of the protocol: " + problem);
         }
         core->descriptor = std::move(descriptor.value());
+        {
+            std::lock_guard lock(core->mu);
+            core->joystick = joystick;
+        }
         Result<protocol::AnyReport> info = core->get_feature(protocol::ReportId::device_info);
         if (!info) return prefixed(info.status(), what);
         const auto& report = std::get<protocol::DeviceInfoReport>(info.value());

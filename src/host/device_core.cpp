@@ -395,6 +395,22 @@ void DeviceCore::handle(const Frame& frame) {
     switch (frame.kind) {
         case FrameKind::input_report: {
             AnyReport report;
+            const bool is_joystick =
+                !frame.payload.empty() && frame.payload[0] == static_cast<uint8_t>(protocol::ReportId::joystick_input);
+            if (is_joystick) {
+                protocol::JoystickInputReport joy;
+                protocol::JoystickLayout layout;
+                {
+                    std::lock_guard lock(mu);
+                    layout = joystick;
+                }
+                if (const Error e = protocol::decode(frame.payload, layout, joy)) {
+                    note_protocol_problem("a joystick input that does not decode: " + e.message());
+                    return;
+                }
+                on_joystick(joy);
+                return;
+            }
             if (const Error e = protocol::decode(frame.payload, report)) {
                 note_protocol_problem("an input report that does not decode: " + e.message());
                 return;

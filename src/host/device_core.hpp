@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "feel/host/device.hpp"
+#include "feel/protocol/codec.hpp"
 #include "feel/protocol/reports.hpp"
 #include "feel/transport/transport.hpp"
 
@@ -155,6 +156,7 @@ struct DeviceCore {
     std::mutex call_mu;              // one caller transaction at a time
     std::mutex send_mu;              // one sender at a time
     mutable std::mutex mu;           // everything below that the I/O thread touches
+    protocol::JoystickLayout joystick;  // the device's Joystick Input, read from its descriptor
     std::condition_variable cv;      // answers, input rounds, disconnection
     std::recursive_mutex dispatch_mu;  // subscribers (held while calling them)
 

@@ -143,8 +143,8 @@ Status Effect::start(int32_t iterations, bool solo) {
     if (!core_ || !record_) return empty_effect("start");
     const std::string what = "start " + effect_label(record_->params.type);
     if (iterations != runtime::kEffectIterations && iterations != kInfiniteIterations &&
-        !(iterations >= 1 && iterations <= 254)) {
-        const Error e = Error::out_of_range("iterations", iterations, {1, 254});
+        !(iterations >= range::kIterations.min && iterations <= range::kIterations.max)) {
+        const Error e = Error::out_of_range("iterations", iterations, range::kIterations);
         return Status::failure(ErrorKind::invalid_parameter,
                                what + ": " + e.message() +
                                    ", or 0 for the effect's own count, or kInfiniteIterations",

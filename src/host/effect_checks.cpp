@@ -56,14 +56,6 @@ Status check_effect(const EffectParams& p, std::span<const int16_t> samples, con
                                    effect_label(p.type) + " effects (it plays " + supported_list(caps) + ")",
                                e);
     }
-    // PID's loop count 255 means "infinite", so the wire carries 1..254 iterations.
-    if (p.iterations == 255) {
-        const Error e = Error::out_of_range("iterations", p.iterations, {1, 254});
-        return Status::failure(ErrorKind::invalid_parameter,
-                               prefix + ": " + e.message() +
-                                   " on the wire, where 255 is HID PID's infinite loop count (use kInfiniteIterations)",
-                               e);
-    }
     if (p.axis_count > caps.axis_count) {
         return status_from_error(Error::out_of_range("axis_count", p.axis_count, {1, caps.axis_count}),
                                  prefix + " (the device's axes are " + axis_list(caps) + ")");

@@ -3,7 +3,8 @@
 // The same rules as the device (validate_effect, the engine's device checks), so that a
 // game gets the error at once with the field and the range, plus what only the wire and
 // the capabilities know: the axes, buttons and hats the device has, the types it plays,
-// its sample memory, and the wire's iteration count (255 is PID's "infinite").
+// its sample memory. (Iterations 1..255 and infinite all travel: a feel device's loop count
+// is 16 bits; descriptor_check.cpp refuses a standard PID device's 8-bit one.)
 #pragma once
 
 #include <span>

@@ -116,10 +116,20 @@ uint16_t clamp_u16(int64_t v) noexcept { return static_cast<uint16_t>(std::clamp
 
 }  // namespace
 
+protocol::JoystickLayout joystick_layout(const runtime::Capabilities& caps) noexcept {
+    protocol::JoystickLayout layout;
+    layout.axis_count = static_cast<uint8_t>(std::clamp(caps.axis_count, 1, kMaxAxes));
+    for (int a = 0; a < layout.axis_count; ++a) layout.axes[a] = caps.axes[a].axis;
+    layout.button_count = static_cast<uint8_t>(std::clamp(caps.button_count, 0, 32));
+    layout.hat_count = static_cast<uint8_t>(std::clamp(caps.hat_count, 0, 4));
+    return layout;
+}
+
 struct DeviceSession::Impl {
     Impl(const runtime::Capabilities& c, const runtime::RuntimeConfig& cfg, runtime::HostLink& l,
          LoopFiguresProvider f)
-        : caps(c), config(cfg), link(&l), figures(std::move(f)),
+        : caps(c), layout(joystick_layout(c)), descriptor(protocol::report_descriptor(layout)),
+          config(cfg), link(&l), figures(std::move(f)),
           blocks(c.effect_slots, cfg.engine.max_effects),
           pending_capacity(static_cast<std::size_t>(std::max(cfg.command_capacity, 1))),
           report_rate_hz(cfg.report_rate_hz) {
@@ -137,6 +147,8 @@ struct DeviceSession::Impl {
 
     // ---- configuration
     runtime::Capabilities caps;
+    protocol::JoystickLayout layout;  // the device's inputs: its Joystick Input and descriptor
+    std::vector<uint8_t> descriptor;
     runtime::RuntimeConfig config;
     runtime::HostLink* link;
     LoopFiguresProvider figures;
@@ -329,7 +341,7 @@ struct DeviceSession::Impl {
     }
 
     void emit_round(std::vector<Frame>& out) {
-        out.push_back(input_frame(FrameKind::input_report, detail::joystick_input(round)));
+        out.push_back(Frame{FrameKind::input_report, protocol::encode(detail::joystick_input(round), layout)});
 
         // The resident effects by block; effects no block names (freed since) are left out.
         std::fill(playing_now.begin(), playing_now.end(), uint8_t{0});
@@ -429,8 +441,7 @@ struct DeviceSession::Impl {
                 out.push_back(input_frame(FrameKind::feature_reply, device_info_report()));
                 return;
             case Answer::descriptor: {
-                const std::span<const uint8_t> d = protocol::report_descriptor();
-                out.push_back(Frame{FrameKind::descriptor_reply, std::vector<uint8_t>(d.begin(), d.end())});
+                out.push_back(Frame{FrameKind::descriptor_reply, descriptor});
                 return;
             }
         }
@@ -833,7 +844,10 @@ struct DeviceSession::Impl {
                     " effect, and an effect's type never changes: free the block and create a new effect"));
         }
         EffectParams next = b->shadow;
-        detail::apply_set_effect(r, next);
+        detail::apply_set_effect(r, next, caps);
+        // PID's rule: an effect has an envelope when a Set Envelope arrived for its block
+        // (Set Effect's vendor no_envelope can only take it away).
+        next.has_envelope = next.has_envelope && b->arrived.envelope;
         if (!b->is_committed) {
             if (auto why = detail::check_blocks_complete(*b, next, r.block)) return refuse_commit(*why);
         }

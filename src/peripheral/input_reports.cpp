@@ -77,7 +77,7 @@ void fill_effect_status(protocol::CommandStatusReport& status, const EffectStatu
     status.effect_state = static_cast<uint8_t>(reported_state(effect.state));
     status.iterations = effect.iterations == kInfiniteIterations
                             ? protocol::kLoopInfinite
-                            : static_cast<uint8_t>(std::clamp<int32_t>(effect.iterations, 0, 254));
+                            : static_cast<uint16_t>(std::clamp<int32_t>(effect.iterations, 0, 255));
     status.completed_iterations = static_cast<uint8_t>(std::clamp<int32_t>(effect.completed_iterations, 0, 255));
     status.elapsed_us = static_cast<uint32_t>(
         std::clamp<int64_t>(effect.elapsed_us, 0, std::numeric_limits<uint32_t>::max()));

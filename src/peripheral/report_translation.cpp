@@ -187,7 +187,7 @@ void apply_type_block(const protocol::AnyReport& report, Block& block) {
             } else if constexpr (std::is_same_v<R, protocol::SetPeriodicReport>) {
                 p.periodic.magnitude = r.magnitude;
                 p.periodic.offset = r.offset;
-                p.periodic.phase = r.phase;
+                p.periodic.phase = r.phase == 36000 ? 0 : r.phase;  // 360° (a standard host's) is 0°
                 p.periodic.period_us = r.period_us;
                 a.periodic = true;
             } else if constexpr (std::is_same_v<R, protocol::SetSweepReport>) {
@@ -233,18 +233,30 @@ void apply_type_block(const protocol::AnyReport& report, Block& block) {
         report);
 }
 
-void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p) {
-    p.duration_us = wire_time(r.duration_us);
+void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p, const runtime::Capabilities& device) {
+    // A standard PID host (Linux's hid-pidff) writes evdev's values: duration 0 is evdev's
+    // "infinite", iterations 0 is "not given" (once), an angle of 36000 is 360° (docs/protocol.md,
+    // "Standard hosts").
+    p.duration_us = r.duration_us == 0 ? kInfiniteUs : wire_time(r.duration_us);
     p.start_delay_us = r.start_delay_us;
     p.trigger_repeat_interval_us = r.trigger_repeat_interval_us;
     p.gain = r.gain;
-    p.iterations = r.iterations == protocol::kLoopInfinite ? kInfiniteIterations : int32_t{r.iterations};
+    p.iterations = r.iterations == protocol::kLoopInfinite ? kInfiniteIterations
+                   : r.iterations == 0                      ? 1
+                                                            : int32_t{r.iterations};
     p.trigger.kind = r.trigger_kind;
     p.trigger.index = r.trigger_index;
     p.axis_count = r.axis_count;
     std::copy(std::begin(r.axes), std::end(r.axes), p.axes);
+    if (r.axis_count == 0) {
+        p.axis_count = std::clamp(device.axis_count, 1, 2);
+        for (int a = 0; a < p.axis_count; ++a) p.axes[a] = device.axes[a].axis;
+    }
     p.direction.kind = r.direction_kind;
     std::copy(std::begin(r.direction), std::end(r.direction), p.direction.value);
+    if (p.direction.kind == DirectionKind::polar || p.direction.kind == DirectionKind::spherical) {
+        for (int32_t& angle : p.direction.value) angle = angle == 36000 ? 0 : angle;
+    }
     p.has_envelope = r.has_envelope;
 }
 
@@ -286,9 +298,6 @@ std::optional<Refusal> check_blocks_complete(const Block& block, const EffectPar
     } else if (effect_class(t) == EffectClass::dynamic) {
         if (!a.dynamic) return missing(index, t, "set_dynamic", "Set Dynamic");
     }
-    if (next.has_envelope && !a.envelope) {
-        return missing(index, t, "set_envelope", "Set Envelope (its Set Effect asks for an envelope)");
-    }
     return std::nullopt;
 }
 
@@ -314,7 +323,7 @@ uint32_t changed_fields(const EffectParams& from, const EffectParams& to) noexce
     return mask;
 }
 
-int32_t iterations_of_loop_count(uint8_t loop_count) noexcept {
+int32_t iterations_of_loop_count(uint16_t loop_count) noexcept {
     if (loop_count == protocol::kLoopEffectOwn) return runtime::kEffectIterations;
     if (loop_count == protocol::kLoopInfinite) return kInfiniteIterations;
     return loop_count;

@@ -12,6 +12,7 @@
 #include "block_table.hpp"
 #include "feel/effect.hpp"
 #include "feel/protocol/reports.hpp"
+#include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/runtime_messages.hpp"
 #include "feel/status.hpp"
 
@@ -48,8 +49,12 @@ struct Refusal {
 // (check_type_block_fits). Custom Force Data carries samples, not parameters: not here.
 void apply_type_block(const protocol::AnyReport& report, Block& block);
 
-// Writes Set Effect's Effect Structure into `params` (the type blocks stay).
-void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params);
+// Writes Set Effect's Effect Structure into `params` (the type blocks stay). A report
+// without axes (axis_count 0: a standard PID host, which never writes feel's vendor
+// fields) plays on the device's first two axes, or its one: PID's direction is a 2D angle
+// and hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
+void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params,
+                      const runtime::Capabilities& device);
 
 // For a block's first commit: std::nullopt when every type block the effect needs has
 // arrived, else a Refusal naming the first one missing.
@@ -60,8 +65,8 @@ void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& par
 [[nodiscard]] uint32_t changed_fields(const EffectParams& from, const EffectParams& to) noexcept;
 
 // Effect Operation's loop count as a runtime start's iterations: 0 the effect's own count
-// (runtime::kEffectIterations), 1..254 that many, 255 kInfiniteIterations.
-[[nodiscard]] int32_t iterations_of_loop_count(uint8_t loop_count) noexcept;
+// (runtime::kEffectIterations), 1..255 that many, kLoopInfinite kInfiniteIterations.
+[[nodiscard]] int32_t iterations_of_loop_count(uint16_t loop_count) noexcept;
 
 // PID Device Control as the runtime's DISFFC_* command.
 [[nodiscard]] std::optional<runtime::DeviceControl> runtime_control(protocol::DeviceControlOp op) noexcept;

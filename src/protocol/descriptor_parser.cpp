@@ -140,6 +140,7 @@ private:
         }
         if (!resolve_usage_range()) return;
         collections_.push_back(local_.usages.empty() ? 0 : local_.usages.front());
+        collection_types_.push_back(static_cast<uint8_t>(type));
     }
 
     void end_collection() {
@@ -148,6 +149,7 @@ private:
             return;
         }
         collections_.pop_back();
+        collection_types_.pop_back();
     }
 
     void data_item(MainItemKind kind, uint32_t flags) {
@@ -179,6 +181,7 @@ private:
         field.unit = g.unit;
         field.unit_exponent = g.unit_exponent;
         field.collections = collections_;
+        field.collection_types = collection_types_;
         if (!field.is_constant() && field.logical_min > field.logical_max) {
             return fail("Logical Minimum " + std::to_string(field.logical_min) +
                         " is greater than Logical Maximum " + std::to_string(field.logical_max));
@@ -369,6 +372,7 @@ private:
     std::vector<GlobalState> pushed_;
     LocalState local_{};
     std::vector<uint32_t> collections_;
+    std::vector<uint8_t> collection_types_;  // alongside collections_
     std::size_t field_total_ = 0;
     std::size_t usage_total_ = 0;
     ParsedDescriptor out_;

@@ -20,8 +20,8 @@ uint32_t wire_duration(int64_t us) noexcept {
     return us == kInfiniteUs ? kWireInfinite : static_cast<uint32_t>(us);
 }
 
-uint8_t wire_iterations(int32_t iterations) noexcept {
-    return iterations == kInfiniteIterations ? kLoopInfinite : static_cast<uint8_t>(iterations);
+uint16_t wire_iterations(int32_t iterations) noexcept {
+    return iterations == kInfiniteIterations ? kLoopInfinite : static_cast<uint16_t>(iterations);
 }
 
 CreateNewEffectReport create_new_effect_report(const EffectParams& params, std::span<const int16_t> samples) {

@@ -51,7 +51,7 @@ void field_name(const ReportSpec& report, const FieldSpec& field, int index, cha
 Error check_field(const ReportSpec& report, const FieldSpec& field, int index,
                   int64_t value) noexcept {
     if (field.bits >= 64) return {};  // every pattern is a value
-    if (field.null_is_infinite && value == static_cast<int64_t>(kWireInfinite)) return {};
+    if (field.has_null() && value == field.null_value()) return {};
     if (field.range.contains(value) && (field.valid == nullptr || field.valid(value))) return {};
     char name[48];
     field_name(report, field, index, name);

@@ -20,10 +20,18 @@
 // field cannot state its range. The descriptor declares it as two 32-bit elements, low
 // dword first, each 0..0xFFFFFFFF; the bytes are those of the 64-bit little-endian value.
 //
-// Durations with an "infinite" value set null_is_infinite: the field's all-ones pattern
-// (kWireInfinite) lies outside its logical range and the descriptor sets the main item's
-// Null State flag, which is how HID spells "this field may hold no value" — here, none
-// because the effect never ends.
+// Null values. A field may have one wire value outside its logical range that still means
+// something: the all-ones pattern of its width for "infinite" (or_infinite: a duration
+// that never ends, a loop count without end), or 0 for "none" (or_none: Block Load's
+// block when no block was allocated). The descriptor sets the main item's Null State
+// flag, which is how HID spells "this field may hold no value".
+//
+// Mapped fields. Most fields are a struct member written as is (FEEL_FIELD). A few wire
+// fields are a function of a member (FEEL_MAPPED): PID's times in milliseconds plus a
+// vendor field with the microseconds below the millisecond, the Effect Type array's
+// 1-based index, the direction split into PID's angles and feel's vectors. Their getter
+// and setter are written next to the table entry; decode() applies setters in wire
+// order, so a setter may read what an earlier field of the same report set.
 #pragma once
 
 #include <cstddef>
@@ -41,6 +49,7 @@ namespace feel::protocol::detail {
 enum class FieldUnit : uint8_t {
     none,
     microseconds,       // s, exponent -6
+    milliseconds,       // s, exponent -3
     centidegrees,       // degrees, exponent -2
     hertz,              // 1/s
     centihertz,         // 1/s, exponent -2
@@ -48,7 +57,10 @@ enum class FieldUnit : uint8_t {
 };
 
 using FieldGetter = int64_t (*)(const void* report, int index) noexcept;
-using FieldSetter = void (*)(void* report, int index, int64_t value) noexcept;
+// A setter returns false to refuse a value that is in range but contradicts a field set
+// before it (decode() then refuses with the field's invalid_rule): decode is lossless, so
+// whatever it accepts encodes back to the same bytes.
+using FieldSetter = bool (*)(void* report, int index, int64_t value) noexcept;
 using ValueCheck = bool (*)(int64_t value) noexcept;
 
 struct FieldSpec {
@@ -64,18 +76,30 @@ struct FieldSpec {
     // collection with this usage, and the field is an HID Array item: value v selects
     // usage_list[v - min].
     uint32_t named_array = 0;
-    uint8_t bits = 8;   // 1, 8, 16, 32 or 64 per element
+    // Non-zero: the descriptor wraps this (Variable) field in a Logical collection with
+    // this usage (PID's Direction 0x57, a collection of Ordinals).
+    uint32_t wrap = 0;
+    uint8_t bits = 8;   // 1, 4 (hats), 8, 16, 32 or 64 per element; padding 1..7
     uint8_t count = 1;  // elements, 1..255
     Range range{0, 0};  // logical min/max, inclusive (ignored for 64-bit fields)
     FieldUnit unit = FieldUnit::none;
-    bool null_is_infinite = false;  // all-ones means infinite (32-bit fields only)
+    // The null value (see above): none, the width's all-ones ("infinite") or 0 ("none").
+    enum class Null : uint8_t { none, all_ones, zero };
+    Null null = Null::none;
+    // Constant padding to a byte boundary: no usage, written 0, ignored when read.
+    bool padding = false;
     // Enums whose valid values have holes: the range is checked first, then this.
     ValueCheck valid = nullptr;
-    const char* invalid_rule = "";  // the Error rule when `valid` refuses a value
+    const char* invalid_rule = "";  // the Error rule when `valid` or the setter refuses a value
     FieldGetter get = nullptr;
     FieldSetter set = nullptr;
 
     [[nodiscard]] constexpr bool is_signed() const noexcept { return bits < 64 && range.min < 0; }
+    [[nodiscard]] constexpr bool has_null() const noexcept { return null != Null::none; }
+    // The wire value of the null (meaningful when has_null()).
+    [[nodiscard]] constexpr int64_t null_value() const noexcept {
+        return null == Null::zero ? 0 : static_cast<int64_t>((uint64_t{1} << bits) - 1);
+    }
     [[nodiscard]] constexpr std::size_t total_bits() const noexcept {
         return static_cast<std::size_t>(bits) * count;
     }
@@ -93,7 +117,22 @@ struct FieldSpec {
     }
     [[nodiscard]] constexpr FieldSpec or_infinite() const noexcept {
         FieldSpec f = *this;
-        f.null_is_infinite = true;
+        f.null = Null::all_ones;
+        return f;
+    }
+    [[nodiscard]] constexpr FieldSpec or_none() const noexcept {
+        FieldSpec f = *this;
+        f.null = Null::zero;
+        return f;
+    }
+    [[nodiscard]] constexpr FieldSpec refusing(const char* rule) const noexcept {
+        FieldSpec f = *this;
+        f.invalid_rule = rule;
+        return f;
+    }
+    [[nodiscard]] constexpr FieldSpec wrapped_in(uint32_t collection_usage) const noexcept {
+        FieldSpec f = *this;
+        f.wrap = collection_usage;
         return f;
     }
     [[nodiscard]] constexpr FieldSpec usages(std::span<const uint32_t> list) const noexcept {
@@ -186,9 +225,28 @@ template <class Report, auto Access>
     f.set = [](void* r, int i, int64_t v) noexcept {
         auto& member = Access(*static_cast<Report*>(r), i);
         member = from_wire<std::remove_cvref_t<decltype(member)>>(v);
+        return true;
     };
     return f;
 }
+
+// Binds a FieldSpec to a mapping of the struct: `Get` is `(const Report&, int i) -> int64_t`
+// giving the wire value, `Set` is `(Report&, int i, int64_t wire) -> bool` storing it (false:
+// refused, see FieldSetter).
+template <class Report, auto Get, auto Set>
+[[nodiscard]] constexpr FieldSpec bind_mapped(std::string_view path, FieldSpec f) noexcept {
+    f.path = path;
+    f.get = [](const void* r, int i) noexcept -> int64_t {
+        return Get(*static_cast<const Report*>(r), i);
+    };
+    f.set = [](void* r, int i, int64_t v) noexcept -> bool { return Set(*static_cast<Report*>(r), i, v); };
+    return f;
+}
+
+// FEEL_MAPPED(Report, "name", spec, getter, setter): a mapped field entry (functions or
+// captureless lambdas).
+#define FEEL_MAPPED(Report, name, spec, getter, setter) \
+    ::feel::protocol::detail::bind_mapped<Report, getter, setter>(name, spec)
 
 // FEEL_FIELD(Report, member path, spec): the table's one-line field entry. The path may
 // use `i`, the element index: FEEL_FIELD(SetEffectReport, axes[i], ...).

@@ -19,6 +19,7 @@ namespace feel::protocol::usage {
 
 inline constexpr uint16_t kPageGenericDesktop = 0x01;
 inline constexpr uint16_t kPageButton = 0x09;
+inline constexpr uint16_t kPageOrdinal = 0x0A;
 inline constexpr uint16_t kPagePid = 0x0F;
 inline constexpr uint16_t kPageVendor = 0xFF00;  // the first vendor-defined page
 
@@ -42,8 +43,12 @@ inline constexpr uint32_t kZ = extended(kPageGenericDesktop, 0x32);
 inline constexpr uint32_t kRx = extended(kPageGenericDesktop, 0x33);
 inline constexpr uint32_t kRy = extended(kPageGenericDesktop, 0x34);
 inline constexpr uint32_t kRz = extended(kPageGenericDesktop, 0x35);
+inline constexpr uint32_t kHatSwitch = extended(kPageGenericDesktop, 0x39);
 inline constexpr uint32_t kByteCount = extended(kPageGenericDesktop, 0x3B);  // PID Create New Effect
 }  // namespace gd
+
+// Ordinal page: Instance n (PID's Direction collection lists its angles as Ordinals).
+[[nodiscard]] constexpr uint32_t ordinal(uint16_t n) noexcept { return extended(kPageOrdinal, n); }
 
 [[nodiscard]] constexpr uint32_t button(uint16_t n) noexcept { return extended(kPageButton, n); }
 
@@ -72,6 +77,7 @@ inline constexpr uint32_t kGain = u(0x52);
 inline constexpr uint32_t kTriggerButton = u(0x53);
 inline constexpr uint32_t kTriggerRepeatInterval = u(0x54);
 inline constexpr uint32_t kAxesEnable = u(0x55);
+inline constexpr uint32_t kDirectionEnable = u(0x56);
 inline constexpr uint32_t kDirection = u(0x57);
 inline constexpr uint32_t kSetEnvelopeReport = u(0x5A);
 inline constexpr uint32_t kAttackLevel = u(0x5B);
@@ -173,7 +179,16 @@ inline constexpr uint32_t kIterations = u(0x110);
 inline constexpr uint32_t kTriggerKind = u(0x111);
 inline constexpr uint32_t kEffectAxis = u(0x112);
 inline constexpr uint32_t kDirectionKind = u(0x113);
-inline constexpr uint32_t kHasEnvelope = u(0x114);
+inline constexpr uint32_t kNoEnvelope = u(0x114);
+inline constexpr uint32_t kDirectionVector = u(0x115);
+// The microseconds below the millisecond of a PID time field (PID's fields carry whole
+// milliseconds, the unit Linux's hid-pidff writes), one usage per time.
+inline constexpr uint32_t kDurationFine = u(0x116);
+inline constexpr uint32_t kRepeatIntervalFine = u(0x117);
+inline constexpr uint32_t kStartDelayFine = u(0x119);
+inline constexpr uint32_t kAttackTimeFine = u(0x11A);
+inline constexpr uint32_t kFadeTimeFine = u(0x11B);
+inline constexpr uint32_t kPeriodFine = u(0x11C);
 // Set Condition, Set Wall.
 inline constexpr uint32_t kOffsetMode = u(0x118);
 // Set Custom Force, Custom Force Data, Download Force Sample.
@@ -341,6 +356,10 @@ inline constexpr uint32_t kEffectTypeUsages[kEffectTypeCount] = {
 };
 static_assert(static_cast<int>(EffectType::ramp) == 24 && static_cast<int>(EffectType::constant) == 11,
               "kEffectTypeUsages follows EffectType's order");
+
+// Set Effect's Direction collection: two angles, Ordinal 1 (the polar angle, or the
+// spherical azimuth) and Ordinal 2 (the spherical elevation).
+inline constexpr uint32_t kDirectionOrdinals[2] = {ordinal(1), ordinal(2)};
 
 // The six axes in feel's order (axis.hpp): Generic Desktop X, Y, Z, Rx, Ry, Rz.
 inline constexpr uint32_t kAxisUsages[6] = {gd::kX, gd::kY, gd::kZ, gd::kRx, gd::kRy, gd::kRz};

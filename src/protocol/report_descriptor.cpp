@@ -12,7 +12,9 @@
 // change, Report Size, Report Count, and an Input/Output/Feature item (Data, Var, Abs; Null
 // State for durations that may be infinite). A PID named array (Effect Type, Effect
 // Operation, Device Control, Block Load Status) is its usage's Logical collection around an
-// Array item whose value selects one of the listed usages.
+// Array item whose value selects one of the listed usages (1 the first: hid-pidff refuses
+// a list whose Logical Minimum is not 1). PID's Direction is a Logical collection (0x57)
+// around a Variable field of Ordinals (FieldSpec::wrap).
 //
 // Global items are written only when their value changes, as HID intends: a reader keeps
 // the global state from item to item.
@@ -26,7 +28,10 @@
 #include <vector>
 
 #include "feel/protocol/codec.hpp"
+#include <stdexcept>
+
 #include "hid_usages.hpp"
+#include "joystick_layout.hpp"
 #include "report_table.hpp"
 
 namespace feel::protocol {
@@ -45,6 +50,7 @@ enum Prefix : uint8_t {
 };
 enum CollectionType : uint8_t { kPhysical = 0x00, kApplication = 0x01, kLogical = 0x02 };
 // Main item data bits.
+constexpr uint32_t kConstant = 0x01;
 constexpr uint32_t kVariable = 0x02;
 constexpr uint32_t kNullState = 0x40;
 
@@ -57,6 +63,7 @@ UnitItems unit_items(FieldUnit u) noexcept {
     switch (u) {
         case FieldUnit::none: return {0, 0};
         case FieldUnit::microseconds: return {0x1001, -6};  // SI Linear, time: s
+        case FieldUnit::milliseconds: return {0x1001, -3};
         case FieldUnit::centidegrees: return {0x0014, -2};  // English Rotation, "length": degrees
         case FieldUnit::hertz: return {0xF001, 0};          // SI Linear, time^-1: 1/s
         case FieldUnit::centihertz: return {0xF001, -2};
@@ -170,6 +177,11 @@ uint8_t main_prefix(ReportKind kind) noexcept {
 
 void write_field(DescriptorWriter& w, const ReportSpec& report, const FieldSpec& field) {
     const uint8_t main = main_prefix(report.kind);
+    if (field.padding) {
+        w.size_and_count(field.bits, field.count);
+        w.unsigned_item(main, kConstant | kVariable);  // no usage: a host ignores it
+        return;
+    }
     if (field.named_array != 0) {
         w.usage(field.named_array);
         w.collection(kLogical);
@@ -180,6 +192,10 @@ void write_field(DescriptorWriter& w, const ReportSpec& report, const FieldSpec&
         w.unsigned_item(main, 0x00);  // Data, Array, Absolute
         w.end_collection();
         return;
+    }
+    if (field.wrap != 0) {
+        w.usage(field.wrap);
+        w.collection(kLogical);
     }
     if (field.usage_list.empty()) {
         w.usage(field.usage);
@@ -195,14 +211,18 @@ void write_field(DescriptorWriter& w, const ReportSpec& report, const FieldSpec&
         w.logical(field.range.min, field.range.max);
         w.size_and_count(field.bits, field.count);
     }
-    w.unsigned_item(main, kVariable | (field.null_is_infinite ? kNullState : 0u));
+    w.unsigned_item(main, kVariable | (field.has_null() ? kNullState : 0u));
+    if (field.wrap != 0) w.end_collection();
 }
 
-std::vector<uint8_t> build_descriptor() {
+std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
+    detail::JoystickSpec joystick;
+    detail::build_joystick_spec(layout, joystick);
     DescriptorWriter w;
     w.usage(usage::gd::kJoystick);
     w.collection(kApplication);
-    for (const ReportSpec* report : detail::all_reports()) {
+    for (const ReportSpec* listed : detail::all_reports()) {
+        const ReportSpec* report = listed->id == ReportId::joystick_input ? &joystick.spec : listed;
         w.usage(report->usage);
         w.collection(report->usage == usage::gd::kPointer ? kPhysical : kLogical);
         w.unsigned_item(kReportId, static_cast<uint8_t>(report->id));
@@ -216,8 +236,15 @@ std::vector<uint8_t> build_descriptor() {
 }  // namespace
 
 std::span<const uint8_t> report_descriptor() noexcept {
-    static const std::vector<uint8_t> descriptor = build_descriptor();  // fixed: built once
+    static const std::vector<uint8_t> descriptor = build_descriptor(JoystickLayout{});  // built once
     return descriptor;
+}
+
+std::vector<uint8_t> report_descriptor(const JoystickLayout& layout) {
+    if (const Error e = check_layout(layout)) {
+        throw std::invalid_argument("no descriptor for this joystick layout: " + e.message());
+    }
+    return build_descriptor(layout);
 }
 
 }  // namespace feel::protocol

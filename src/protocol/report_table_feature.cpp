@@ -9,7 +9,8 @@ namespace {
 
 using namespace usage;
 
-constexpr Range kEffectTypeRange{0, kEffectTypeCount - 1};
+// Effect Type: a 1-based PID named array (report_table_pid.cpp): v selects EffectType v - 1.
+constexpr Range kEffectTypeIndex{1, kEffectTypeCount};
 constexpr Range kBlockLoadStatus{1, 3};
 constexpr Range kDeviceClass{1, 2};  // sim::DeviceClass: 1 I-FORCE 1.x, 2 I-FORCE 2.0
 static_assert(static_cast<int>(sim::DeviceClass::iforce1) == kDeviceClass.min, "DeviceClass's first");
@@ -24,15 +25,24 @@ constexpr uint32_t kBlockLoadUsages[] = {pid::kBlockLoadSuccess, pid::kBlockLoad
 
 constexpr FieldSpec kCreateNewEffect[] = {
     FEEL_FIELD(CreateNewEffectReport, sequence, u32(vendor::kSequence, kAnyU32)),
-    FEEL_FIELD(CreateNewEffectReport, type,
-               u8(0, kEffectTypeRange).selects(pid::kEffectType, kEffectTypeUsages)),
+    FEEL_MAPPED(CreateNewEffectReport, "type",
+                u8(0, kEffectTypeIndex).selects(pid::kEffectType, kEffectTypeUsages),
+                [](const CreateNewEffectReport& r, int) noexcept -> int64_t {
+                    return static_cast<int64_t>(r.type) + 1;
+                },
+                [](CreateNewEffectReport& r, int, int64_t v) noexcept {
+                    r.type = static_cast<EffectType>(v - 1);
+                    return true;
+                }),
     // PID 1.0 declares the parameter block's size with Generic Desktop's Byte Count; feel
     // counts force-profile samples in it (the device knows a sample's size).
     FEEL_FIELD(CreateNewEffectReport, sample_count, u16(gd::kByteCount, kAnyU16)),
 };
 
 constexpr FieldSpec kBlockLoad[] = {
-    FEEL_FIELD(BlockLoadReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
+    // 1..65535, or 0 (the null) when no block was allocated. Logical Minimum 1 matters:
+    // hid-pidff takes it as the first block and max_effects = max - min + 1.
+    FEEL_FIELD(BlockLoadReport, block, u16(pid::kEffectBlockIndex, kBlock).or_none()),
     FEEL_FIELD(BlockLoadReport, status,
                u8(0, kBlockLoadStatus).selects(pid::kBlockLoadStatus, kBlockLoadUsages)),
     FEEL_FIELD(BlockLoadReport, ram_pool_available, u32(pid::kRamPoolAvailable, kAnyU32)),

@@ -3,6 +3,7 @@
 #include "feel/engine.hpp"
 #include "feel/runtime/runtime_messages.hpp"
 #include "hid_usages.hpp"
+#include "joystick_layout.hpp"
 #include "report_table.hpp"
 
 namespace feel::protocol::detail {
@@ -10,8 +11,6 @@ namespace {
 
 using namespace usage;
 
-constexpr Range kBinary{0, 1};
-constexpr Range kHatBits{0, 0x0F};              // bit h-1 = hat h off center, four hats
 constexpr Range kErrorCode{0, 4};               // feel::ErrorCode
 constexpr Range kReportedState{0, 3};           // runtime::ReportedEffectState
 constexpr Range kPlayEnd{0, 2};                 // feel::PlayEnd
@@ -35,27 +34,13 @@ constexpr uint32_t kButtonUsages[32] = {
     button(29), button(30), button(31), button(32),
 };
 
-// The 32 buttons are one HID field of 32 one-bit elements (Button page 1..32); in the struct
-// they are the bits of one word, so this field has its own accessors.
-constexpr FieldSpec buttons_field() noexcept {
-    FieldSpec f = field(0, 1, kBinary).times(32).usages(kButtonUsages);
-    f.path = "buttons[i]";
-    f.get = [](const void* r, int i) noexcept -> int64_t {
-        return (static_cast<const JoystickInputReport*>(r)->buttons >> i) & 1u;
-    };
-    f.set = [](void* r, int i, int64_t v) noexcept {
-        uint32_t& word = static_cast<JoystickInputReport*>(r)->buttons;
-        const uint32_t bit = 1u << i;
-        word = v != 0 ? (word | bit) : (word & ~bit);
-    };
-    return f;
-}
-
+// The full layout (JoystickLayout{}): six axes, 32 buttons, four hats, whole bytes without
+// padding. A device's own layout is built by build_joystick_spec (joystick_layout.cpp).
 constexpr FieldSpec kJoystickInput[] = {
     FEEL_FIELD(JoystickInputReport, position[i],
                i16(0, range::kSignedLevel).times(kMaxAxes).usages(kAxisUsages)),
-    buttons_field(),
-    FEEL_FIELD(JoystickInputReport, hats, u8(vendor::kHats, kHatBits)),
+    button_field(32, kButtonUsages),
+    hat_field(4),
 };
 
 constexpr FieldSpec kPidState[] = {
@@ -85,7 +70,7 @@ constexpr FieldSpec kCommandStatus[] = {
     FEEL_FIELD(CommandStatusReport, has_range, flag(vendor::kHasRange)),
     FEEL_FIELD(CommandStatusReport, rule[i], text(vendor::kErrorRule, 96)),
     FEEL_FIELD(CommandStatusReport, effect_state, u8(vendor::kEffectState, kReportedState)),
-    FEEL_FIELD(CommandStatusReport, iterations, u8(vendor::kIterations, kAnyU8)),
+    FEEL_FIELD(CommandStatusReport, iterations, u16(vendor::kIterations, kAnyU8).or_infinite()),
     FEEL_FIELD(CommandStatusReport, completed_iterations, u8(vendor::kCompletedIterations, kAnyU8)),
     FEEL_FIELD(CommandStatusReport, elapsed_us,
                u32(vendor::kElapsed, kAnyU32).in(FieldUnit::microseconds)),

@@ -1,7 +1,11 @@
 // The HID PID 1.0 output reports (host -> device), field by field in wire order.
 //
-// Each report carries the fields PID 1.0 gives it, under PID's usages (page 0x0F), with
-// feel's units and ranges (units.hpp) as the logical range. What feel needs beyond PID
+// Each report carries the fields PID 1.0 gives it, under PID's usages (page 0x0F), laid out
+// the way Linux's hid-pidff (drivers/hid/usbhid/hid-pidff.c) and Windows' PID driver read
+// them: named arrays 1-based, Direction a collection of Ordinals, times in milliseconds
+// (hid-pidff writes evdev's milliseconds unscaled), Device Control's list first. The
+// logical ranges are feel's (units.hpp) where hid-pidff rescales to them (levels, gains,
+// angles) and what hid-pidff writes where it does not (times). What feel needs beyond PID
 // (the command sequence, iterations, trigger kind, the axis list, the direction's form)
 // rides in the same report under vendor usages, so one report still describes one effect
 // block.
@@ -13,16 +17,26 @@ namespace {
 
 using namespace usage;
 
-constexpr Range kEffectTypeRange{0, kEffectTypeCount - 1};
-// Set Effect's direction slots: polar and spherical angles 0..35999, cartesian and
-// moment components ±10000 (feel::Direction; the engine checks each form's own range).
-constexpr Range kDirectionValue{-kFullScale, 35999};
-constexpr Range kTriggerIndex{0, 32};  // 0 none, button 1..32, hat 1..4
+// Effect Type is a PID named array, whose value is 1-based (hid-pidff refuses a list whose
+// Logical Minimum is not 1): value v selects kEffectTypeUsages[v - 1], the EffectType v - 1.
+constexpr Range kEffectTypeIndex{1, kEffectTypeCount};
+// PID times: whole milliseconds (the unit hid-pidff writes, whatever the descriptor says),
+// plus a vendor field with the microseconds below the millisecond (0 from a standard host).
+constexpr Range kTimeMs{0, kMaxTimeUs / 1000};
+constexpr Range kSubMillisecondUs{0, 999};
+// Direction: PID's angles (Ordinals 1 and 2) in hundredths of a degree, 0..36000 so that
+// hid-pidff's linear rescale of evdev's 0..0xFFFF lands on whole degrees at the compass
+// points; 36000 is 360°, the same as 0 (the device reads it so). feel's vectors (cartesian,
+// moments) travel in a vendor field, ±10000 per component.
+constexpr Range kDirectionAngle{0, 36000};
+constexpr Range kDirectionForm{0, 3};  // 0 polar / spherical angles, see direction_form
+constexpr Range kTriggerButtonOrNone{0, 32};  // 0 none, button 1..32, hat 1..4
 constexpr Range kTriggerKind{0, 2};
-constexpr Range kDirectionKind{0, 4};
+constexpr Range kAxisCountOrDefault{0, kMaxAxes};  // 0: not given (standard host), see protocol.md
 constexpr Range kOffsetMode{0, 1};
 constexpr Range kCustomOffset{0, 65534};
 constexpr Range kDataCount{1, kSamplesPerDataReport};
+constexpr Range kLoopCount{0, 255};  // or kLoopInfinite (the 16-bit null)
 
 constexpr uint32_t kOperationUsages[] = {pid::kOpEffectStart, pid::kOpEffectStartSolo,
                                          pid::kOpEffectStop};
@@ -33,37 +47,160 @@ constexpr uint32_t kDeviceControlUsages[] = {pid::kDcEnableActuators, pid::kDcDi
 #define SEQUENCE(R) FEEL_FIELD(R, sequence, u32(vendor::kSequence, kAnyU32))
 #define BLOCK(R) FEEL_FIELD(R, block, u16(pid::kEffectBlockIndex, kBlock))
 
+// A time member in microseconds as two wire fields: PID's milliseconds and feel's
+// microseconds below the millisecond. decode() sets the milliseconds first.
+#define TIME_MS(R, member, name, usage)                                                   \
+    FEEL_MAPPED(R, name, u16(usage, kTimeMs).in(FieldUnit::milliseconds),               \
+                [](const R& r, int) noexcept -> int64_t { return time_ms(r.member); },  \
+                [](R& r, int, int64_t v) noexcept {                                     \
+                    r.member = static_cast<uint32_t>(v * 1000);                         \
+                    return true;                                                        \
+                })
+#define TIME_FINE(R, member, name, usage)                                                 \
+    FEEL_MAPPED(R, name, u16(usage, kSubMillisecondUs).in(FieldUnit::microseconds),     \
+                [](const R& r, int) noexcept -> int64_t { return r.member % 1000; },    \
+                [](R& r, int, int64_t v) noexcept {                                     \
+                    r.member += static_cast<uint32_t>(v);                               \
+                    return true;                                                        \
+                })
+
+// A time's milliseconds; past 65 s a value out of range, so that encode() refuses it.
+constexpr int64_t time_ms(uint32_t us) noexcept {
+    return us > kMaxTimeUs ? kTimeMs.max + 1 : static_cast<int64_t>(us / 1000);
+}
+
+// Duration may be infinite: PID's null (0xFFFF), whose fine part is 0. (Linux's evdev
+// says "infinite" with 0 and hid-pidff forwards it unchanged: 0 ms with 0 µs decodes as
+// duration_us 0, which the device reads as infinite; report_translation.cpp.)
+constexpr int64_t duration_ms(const SetEffectReport& r, int) noexcept {
+    return r.duration_us == kWireInfinite ? 0xFFFF : time_ms(r.duration_us);
+}
+constexpr bool set_duration_ms(SetEffectReport& r, int, int64_t v) noexcept {
+    r.duration_us = v == 0xFFFF ? kWireInfinite : static_cast<uint32_t>(v * 1000);
+    return true;
+}
+constexpr int64_t duration_fine(const SetEffectReport& r, int) noexcept {
+    return r.duration_us == kWireInfinite ? 0 : r.duration_us % 1000;
+}
+constexpr bool set_duration_fine(SetEffectReport& r, int, int64_t v) noexcept {
+    if (r.duration_us == kWireInfinite) return v == 0;
+    r.duration_us += static_cast<uint32_t>(v);
+    return true;
+}
+
+// Direction Enable (PID 0x56) says the effect has a direction; direction_form (vendor)
+// says which: 0 polar (or none given: what a standard host means), 1 cartesian,
+// 2 spherical, 3 moments. The form is read only when Direction Enable is 1.
+constexpr bool has_angles(DirectionKind k) noexcept {
+    return k == DirectionKind::polar || k == DirectionKind::spherical;
+}
+constexpr bool has_vector(DirectionKind k) noexcept {
+    return k == DirectionKind::cartesian || k == DirectionKind::moments;
+}
+constexpr int64_t direction_enable(const SetEffectReport& r, int) noexcept {
+    return r.direction_kind == DirectionKind::none ? 0 : 1;
+}
+constexpr bool set_direction_enable(SetEffectReport& r, int, int64_t v) noexcept {
+    r.direction_kind = v != 0 ? DirectionKind::polar : DirectionKind::none;
+    return true;
+}
+constexpr int64_t direction_form(const SetEffectReport& r, int) noexcept {
+    return r.direction_kind == DirectionKind::none ? 0 : static_cast<int64_t>(r.direction_kind) - 1;
+}
+constexpr bool set_direction_form(SetEffectReport& r, int, int64_t v) noexcept {
+    if (r.direction_kind == DirectionKind::none) return v == 0;
+    r.direction_kind = static_cast<DirectionKind>(v + 1);
+    return true;
+}
+constexpr int64_t direction_angle(const SetEffectReport& r, int i) noexcept {
+    if (r.direction_kind == DirectionKind::polar && i > 0) return 0;
+    return has_angles(r.direction_kind) ? r.direction[i] : 0;
+}
+// Slots the form does not use must be 0 (decode loses nothing). An angle of 36000 (360°,
+// hid-pidff's rescale of evdev's 0xFFFF) is kept; the device reads it as 0.
+constexpr bool set_direction_angle(SetEffectReport& r, int i, int64_t v) noexcept {
+    if (r.direction_kind == DirectionKind::polar && i > 0) return v == 0;
+    if (!has_angles(r.direction_kind)) return v == 0;
+    r.direction[i] = static_cast<int32_t>(v);
+    return true;
+}
+constexpr int64_t direction_vector(const SetEffectReport& r, int i) noexcept {
+    return has_vector(r.direction_kind) ? r.direction[i] : 0;
+}
+constexpr bool set_direction_vector(SetEffectReport& r, int i, int64_t v) noexcept {
+    if (!has_vector(r.direction_kind)) return v == 0;
+    r.direction[i] = static_cast<int32_t>(v);
+    return true;
+}
+
+
 constexpr FieldSpec kSetEffect[] = {
     SEQUENCE(SetEffectReport),
     BLOCK(SetEffectReport),
-    FEEL_FIELD(SetEffectReport, type,
-               u8(0, kEffectTypeRange).selects(pid::kEffectType, kEffectTypeUsages)),
-    FEEL_FIELD(SetEffectReport, duration_us,
-               u32(pid::kDuration, range::kDurationUs).in(FieldUnit::microseconds).or_infinite()),
-    FEEL_FIELD(SetEffectReport, start_delay_us,
-               u32(pid::kStartDelay, range::kDelayUs).in(FieldUnit::microseconds)),
-    FEEL_FIELD(SetEffectReport, trigger_repeat_interval_us,
-               u32(pid::kTriggerRepeatInterval, range::kRepeatIntervalUs).in(FieldUnit::microseconds)),
+    FEEL_MAPPED(SetEffectReport, "type",
+                u8(0, kEffectTypeIndex).selects(pid::kEffectType, kEffectTypeUsages),
+                [](const SetEffectReport& r, int) noexcept -> int64_t { return static_cast<int64_t>(r.type) + 1; },
+                [](SetEffectReport& r, int, int64_t v) noexcept {
+                    r.type = static_cast<EffectType>(v - 1);
+                    return true;
+                }),
+    FEEL_MAPPED(SetEffectReport, "duration_ms",
+                u16(pid::kDuration, kTimeMs).in(FieldUnit::milliseconds).or_infinite(),
+                duration_ms, set_duration_ms),
+    FEEL_MAPPED(SetEffectReport, "duration_fine_us",
+                u16(vendor::kDurationFine, kSubMillisecondUs)
+                    .in(FieldUnit::microseconds)
+                    .refusing("must be 0 when the duration is infinite"),
+                duration_fine, set_duration_fine),
+    TIME_MS(SetEffectReport, trigger_repeat_interval_us, "trigger_repeat_interval_ms",
+            pid::kTriggerRepeatInterval),
+    TIME_FINE(SetEffectReport, trigger_repeat_interval_us, "trigger_repeat_interval_fine_us",
+              vendor::kRepeatIntervalFine),
+    TIME_MS(SetEffectReport, start_delay_us, "start_delay_ms", pid::kStartDelay),
+    TIME_FINE(SetEffectReport, start_delay_us, "start_delay_fine_us", vendor::kStartDelayFine),
     FEEL_FIELD(SetEffectReport, gain, u16(pid::kGain, range::kGain)),
-    FEEL_FIELD(SetEffectReport, iterations, u8(vendor::kIterations, range::kIterations)),
+    FEEL_FIELD(SetEffectReport, trigger_index, u16(pid::kTriggerButton, kTriggerButtonOrNone)),
     FEEL_FIELD(SetEffectReport, trigger_kind, u8(vendor::kTriggerKind, kTriggerKind)),
-    FEEL_FIELD(SetEffectReport, trigger_index, u8(pid::kTriggerButton, kTriggerIndex)),
-    FEEL_FIELD(SetEffectReport, axis_count, u8(pid::kAxesEnable, range::kAxisCount)),
+    FEEL_MAPPED(SetEffectReport, "direction_enable", flag(pid::kDirectionEnable), direction_enable,
+                set_direction_enable),
+    FEEL_MAPPED(SetEffectReport, "direction_form",
+                u8(vendor::kDirectionKind, kDirectionForm).refusing("must be 0 when Direction Enable is 0"),
+                direction_form, set_direction_form),
+    FEEL_MAPPED(SetEffectReport, "direction_angle[i]",
+                u16(0, kDirectionAngle)
+                    .times(2)
+                    .usages(kDirectionOrdinals)
+                    .wrapped_in(pid::kDirection)
+                    .in(FieldUnit::centidegrees)
+                    .refusing("must be 0: the direction's form does not use this angle"),
+                direction_angle, set_direction_angle),
+    FEEL_MAPPED(SetEffectReport, "direction_vector[i]",
+                i16(vendor::kDirectionVector, range::kCartesianComponent)
+                    .times(3)
+                    .refusing("must be 0: only cartesian and moment directions have a vector"),
+                direction_vector, set_direction_vector),
+    // 1..255 or kLoopInfinite; 0 is "not given" (a standard host never writes feel's vendor
+    // fields): the device plays it once, as a PID effect plays once per start.
+    FEEL_FIELD(SetEffectReport, iterations, u16(vendor::kIterations, kLoopCount).or_infinite()),
+    FEEL_FIELD(SetEffectReport, axis_count, u8(vendor::kAxisCount, kAxisCountOrDefault)),
     FEEL_FIELD(SetEffectReport, axes[i], u8(vendor::kEffectAxis, kAxisIndex).times(kMaxAxes)),
-    FEEL_FIELD(SetEffectReport, direction_kind, u8(vendor::kDirectionKind, kDirectionKind)),
-    FEEL_FIELD(SetEffectReport, direction[i], i32(pid::kDirection, kDirectionValue).times(3)),
-    FEEL_FIELD(SetEffectReport, has_envelope, flag(vendor::kHasEnvelope)),
+    FEEL_MAPPED(SetEffectReport, "no_envelope", flag(vendor::kNoEnvelope),
+                [](const SetEffectReport& r, int) noexcept -> int64_t { return r.has_envelope ? 0 : 1; },
+                [](SetEffectReport& r, int, int64_t v) noexcept {
+                    r.has_envelope = v == 0;
+                    return true;
+                }),
 };
 
 constexpr FieldSpec kSetEnvelope[] = {
     SEQUENCE(SetEnvelopeReport),
     BLOCK(SetEnvelopeReport),
     FEEL_FIELD(SetEnvelopeReport, impulse_level, u16(pid::kAttackLevel, range::kLevel)),
-    FEEL_FIELD(SetEnvelopeReport, settle_time_us,
-               u32(pid::kAttackTime, range::kDelayUs).in(FieldUnit::microseconds)),
+    TIME_MS(SetEnvelopeReport, settle_time_us, "settle_time_ms", pid::kAttackTime),
+    TIME_FINE(SetEnvelopeReport, settle_time_us, "settle_time_fine_us", vendor::kAttackTimeFine),
     FEEL_FIELD(SetEnvelopeReport, fade_level, u16(pid::kFadeLevel, range::kLevel)),
-    FEEL_FIELD(SetEnvelopeReport, fade_time_us,
-               u32(pid::kFadeTime, range::kDelayUs).in(FieldUnit::microseconds)),
+    TIME_MS(SetEnvelopeReport, fade_time_us, "fade_time_ms", pid::kFadeTime),
+    TIME_FINE(SetEnvelopeReport, fade_time_us, "fade_time_fine_us", vendor::kFadeTimeFine),
 };
 
 constexpr FieldSpec kSetCondition[] = {
@@ -84,9 +221,11 @@ constexpr FieldSpec kSetPeriodic[] = {
     BLOCK(SetPeriodicReport),
     FEEL_FIELD(SetPeriodicReport, magnitude, i16(pid::kMagnitude, range::kSignedLevel)),
     FEEL_FIELD(SetPeriodicReport, offset, i16(pid::kOffset, range::kSignedLevel)),
-    FEEL_FIELD(SetPeriodicReport, phase, u16(pid::kPhase, range::kAngle).in(FieldUnit::centidegrees)),
-    FEEL_FIELD(SetPeriodicReport, period_us,
-               u32(pid::kPeriod, range::kPeriodUs).in(FieldUnit::microseconds)),
+    // 0..36000 like Direction (hid-pidff rescales evdev's 0..0xFFFF phase to it); the
+    // device reads 36000 (360°) as 0.
+    FEEL_FIELD(SetPeriodicReport, phase, u16(pid::kPhase, kDirectionAngle).in(FieldUnit::centidegrees)),
+    TIME_MS(SetPeriodicReport, period_us, "period_ms", pid::kPeriod),
+    TIME_FINE(SetPeriodicReport, period_us, "period_fine_us", vendor::kPeriodFine),
 };
 
 constexpr FieldSpec kSetConstantForce[] = {
@@ -132,7 +271,7 @@ constexpr FieldSpec kEffectOperation[] = {
     BLOCK(EffectOperationReport),
     FEEL_FIELD(EffectOperationReport, operation,
                u8(0, Range{1, 3}).selects(pid::kEffectOperation, kOperationUsages)),
-    FEEL_FIELD(EffectOperationReport, loop_count, u8(pid::kLoopCount, kAnyU8)),
+    FEEL_FIELD(EffectOperationReport, loop_count, u16(pid::kLoopCount, kLoopCount).or_infinite()),
 };
 
 constexpr FieldSpec kBlockFree[] = {
@@ -140,10 +279,12 @@ constexpr FieldSpec kBlockFree[] = {
     BLOCK(BlockFreeReport),
 };
 
+// The list first: hid-pidff finds this report by its first field's Logical collection,
+// which must be PID Device Control (0x96), not the report's 0x95.
 constexpr FieldSpec kDeviceControl[] = {
-    SEQUENCE(DeviceControlReport),
     FEEL_FIELD(DeviceControlReport, control,
                u8(0, Range{1, 6}).selects(pid::kPidDeviceControl, kDeviceControlUsages)),
+    SEQUENCE(DeviceControlReport),
 };
 
 constexpr FieldSpec kDeviceGain[] = {
@@ -153,6 +294,8 @@ constexpr FieldSpec kDeviceGain[] = {
 
 #undef SEQUENCE
 #undef BLOCK
+#undef TIME_MS
+#undef TIME_FINE
 
 constexpr ReportKind kOut = ReportKind::output;
 

@@ -62,6 +62,7 @@
 #include <thread>
 #include <vector>
 
+#include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/codec.hpp"
 #include "feel/protocol/report_text.hpp"
 #include "feel/usb/usb_device.hpp"
@@ -310,8 +311,9 @@ struct FunctionFsServer::Impl {
 
     Impl(peripheral::Peripheral& d, std::string directory, std::ostream* log_out)
         : device(d), dir(std::move(directory)), log(log_out) {
-        const auto bytes = protocol::report_descriptor();
-        report_descriptor.assign(bytes.begin(), bytes.end());
+        // The device's own descriptor (its profile's axes, buttons and hats), the same bytes
+        // its session answers get_descriptor with.
+        report_descriptor = protocol::report_descriptor(peripheral::joystick_layout(device.capabilities()));
     }
 
     int open_file(const std::string& name, int flags) const {

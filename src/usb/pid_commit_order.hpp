@@ -38,7 +38,7 @@ namespace feel::usb::detail {
 class PidCommitOrder {
 public:
     using Clock = std::chrono::steady_clock;
-    static constexpr std::chrono::milliseconds kSettle{50};
+    static constexpr std::chrono::milliseconds kSettle{500};  // long: under TCG an upload's reports come 100+ ms apart
 
     // A frame from the host: returns the frames to hand the session, in order.
     [[nodiscard]] std::vector<transport::Frame> on_frame(transport::Frame frame, Clock::time_point now);

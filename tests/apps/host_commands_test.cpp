@@ -127,9 +127,9 @@ TEST_F(HostCommands, PlayErrorsNameTheProblem) {
                        {"--seconds", "0 < value <= 3600"});
     expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--seconds", "nan"}), "feel play", {"--seconds"});
     expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--iterations", "0"}), "feel play",
-                       {"--iterations", "1..254"});
-    expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--iterations", "255"}), "feel play",
-                       {"--iterations", "1..254"});
+                       {"--iterations", "1..255"});
+    expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--iterations", "256"}), "feel play",
+                       {"--iterations", "1..255"});
     expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--iterations", "lots"}), "feel play",
                        {"--iterations", "infinite"});
     expect_usage_error(run_cli({"play", file, "--sensation", "hum", "--device", "tcp:localhost"}), "feel play",

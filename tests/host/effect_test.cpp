@@ -113,7 +113,11 @@ TEST(HostEffects, IterationsPlayTheEffectThatManyTimes) {
 
     const Status bad = e->start(300);
     EXPECT_EQ(bad.kind, ErrorKind::invalid_parameter);
-    EXPECT_NE(bad.message.find("iterations = 300 is out of range (allowed 1..254)"), std::string::npos) << bad.message;
+    EXPECT_NE(bad.message.find("iterations = 300 is out of range (allowed 1..255)"), std::string::npos) << bad.message;
+    // 255 finite iterations travel on a feel device (its Loop Count is 16 bits).
+    ASSERT_TRUE(e->start(255).ok());
+    EXPECT_EQ(e->status()->iterations, 255);
+    ASSERT_TRUE(e->stop().ok());
 }
 
 TEST(HostEffects, SoloStopsEveryOtherEffect) {
@@ -250,10 +254,13 @@ TEST(HostEffects, HostChecksNameTheFieldAndTheRange) {
         << e.status().message;
 
     EffectParams loops = constant_x(1000, 100'000);
-    loops.iterations = 255;  // PID's "infinite" on the wire
+    loops.iterations = 255;  // finite: a feel device's iterations are 16 bits, 0xFFFF infinite
+    e = dev.create_effect(loops);
+    ASSERT_TRUE(e) << e.status().message;
+    loops.iterations = 256;
     e = dev.create_effect(loops);
     ASSERT_FALSE(e);
-    EXPECT_NE(e.status().message.find("iterations = 255 is out of range (allowed 1..254)"), std::string::npos)
+    EXPECT_NE(e.status().message.find("iterations = 256 is out of range (allowed 1..255)"), std::string::npos)
         << e.status().message;
 
     EXPECT_EQ(dev.set_gain(10001).message, "set_gain: gain = 10001 is out of range (allowed 0..10000)");

@@ -145,10 +145,14 @@ cp "$out/console-$first.log" "$out/console.log"
 cp "$out/device-$first.log" "$out/device.log"
 
 status=0
+passed=0 failed=0
 for speed in $speeds; do
     "$checker" --speed $speed --console "$out/console-$speed.log" --device-log "$out/device-$speed.log" \
         --fftest "$out/fftest-$speed.spy" --testhaptic "$out/testhaptic-$speed.spy" \
-        --probe "$out/probe-$speed.log" || status=1
+        --probe "$out/probe-$speed.log" | tee "$out/check-$speed.txt" || status=1
+    read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-$speed.txt" | tail -1) || true
+    passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 done
 say "done in $(seconds_since "$started") s (console: $out/console.log, device log: $out/device.log)"
+echo "linux: $passed passed, $failed failed"
 exit $status

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "feel/protocol/descriptor_parser.hpp"
 #include "session_rig.hpp"
 #include "support/valid_effects.hpp"
 
@@ -118,10 +119,12 @@ TEST(EffectTransaction, LoopCountMapsToIterations) {
     e.duration_us = 50'000;
     e.iterations = 2;
     rig.ok(e);
-    // 0: the effect's own count (2); 5: five; 255: infinite (the wire's 255).
+    // 0: the effect's own count (2); 5: five; 255: 255 times (the 16-bit loop count of a
+    // feel device); 0xFFFF, the field's null: infinite.
     EXPECT_EQ(rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 0)).iterations, 2);
     EXPECT_EQ(rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 5)).iterations, 5);
     EXPECT_EQ(rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 255)).iterations, 255);
+    EXPECT_EQ(rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 0xFFFF)).iterations, 0xFFFF);
 }
 
 TEST(EffectTransaction, StartSoloStopsTheOthers) {
@@ -132,8 +135,8 @@ TEST(EffectTransaction, StartSoloStopsTheOthers) {
         rig.ok(periodic(rig.next_sequence(), b, 2000, 10'000));
         rig.ok(set_effect(rig.next_sequence(), b, EffectType::sine));
     }
-    rig.ok(operation(rig.next_sequence(), blocks[0], EffectOperation::start, 255));
-    rig.ok(operation(rig.next_sequence(), blocks[1], EffectOperation::start_solo, 255));
+    rig.ok(operation(rig.next_sequence(), blocks[0], EffectOperation::start, protocol::kLoopInfinite));
+    rig.ok(operation(rig.next_sequence(), blocks[1], EffectOperation::start_solo, protocol::kLoopInfinite));
     rig.run(3);
     EXPECT_EQ(rig.pipeline().engine().state(rig.session().block(blocks[0])->effect), EffectState::stopped);
     EXPECT_NE(rig.pipeline().engine().state(rig.session().block(blocks[1])->effect), EffectState::stopped);
@@ -144,7 +147,7 @@ TEST(EffectTransaction, PartialUpdateOfAPlayingSineKeepsItPlaying) {
     const uint16_t block = rig.create(EffectType::sine);
     rig.ok(periodic(rig.next_sequence(), block, 2000, 20'000));
     rig.ok(set_effect(rig.next_sequence(), block, EffectType::sine));
-    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 255));
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, protocol::kLoopInfinite));
     rig.run(30);
     const EffectId id = rig.session().block(block)->effect;
     const int64_t elapsed_before = rig.pipeline().engine().status(id).elapsed_us;
@@ -247,8 +250,21 @@ TEST(EffectTransaction, FeatureGetsAndDescriptor) {
     rig.offer(Frame{FrameKind::get_descriptor, {}});
     rig.run(1);
     ASSERT_EQ(rig.descriptors.size(), 1u);
-    const auto d = protocol::report_descriptor();
-    EXPECT_EQ(rig.descriptors[0], std::vector<uint8_t>(d.begin(), d.end()));
+    // The device's own descriptor: its profile's inputs only (iforce1: X and Y, 4 buttons,
+    // 2 hats, read with the independent parser), the PID and vendor reports as always.
+    const protocol::hid::DescriptorParse parse = protocol::hid::parse_report_descriptor(rig.descriptors[0]);
+    ASSERT_TRUE(parse.ok()) << parse.error;
+    const protocol::hid::DescriptorReport* joy = parse.descriptor.find(
+        protocol::hid::MainItemKind::input, static_cast<uint8_t>(ReportId::joystick_input));
+    ASSERT_NE(joy, nullptr);
+    std::vector<uint32_t> inputs;
+    for (const protocol::hid::DescriptorField& f : joy->fields) {
+        for (uint32_t k = 0; !f.is_constant() && k < f.report_count; ++k) inputs.push_back(f.usage_of(k));
+    }
+    EXPECT_EQ(inputs, (std::vector<uint32_t>{0x00010030u, 0x00010031u, 0x00090001u, 0x00090002u, 0x00090003u,
+                                             0x00090004u, 0x00010039u, 0x00010039u}));
+    const protocol::hid::DescriptorParse full = protocol::hid::parse_report_descriptor(protocol::report_descriptor());
+    EXPECT_EQ(parse.descriptor.reports.size(), full.descriptor.reports.size());
 
     // The report rate the host sets is the one Device Info reports.
     protocol::ReportRateReport rate;

@@ -88,7 +88,7 @@ std::vector<std::pair<std::string, std::vector<uint8_t>>> seeds() {
         e.direction_kind = DirectionKind::polar;
         e.direction[0] = 9000;
         e.axis_count = 2;
-        s.out(e).out(operation(5, 1, EffectOperation::start, 255)).ticks(30);
+        s.out(e).out(operation(5, 1, EffectOperation::start, protocol::kLoopInfinite)).ticks(30);
         s.out(periodic(6, 1, 6000, 20'000)).out(set_effect(7, 1, EffectType::sine));
         protocol::DeviceGainReport g;
         g.sequence = 8;

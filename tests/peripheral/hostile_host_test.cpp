@@ -41,7 +41,7 @@ protected:
         ASSERT_EQ(rig.create(EffectType::sine), 1);
         rig.ok(periodic(rig.next_sequence(), 1, 2500, 20'000));
         rig.ok(set_effect(rig.next_sequence(), 1, EffectType::sine));
-        rig.ok(operation(rig.next_sequence(), 1, EffectOperation::start, 255));
+        rig.ok(operation(rig.next_sequence(), 1, EffectOperation::start, protocol::kLoopInfinite));
         ASSERT_EQ(rig.create(EffectType::spring), 2);
         rig.ok(spring_axis(rig.next_sequence(), 2, 0, 1500));
         ASSERT_EQ(rig.create(EffectType::force_profile, 64), 3);
@@ -422,7 +422,7 @@ TEST(DeviceLimits, HostGoneResetsTheDevice) {
     const uint16_t b = rig.create(EffectType::sine);
     rig.ok(periodic(rig.next_sequence(), b, 1000, 10'000));
     rig.ok(set_effect(rig.next_sequence(), b, EffectType::sine));
-    rig.ok(operation(rig.next_sequence(), b, EffectOperation::start, 255));
+    rig.ok(operation(rig.next_sequence(), b, EffectOperation::start, protocol::kLoopInfinite));
     protocol::DeviceGainReport g;
     g.sequence = rig.next_sequence();
     g.gain = 2000;

@@ -164,6 +164,20 @@ private:
             descriptors.push_back(std::move(f.payload));
             return;
         }
+        if (f.kind == FrameKind::input_report && !f.payload.empty() &&
+            f.payload[0] == static_cast<uint8_t>(protocol::ReportId::joystick_input)) {
+            // The device's own layout: the profile's axes, buttons and hats.
+            protocol::JoystickLayout layout;
+            layout.axis_count = static_cast<uint8_t>(profile_->axis_count);
+            for (int a = 0; a < profile_->axis_count; ++a) layout.axes[a] = profile_->axes[a].axis;
+            layout.button_count = static_cast<uint8_t>(profile_->button_count);
+            layout.hat_count = static_cast<uint8_t>(profile_->hat_count);
+            protocol::JoystickInputReport j;
+            const Error e = protocol::decode(f.payload, layout, j);
+            ASSERT_TRUE(e.ok()) << "the device sent a joystick input that does not decode: " << e.message();
+            joystick.push_back(j);
+            return;
+        }
         protocol::AnyReport r;
         const Error e = protocol::decode(f.payload, r);
         ASSERT_TRUE(e.ok()) << "the device sent a report that does not decode: " << e.message();
@@ -220,7 +234,7 @@ inline protocol::SetPeriodicReport periodic(uint32_t sequence, uint16_t block, i
 }
 
 inline protocol::EffectOperationReport operation(uint32_t sequence, uint16_t block, protocol::EffectOperation op,
-                                                 uint8_t loop_count = protocol::kLoopEffectOwn) {
+                                                 uint16_t loop_count = protocol::kLoopEffectOwn) {
     protocol::EffectOperationReport r;
     r.sequence = sequence;
     r.block = block;

@@ -68,6 +68,14 @@ RC_GTEST_PROP(DecodeProperty, InRangeValuesAreAccepted, ()) {
             int64_t v = *rc::gen::inRange<int64_t>(f.logical_min, f.logical_max + 1);
             // Command Status names a report that exists: keep the sample's id for it.
             if (bytes[0] == static_cast<uint8_t>(ReportId::command_status) && f.bit_offset == 32) continue;
+            // Fields bound by a rule between fields keep the sample's values: Set Effect's
+            // Direction Enable (PID 0x56), its Ordinal angles (page 0x0A), feel's direction
+            // form and vector (vendor 0x113, 0x115), a feel hat (north or centred, GD 0x39).
+            const uint32_t u = f.usage_of(0);
+            if (u == 0x000F0056u || (u >> 16) == 0x000Au || u == 0xFF000113u || u == 0xFF000115u ||
+                u == 0x00010039u) {
+                continue;
+            }
             const std::size_t offset = 8 + f.bit_offset + i * f.report_size;
             for (uint32_t k = 0; k < f.report_size; ++k) {
                 const std::size_t at = offset + k;

@@ -109,7 +109,10 @@ TEST(DecodeRejects, EveryFieldOnePastTheDescriptorsRange) {
                     std::vector<uint8_t> bytes = valid;
                     poke(bytes, offset, f.report_size, static_cast<uint64_t>(v));
                     const Error e = decode_bytes(bytes);
-                    EXPECT_TRUE(e.ok()) << v << ": " << e.message();
+                    // In range is never a range error; a rule between fields may still
+                    // refuse it (a direction slot its form does not use must be 0, a
+                    // feel hat is north or centred).
+                    EXPECT_TRUE(e.ok() || (!e.has_range && e.rule[0] != '\0')) << v << ": " << e.message();
                 }
                 for (int64_t v : {f.logical_min - 1, f.logical_max + 1}) {
                     if (!fits(v, f.report_size, is_signed)) continue;
@@ -117,8 +120,9 @@ TEST(DecodeRejects, EveryFieldOnePastTheDescriptorsRange) {
                     poke(bytes, offset, f.report_size, static_cast<uint64_t>(v));
                     const Error e = decode_bytes(bytes);
                     const bool all_ones = !is_signed && v == (int64_t{1} << f.report_size) - 1;
-                    if (f.has_null_state() && all_ones) {
-                        EXPECT_TRUE(e.ok()) << "the null value (infinite) is accepted";
+                    // feel's null values: all ones (infinite) or 0 (Block Load's "no block").
+                    if (f.has_null_state() && (all_ones || v == 0)) {
+                        EXPECT_TRUE(e.ok()) << "the null value (infinite, or no block) is accepted";
                         continue;
                     }
                     ++refused;
@@ -146,7 +150,8 @@ Error decode_with(Report report, std::size_t byte, uint8_t value) {
 
 TEST(DecodeRejects, GainOnePastFullScaleNamesTheFieldAndRange) {
     std::vector<uint8_t> bytes = encode(valid_effect());
-    // id(1) sequence(4) block(2) type(1) duration(4) delay(4) repeat(4): gain at byte 20.
+    // id(1) sequence(4) block(2) type(1), three times as milliseconds(2) and the
+    // microseconds below them(2): gain at byte 20.
     bytes[20] = 10001 & 0xFF;
     bytes[21] = 10001 >> 8;
     const Error e = decode_bytes(bytes);
@@ -172,25 +177,29 @@ TEST(DecodeRejects, ArrayElementsAreNamedWithTheirIndex) {
 }
 
 TEST(DecodeRejects, InvalidEnumValues) {
-    // Effect Type 33 names no type: set_effect.type (byte 7), create_new_effect.type (byte 5).
-    Error e = decode_with(valid_effect(), 7, kEffectTypeCount);
+    // Effect Type is a 1-based list of 33: 0 and 34 name no type (set_effect.type at byte 7,
+    // create_new_effect.type at byte 5).
+    Error e = decode_with(valid_effect(), 7, kEffectTypeCount + 1);
     EXPECT_STREQ(e.field, "set_effect.type");
-    EXPECT_EQ(e.allowed.max, kEffectTypeCount - 1);
+    EXPECT_EQ(e.allowed.min, 1);
+    EXPECT_EQ(e.allowed.max, kEffectTypeCount);
+    EXPECT_STREQ(decode_with(valid_effect(), 7, 0).field, "set_effect.type");
     e = decode_with(CreateNewEffectReport{}, 5, 0xFF);
     EXPECT_STREQ(e.field, "create_new_effect.type");
-    // Effect Operation 0 and 4 (byte 7), Device Control 0 and 7 (byte 5).
+    // Effect Operation 0 and 4 (byte 7), Device Control 0 and 7 (byte 1: its list comes first).
     EXPECT_STREQ(decode_with(EffectOperationReport{}, 7, 0).field, "effect_operation.operation");
     EXPECT_STREQ(decode_with(EffectOperationReport{}, 7, 4).field, "effect_operation.operation");
-    EXPECT_STREQ(decode_with(DeviceControlReport{}, 5, 0).field, "device_control.control");
-    EXPECT_STREQ(decode_with(DeviceControlReport{}, 5, 7).field, "device_control.control");
+    EXPECT_STREQ(decode_with(DeviceControlReport{}, 1, 0).field, "device_control.control");
+    EXPECT_STREQ(decode_with(DeviceControlReport{}, 1, 7).field, "device_control.control");
     // Block Load status 0 and 4 (byte 3).
     EXPECT_STREQ(decode_with(BlockLoadReport{}, 3, 0).field, "block_load.status");
     EXPECT_STREQ(decode_with(BlockLoadReport{}, 3, 4).field, "block_load.status");
-    // id(1) seq(4) block(2) type(1) 3 x time(12) gain(2) iterations trigger_kind(23)
-    // trigger_index axis_count axes[0..5](26..31) direction_kind(32).
-    EXPECT_STREQ(decode_with(valid_effect(), 32, 5).field, "set_effect.direction_kind");
-    EXPECT_STREQ(decode_with(valid_effect(), 23, 3).field, "set_effect.trigger_kind");
-    EXPECT_STREQ(decode_with(valid_effect(), 27, 6).field, "set_effect.axes[1]");
+    // id(1) seq(4) block(2) type(1) 3 x time(12) gain(2) trigger_button(2) trigger_kind(24)
+    // direction_enable(25) direction_form(26) angles(4) vector(6) iterations(2)
+    // axis_count(39) axes[0..5](40..45).
+    EXPECT_STREQ(decode_with(valid_effect(), 26, 4).field, "set_effect.direction_form");
+    EXPECT_STREQ(decode_with(valid_effect(), 24, 3).field, "set_effect.trigger_kind");
+    EXPECT_STREQ(decode_with(valid_effect(), 41, 6).field, "set_effect.axes[1]");
     // A bool that is neither 0 nor 1.
     EXPECT_STREQ(decode_with(ReflexReport{}, 7, 2).field, "reflex.assign");
     // Command Status naming a report id that does not exist: inside 0x01..0x44 but a hole.
@@ -213,6 +222,35 @@ TEST(DecodeAccepts, CommandStatusForAFrameThatNamedNoReport) {
     EXPECT_EQ(std::get<CommandStatusReport>(back), status);
 }
 
+TEST(DecodeRejects, FieldsThatContradictAnEarlierField) {
+    // Decode loses nothing, so a value that an earlier field makes meaningless is refused
+    // with a rule rather than dropped. Set Effect: byte 25 Direction Enable, 26 form,
+    // 27..30 the Ordinal angles, 31..36 the vector; 8..9 Duration ms, 10..11 its µs.
+    SetEffectReport polar = valid_effect();
+    polar.direction_kind = DirectionKind::polar;
+    polar.direction[0] = 9000;
+    polar.direction[1] = polar.direction[2] = 0;
+    Error e = decode_with(polar, 31, 1);  // a vector component on a polar direction
+    EXPECT_STREQ(e.field, "set_effect.direction_vector[0]");
+    EXPECT_FALSE(e.has_range);
+    EXPECT_STREQ(e.rule, "must be 0: only cartesian and moment directions have a vector");
+    EXPECT_STREQ(decode_with(polar, 29, 1).field, "set_effect.direction_angle[1]");  // polar has one angle
+    SetEffectReport none = polar;
+    none.direction_kind = DirectionKind::none;
+    none.direction[0] = 0;
+    EXPECT_STREQ(decode_with(none, 26, 2).field, "set_effect.direction_form");
+    SetEffectReport endless = polar;
+    endless.duration_us = kWireInfinite;
+    EXPECT_STREQ(decode_with(endless, 10, 5).field, "set_effect.duration_fine_us");
+    // A feel hat is north (0) or centred (15): hat 1 is byte 17's low nibble.
+    JoystickInputReport joy;
+    std::vector<uint8_t> bytes = encode(joy);
+    bytes[17] = static_cast<uint8_t>((bytes[17] & 0xF0) | 3);
+    e = decode_bytes(bytes);
+    EXPECT_STREQ(e.field, "joystick_input.hats[0]");
+    EXPECT_FALSE(e.has_range);
+}
+
 TEST(EncodeRejects, OutOfRangeValuesThrowNamingFieldAndRange) {
     SetEffectReport effect = valid_effect();
     effect.gain = 10001;
@@ -225,12 +263,13 @@ TEST(EncodeRejects, OutOfRangeValuesThrowNamingFieldAndRange) {
             << e.what();
     }
     effect = valid_effect();
-    effect.duration_us = 0;
-    EXPECT_THROW((void)encode(effect), std::invalid_argument);
     effect.duration_us = 65'000'001;
     EXPECT_THROW((void)encode(effect), std::invalid_argument);
     effect.duration_us = kWireInfinite;
     EXPECT_NO_THROW((void)encode(effect));
+    effect.start_delay_us = 65'000'001;  // every time, not only the duration
+    EXPECT_THROW((void)encode(effect), std::invalid_argument);
+    effect.start_delay_us = 0;
     effect.type = static_cast<EffectType>(kEffectTypeCount);
     EXPECT_THROW((void)encode(effect), std::invalid_argument);
 

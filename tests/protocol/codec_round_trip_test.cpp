@@ -58,27 +58,67 @@ TEST(CodecLayout, JoystickButtonsArePackedBitsAfterTheAxes) {
     JoystickInputReport joy;
     joy.position[0] = -1;  // 0xFFFF
     joy.buttons = 0x00000101u;  // buttons 1 and 9
-    joy.hats = 0x05;
+    joy.hats = 0x05;  // hats 1 and 3 pushed
     const std::vector<uint8_t> bytes = encode(joy);
-    // id, 6 x int16, 32 one-bit buttons (4 bytes), hats byte.
-    ASSERT_EQ(bytes.size(), 1u + 12u + 4u + 1u);
+    // id, 6 x int16, 32 one-bit buttons (4 bytes), four 4-bit Hat Switches (HID: 0..7 a
+    // direction, anything else, here 15, centred); a pushed hat says north (0).
+    ASSERT_EQ(bytes.size(), 1u + 12u + 4u + 2u);
     EXPECT_EQ(bytes[1], 0xFF);
     EXPECT_EQ(bytes[2], 0xFF);
     EXPECT_EQ(bytes[13], 0x01);
     EXPECT_EQ(bytes[14], 0x01);
     EXPECT_EQ(bytes[15], 0x00);
     EXPECT_EQ(bytes[16], 0x00);
-    EXPECT_EQ(bytes[17], 0x05);
+    EXPECT_EQ(bytes[17], 0xF0);  // hat 1 north (low nibble), hat 2 centred
+    EXPECT_EQ(bytes[18], 0xF0);  // hat 3 north, hat 4 centred
 }
 
-TEST(CodecLayout, InfiniteDurationIsAllOnes) {
+TEST(CodecLayout, AProfilesJoystickCarriesOnlyItsInputs) {
+    JoystickLayout two_axes;  // x and y, 10 buttons, one hat
+    two_axes.axis_count = 2;
+    two_axes.button_count = 10;
+    two_axes.hat_count = 1;
+    JoystickInputReport joy;
+    joy.position[0] = 10000;
+    joy.position[1] = -10000;
+    joy.buttons = 0x201u;  // buttons 1 and 10
+    joy.hats = 0x01;
+    const std::vector<uint8_t> bytes = encode(joy, two_axes);
+    // id, 2 x int16, 10 bits of buttons + 6 bits of padding, a hat nibble + 4 bits padding.
+    ASSERT_EQ(bytes.size(), 1u + 4u + 2u + 1u);
+    EXPECT_EQ(joystick_input_size(two_axes), bytes.size());
+    EXPECT_EQ(bytes[1], 0x10);  // 10000 = 0x2710
+    EXPECT_EQ(bytes[2], 0x27);
+    EXPECT_EQ(bytes[3], 0xF0);  // -10000 = 0xD8F0
+    EXPECT_EQ(bytes[4], 0xD8);
+    EXPECT_EQ(bytes[5], 0x01);
+    EXPECT_EQ(bytes[6], 0x02);
+    EXPECT_EQ(bytes[7] & 0x0F, 0x00);  // hat 1 pushed: north
+    JoystickInputReport back;
+    ASSERT_TRUE(decode(bytes, two_axes, back).ok());
+    EXPECT_EQ(back, joy);
+    // A button beyond the layout does not travel.
+    joy.buttons |= 1u << 20;
+    EXPECT_EQ(encode(joy, two_axes), bytes);
+    // The full layout's decoder refuses the profile's shorter report.
+    AnyReport any;
+    EXPECT_STREQ(decode(bytes, any).field, "report.length");
+    // Bad layouts are refused by name.
+    JoystickLayout twice = two_axes;
+    twice.axes[1] = Axis::x;
+    EXPECT_STREQ(check_layout(twice).field, "joystick_layout.axes");
+    EXPECT_THROW((void)report_descriptor(twice), std::invalid_argument);
+}
+
+TEST(CodecLayout, InfiniteDurationIsPidsNull) {
     SetEffectReport effect;  // duration_us defaults to kWireInfinite
     const std::vector<uint8_t> bytes = encode(effect);
-    // id(1) sequence(4) block(2) type(1), then duration u32.
+    // id(1) sequence(4) block(2) type(1), then PID's Duration in milliseconds (u16, the
+    // null 0xFFFF for infinite) and the microseconds below them (0).
     EXPECT_EQ(bytes[8], 0xFF);
     EXPECT_EQ(bytes[9], 0xFF);
-    EXPECT_EQ(bytes[10], 0xFF);
-    EXPECT_EQ(bytes[11], 0xFF);
+    EXPECT_EQ(bytes[10], 0x00);
+    EXPECT_EQ(bytes[11], 0x00);
 }
 
 TEST(CodecInfo, KindsNamesAndSizes) {
@@ -97,7 +137,9 @@ TEST(CodecInfo, KindsNamesAndSizes) {
     EXPECT_EQ(report_size(0x0D), 1u + 4 + 2);            // Device Gain
     EXPECT_EQ(report_size(0x0B), 1u + 4 + 2);            // Block Free
     EXPECT_EQ(report_size(0x05), 1u + 4 + 2 + 2);        // Set Constant Force
-    EXPECT_EQ(report_size(0x08), 1u + 4 + 2 + 2 + 1 + 64);  // Custom Force Data
+    EXPECT_EQ(report_size(0x08), 1u + 4 + 2 + 2 + 1 + 48);  // Custom Force Data: 24 samples
+    EXPECT_EQ(report_size(0x0A), 1u + 4 + 2 + 1 + 2);    // Effect Operation: 16-bit Loop Count
+    EXPECT_EQ(report_size(0x0C), 1u + 1 + 4);            // Device Control: the list, then the sequence
     EXPECT_EQ(report_size(0x12), 1u + 2 + 1 + 4);        // Block Load
     std::size_t largest = 0;
     for (int id = 0; id < 256; ++id) largest = std::max(largest, report_size(static_cast<uint8_t>(id)));

@@ -29,7 +29,7 @@ constexpr uint32_t kPidSetEffectReport = pid(0x21), kPidEffectBlockIndex = pid(0
                    kPidParameterBlockOffset = pid(0x23), kPidEffectType = pid(0x25),
                    kPidDuration = pid(0x50), kPidSamplePeriod = pid(0x51), kPidGain = pid(0x52),
                    kPidTriggerButton = pid(0x53), kPidTriggerRepeatInterval = pid(0x54),
-                   kPidAxesEnable = pid(0x55), kPidDirection = pid(0x57),
+                   kPidDirectionEnable = pid(0x56), kPidDirection = pid(0x57),
                    kPidSetEnvelopeReport = pid(0x5A), kPidAttackLevel = pid(0x5B),
                    kPidAttackTime = pid(0x5C), kPidFadeLevel = pid(0x5D), kPidFadeTime = pid(0x5E),
                    kPidSetConditionReport = pid(0x5F), kPidCpOffset = pid(0x60),
@@ -94,6 +94,14 @@ const DescriptorField& field(const DescriptorReport& r, uint32_t usage) {
         if (!f.is_variable() && !f.collections.empty() && f.collections.back() == usage) return f;
     }
     throw std::runtime_error("no field with usage " + std::to_string(usage));
+}
+
+// The field inside the Logical collection `usage` (PID's Direction collection of Ordinals).
+const DescriptorField& wrapped_field(const DescriptorReport& r, uint32_t usage) {
+    for (const DescriptorField& f : r.fields) {
+        if (f.is_variable() && !f.collections.empty() && f.collections.back() == usage) return f;
+    }
+    throw std::runtime_error("no field in collection " + std::to_string(usage));
 }
 
 void expect_range(const DescriptorField& f, Range r) {
@@ -184,7 +192,8 @@ TEST(Descriptor, VendorReportsLiveOnTheVendorPage) {
         for (const DescriptorField& f : r.fields) {
             for (uint32_t u : f.usages) {
                 const uint32_t page = u >> 16;
-                EXPECT_TRUE(page == 0x01 || page == 0x09 || page == 0x0F || page == 0xFF00)
+                EXPECT_TRUE(page == 0x01 || page == 0x09 || page == 0x0A || page == 0x0F ||
+                            page == 0xFF00)
                     << "usage page " << page;
             }
         }
@@ -194,32 +203,49 @@ TEST(Descriptor, VendorReportsLiveOnTheVendorPage) {
 TEST(Descriptor, SetEffectFieldsUsePidUsagesAndFeelRanges) {
     const DescriptorReport& r = report(ReportId::set_effect);
     expect_range(field(r, kPidEffectBlockIndex), Range{1, 65535});
+    // PID's times are whole milliseconds (what Linux's hid-pidff writes): 0..65 s, feel's
+    // "0 to 65 million" microseconds (§6.3) in milliseconds.
+    const Range milliseconds{0, 65'000};
     const DescriptorField& duration = field(r, kPidDuration);
-    expect_range(duration, range::kDurationUs);
+    expect_range(duration, milliseconds);
     EXPECT_TRUE(duration.has_null_state()) << "infinite is the null value";
-    EXPECT_EQ(duration.report_size, 32u);
+    EXPECT_EQ(duration.report_size, 16u);
     EXPECT_EQ(duration.unit, kUnitSeconds);
-    EXPECT_EQ(duration.unit_exponent, -6);
-    expect_range(field(r, kPidStartDelay), range::kDelayUs);
-    EXPECT_EQ(field(r, kPidStartDelay).unit_exponent, -6);
-    expect_range(field(r, kPidTriggerRepeatInterval), range::kRepeatIntervalUs);
+    EXPECT_EQ(duration.unit_exponent, -3);
+    for (uint32_t u : {kPidStartDelay, kPidTriggerRepeatInterval}) {
+        expect_range(field(r, u), milliseconds);
+        EXPECT_EQ(field(r, u).unit, kUnitSeconds);
+        EXPECT_EQ(field(r, u).unit_exponent, -3);
+    }
     expect_range(field(r, kPidGain), range::kGain);
+    // Trigger Button is 16 bits: hid-pidff writes evdev's button code (BTN_TRIGGER is
+    // 0x120), which must arrive whole to be refused, not cut to a byte.
     expect_range(field(r, kPidTriggerButton), Range{0, range::kTriggerButton.max});
-    expect_range(field(r, kPidAxesEnable), range::kAxisCount);
-    const DescriptorField& direction = field(r, kPidDirection);
-    EXPECT_EQ(direction.report_count, 3u);
-    EXPECT_EQ(direction.logical_min, -kFullScale);
-    EXPECT_EQ(direction.logical_max, range::kAngle.max);
+    EXPECT_EQ(field(r, kPidTriggerButton).report_size, 16u);
+    expect_range(field(r, kPidDirectionEnable), Range{0, 1});
+    // PID 1.0: Direction is a Logical collection of Ordinals (page 0x0A), here two angles
+    // in degrees with exponent -2, 0..360°.
+    const DescriptorField& direction = wrapped_field(r, kPidDirection);
+    EXPECT_EQ(direction.usages, (std::vector<uint32_t>{0x000A0001u, 0x000A0002u}));
+    EXPECT_EQ(direction.report_count, 2u);
+    expect_range(direction, Range{0, 36000});
+    EXPECT_EQ(direction.unit, kUnitDegrees);
+    EXPECT_EQ(direction.unit_exponent, -2);
 }
 
 TEST(Descriptor, EffectTypeIsAPidNamedArrayOfEtUsages) {
     for (ReportId id : {ReportId::set_effect, ReportId::create_new_effect}) {
         const DescriptorField& type = field(report(id), kPidEffectType);
         EXPECT_FALSE(type.is_variable()) << "an Array item";
-        EXPECT_EQ(type.logical_min, 0);
-        EXPECT_EQ(type.logical_max, kEffectTypeCount - 1);
+        // HID: an Array's value v selects usage v - Logical Minimum; hid-pidff wants the
+        // minimum 1. feel sends EffectType t as t + 1.
+        EXPECT_EQ(type.logical_min, 1);
+        EXPECT_EQ(type.logical_max, kEffectTypeCount);
         ASSERT_EQ(type.usages.size(), static_cast<std::size_t>(kEffectTypeCount));
-        auto usage_of = [&](EffectType t) { return type.usages[static_cast<std::size_t>(t)]; };
+        auto usage_of = [&](EffectType t) {
+            const int64_t wire = static_cast<int64_t>(t) + 1;
+            return type.usages[static_cast<std::size_t>(wire - type.logical_min)];
+        };
         // PID 1.0 ET usages.
         EXPECT_EQ(usage_of(EffectType::constant), pid(0x26));
         EXPECT_EQ(usage_of(EffectType::ramp), pid(0x27));
@@ -249,7 +275,11 @@ TEST(Descriptor, OperationControlAndBlockLoadArraysSelectPidUsages) {
     EXPECT_EQ(op_usage(EffectOperation::start), pid(0x79));
     EXPECT_EQ(op_usage(EffectOperation::start_solo), pid(0x7A));
     EXPECT_EQ(op_usage(EffectOperation::stop), pid(0x7B));
-    expect_range(field(report(ReportId::effect_operation), kPidLoopCount), Range{0, 255});
+    // Loop Count: 16 bits on a feel device, 0..255 plus the null (0xFFFF) for infinite.
+    const DescriptorField& loop = field(report(ReportId::effect_operation), kPidLoopCount);
+    expect_range(loop, Range{0, 255});
+    EXPECT_EQ(loop.report_size, 16u);
+    EXPECT_TRUE(loop.has_null_state());
 
     const DescriptorField& dc = field(report(ReportId::device_control), kPidDeviceControl);
     ASSERT_EQ(dc.usages.size(), 6u);
@@ -268,17 +298,20 @@ TEST(Descriptor, OperationControlAndBlockLoadArraysSelectPidUsages) {
     EXPECT_EQ(load_usage(BlockLoadStatus::success), pid(0x8C));
     EXPECT_EQ(load_usage(BlockLoadStatus::full), pid(0x8D));
     EXPECT_EQ(load_usage(BlockLoadStatus::error), pid(0x8E));
-    expect_range(field(load, kPidEffectBlockIndex), Range{0, 65535});
+    // Block 1..65535; 0 (no block, when the load failed) is the null.
+    expect_range(field(load, kPidEffectBlockIndex), Range{1, 65535});
+    EXPECT_TRUE(field(load, kPidEffectBlockIndex).has_null_state());
     expect_range(field(load, kPidRamPoolAvailable), Range{0, 0xFFFFFFFFLL});
 }
 
 TEST(Descriptor, ParameterBlocksUsePidUsagesAndFeelRanges) {
     const DescriptorReport& env = report(ReportId::set_envelope);
     expect_range(field(env, kPidAttackLevel), range::kLevel);
-    expect_range(field(env, kPidAttackTime), range::kDelayUs);
+    expect_range(field(env, kPidAttackTime), Range{0, 65'000});
     expect_range(field(env, kPidFadeLevel), range::kLevel);
-    expect_range(field(env, kPidFadeTime), range::kDelayUs);
+    expect_range(field(env, kPidFadeTime), Range{0, 65'000});
     EXPECT_EQ(field(env, kPidFadeTime).unit, kUnitSeconds);
+    EXPECT_EQ(field(env, kPidFadeTime).unit_exponent, -3);
 
     const DescriptorReport& cond = report(ReportId::set_condition);
     expect_range(field(cond, kPidParameterBlockOffset), Range{0, kMaxAxes - 1});
@@ -293,10 +326,11 @@ TEST(Descriptor, ParameterBlocksUsePidUsagesAndFeelRanges) {
     expect_range(field(periodic, kPidMagnitude), range::kSignedLevel);
     expect_range(field(periodic, kPidOffset), range::kSignedLevel);
     const DescriptorField& phase = field(periodic, kPidPhase);
-    expect_range(phase, range::kAngle);
+    expect_range(phase, Range{0, 36000});  // 0..360°, 360° being 0°
     EXPECT_EQ(phase.unit, kUnitDegrees);
     EXPECT_EQ(phase.unit_exponent, -2);
-    expect_range(field(periodic, kPidPeriod), range::kPeriodUs);
+    expect_range(field(periodic, kPidPeriod), Range{0, 65'000});
+    EXPECT_EQ(field(periodic, kPidPeriod).unit_exponent, -3);
 
     expect_range(field(report(ReportId::set_constant_force), kPidMagnitude), range::kSignedLevel);
     expect_range(field(report(ReportId::set_ramp_force), kPidRampStart), range::kSignedLevel);
@@ -330,6 +364,40 @@ TEST(Descriptor, ForceStreamAndJoystickUseGenericDesktopAxes) {
     EXPECT_EQ(buttons.usages.size(), 32u);
     EXPECT_EQ(buttons.usages.back(), 0x00090020u);
     expect_range(buttons, Range{0, 1});
+    // HID Usage Tables: Hat Switch (GD 0x39), eight directions 0..7 and a null state.
+    const DescriptorField& hats = field(report(ReportId::joystick_input), gd(0x39));
+    EXPECT_EQ(hats.report_size, 4u);
+    EXPECT_EQ(hats.report_count, 4u);
+    expect_range(hats, Range{0, 7});
+    EXPECT_TRUE(hats.has_null_state());
+}
+
+TEST(Descriptor, AProfilesDescriptorDeclaresOnlyItsInputs) {
+    JoystickLayout layout;  // Rz, X; 3 buttons; 1 hat
+    layout.axis_count = 2;
+    layout.axes[0] = Axis::rz;
+    layout.axes[1] = Axis::x;
+    layout.button_count = 3;
+    layout.hat_count = 1;
+    const std::vector<uint8_t> bytes = report_descriptor(layout);
+    const hid::DescriptorParse parse = hid::parse_report_descriptor(bytes);
+    ASSERT_TRUE(parse.ok()) << parse.error;
+    const DescriptorReport* joy = parse.descriptor.find(MainItemKind::input, static_cast<uint8_t>(ReportId::joystick_input));
+    ASSERT_NE(joy, nullptr);
+    std::vector<uint32_t> data_usages;
+    for (const DescriptorField& f : joy->fields) {
+        if (f.is_constant()) continue;
+        for (uint32_t k = 0; k < f.report_count; ++k) data_usages.push_back(f.usage_of(k));
+    }
+    EXPECT_EQ(data_usages, (std::vector<uint32_t>{gd(0x35), gd(0x30), 0x00090001u, 0x00090002u,
+                                                  0x00090003u, gd(0x39)}));
+    EXPECT_EQ(joy->bit_length % 8, 0u) << "padded to whole bytes";
+    EXPECT_EQ(joy->bit_length / 8 + 1, joystick_input_size(layout));
+    // The rest of the descriptor is the same as the full one's.
+    const DescriptorReport* effect = parse.descriptor.find(MainItemKind::output, 0x01);
+    ASSERT_NE(effect, nullptr);
+    EXPECT_EQ(effect->bit_length, report(ReportId::set_effect).bit_length);
+    EXPECT_EQ(parse.descriptor.reports.size(), parsed().reports.size());
 }
 
 TEST(Descriptor, PoolStateAndCreateUsePidUsages) {
@@ -360,8 +428,10 @@ TEST(Descriptor, SequenceIsTheFirstFieldOfEveryHostReport) {
             continue;  // feature reports the host only gets
         }
         SCOPED_TRACE(static_cast<int>(r.id));
-        const DescriptorField& first = r.fields.front();
-        EXPECT_EQ(first.bit_offset, 0u);
+        // Device Control's list comes first (hid-pidff finds the report by it).
+        const bool list_first = r.id == static_cast<uint8_t>(ReportId::device_control);
+        const DescriptorField& first = r.fields[list_first ? 1 : 0];
+        EXPECT_EQ(first.bit_offset, list_first ? 8u : 0u);
         EXPECT_EQ(first.report_size, 32u);
         EXPECT_EQ(first.usages.front() >> 16, 0xFF00u);
         expect_range(first, Range{0, 0xFFFFFFFFLL});

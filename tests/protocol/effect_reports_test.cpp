@@ -60,13 +60,13 @@ TEST(EffectReports, ForceProfileSamplesGoInChunksBeforeSetCustomForce) {
     std::vector<int16_t> samples(70);
     std::iota(samples.begin(), samples.end(), int16_t{-35});
     const auto reports = parameter_block_reports(p, samples, 1, true, true);
-    // ceil(70 / 32) = 3 data reports: 32 + 32 + 6, then the block.
+    // ceil(70 / 24) = 3 data reports: 24 + 24 + 22, then the block.
     ASSERT_EQ(reports.size(), 4u);
     int expected_offset = 0;
     for (int i = 0; i < 3; ++i) {
         const auto& d = std::get<CustomForceDataReport>(reports[i]);
         EXPECT_EQ(d.offset, expected_offset);
-        EXPECT_EQ(d.count, i < 2 ? kSamplesPerDataReport : 6);
+        EXPECT_EQ(d.count, i < 2 ? 24 : 22);
         EXPECT_EQ(d.samples[0], samples[static_cast<std::size_t>(expected_offset)]);
         expected_offset += d.count;
     }

@@ -47,6 +47,8 @@ std::string usage_text(uint32_t u) {
         {usage::pid::kTriggerRepeatInterval, "Trigger Repeat Interval"},
         {usage::pid::kAxesEnable, "Axes Enable"},
         {usage::pid::kDirection, "Direction"},
+        {usage::pid::kDirectionEnable, "Direction Enable"},
+        {usage::gd::kHatSwitch, "Hat Switch"},
         {usage::pid::kAttackLevel, "Attack Level"},
         {usage::pid::kAttackTime, "Attack Time"},
         {usage::pid::kFadeLevel, "Fade Level"},
@@ -129,6 +131,7 @@ std::string usage_text(uint32_t u) {
 
 std::string field_usage_text(const FieldSpec& f) {
     if (f.named_array != 0) return usage_text(f.named_array) + " (named array)";
+    if (f.wrap != 0) return usage_text(f.wrap) + " (collection of Ordinals 1, 2)";
     if (f.usage_list.empty()) return usage_text(f.usage);
     if (usage::page_of(f.usage_list.front()) == usage::kPageButton) return "Button 1..32";
     if (f.usage_list.front() == usage::gd::kX) return "GD X, Y, Z, Rx, Ry, Rz";
@@ -137,9 +140,11 @@ std::string field_usage_text(const FieldSpec& f) {
 
 std::string range_text(const FieldSpec& f) {
     if (f.bits == 64) return "any (64-bit)";
+    if (f.usage == usage::gd::kHatSwitch) return "0..7 declared; a feel device sends 0 (pushed, north) or 15 (centred, null)";
     std::string s = std::to_string(f.range.min) + "..";
     s += std::to_string(f.range.max);
-    if (f.null_is_infinite) s += ", or 4294967295 = infinite (null)";
+    if (f.null == FieldSpec::Null::all_ones) s += ", or " + std::to_string(f.null_value()) + " = infinite (null)";
+    if (f.null == FieldSpec::Null::zero) s += ", or 0 = none (null)";
     if (f.valid != nullptr) s += ", a report id";
     return s;
 }
@@ -148,6 +153,7 @@ std::string unit_text(FieldUnit u) {
     switch (u) {
         case FieldUnit::none: return "";
         case FieldUnit::microseconds: return "µs";
+        case FieldUnit::milliseconds: return "ms";
         case FieldUnit::centidegrees: return "0.01°";
         case FieldUnit::hertz: return "Hz";
         case FieldUnit::centihertz: return "0.01 Hz";
@@ -172,6 +178,13 @@ const char* kind_text(ReportKind k) {
     return "";
 }
 
+// Which USB pipe the report travels on, and whether it fits one full-speed packet.
+std::string pipe_text(const ReportSpec& r) {
+    if (r.kind == ReportKind::feature) return "control pipe (GET/SET_REPORT)";
+    const char* pipe = r.kind == ReportKind::output ? "interrupt OUT" : "interrupt IN";
+    return std::string(pipe) + (r.size() <= 64 ? " (fits a 64-byte packet)" : " (MORE than one 64-byte packet)");
+}
+
 std::string generated_tables() {
     std::ostringstream md;
     md << kBegin << "\n";
@@ -179,7 +192,7 @@ std::string generated_tables() {
         char id[8];
         std::snprintf(id, sizeof id, "0x%02X", static_cast<unsigned>(r->id));
         md << "\n### " << id << " " << r->name << "\n\n";
-        md << kind_text(r->kind) << ", " << r->size() << " bytes, collection "
+        md << kind_text(r->kind) << ", " << r->size() << " bytes, " << pipe_text(*r) << ", collection "
            << usage_text(r->usage) << "; errors name its fields `" << r->key << ".<field>`\n\n";
         md << "| byte | field | usage | bits | range | unit |\n|---|---|---|---|---|---|\n";
         std::size_t bit = 8;
@@ -191,9 +204,10 @@ std::string generated_tables() {
         }
     }
     md << "\n### Effect types\n\nThe Effect Type named array (Set Effect, Create New Effect): "
-          "value = `feel::EffectType`, selecting this usage.\n\n| value | type | usage |\n|---|---|---|\n";
+          "value = `feel::EffectType` + 1 (the list is 1-based, as hid-pidff requires), selecting this "
+          "usage.\n\n| value | type | usage |\n|---|---|---|\n";
     for (int t = 0; t < kEffectTypeCount; ++t) {
-        md << "| " << t << " | `" << effect_type_name(static_cast<EffectType>(t)) << "` | "
+        md << "| " << t + 1 << " | `" << effect_type_name(static_cast<EffectType>(t)) << "` | "
            << usage_text(usage::kEffectTypeUsages[t]) << " |\n";
     }
     md << "\n" << kEnd;

@@ -28,7 +28,7 @@ inline std::vector<AnyReport> sample_reports() {
     effect.start_delay_us = 1'234'567;
     effect.trigger_repeat_interval_us = 250'000;
     effect.gain = 7321;
-    effect.iterations = 254;
+    effect.iterations = 255;  // finite: infinite is kLoopInfinite
     effect.trigger_kind = TriggerKind::hat;
     effect.trigger_index = 3;
     effect.axis_count = 3;
@@ -37,7 +37,7 @@ inline std::vector<AnyReport> sample_reports() {
     effect.axes[2] = Axis::ry;
     effect.direction_kind = DirectionKind::cartesian;
     effect.direction[0] = -10000;
-    effect.direction[1] = 35999;
+    effect.direction[1] = 10000;
     effect.direction[2] = -1;
     effect.has_envelope = true;
     all.emplace_back(effect);
@@ -46,9 +46,16 @@ inline std::vector<AnyReport> sample_reports() {
     endless.sequence = 0;
     endless.duration_us = kWireInfinite;
     endless.type = EffectType::dynamic_paddle;
+    endless.iterations = kLoopInfinite;
+    endless.direction_kind = DirectionKind::spherical;  // PID's Ordinals carry the angles
+    endless.direction[0] = 35999;
+    endless.direction[1] = 18000;
+    endless.direction[2] = 0;  // spherical has two slots; the third does not travel
+    endless.has_envelope = false;
     all.emplace_back(endless);
 
     all.emplace_back(SetEnvelopeReport{7, 2, 9999, 65'000'000, 1, 3});
+    all.emplace_back(SetEnvelopeReport{7, 2, 9999, 999, 1, 64'999'001});  // sub-millisecond parts
     all.emplace_back(SetConditionReport{8, 65535, 5, -10000, 10000, -1, 0, 4321, 10000,
                                         OffsetMode::relative});
     all.emplace_back(SetPeriodicReport{9, 40, -7000, 2500, 35999, 65'000'000});

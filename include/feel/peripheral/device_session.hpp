@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "feel/engine.hpp"
+#include "feel/protocol/codec.hpp"
 #include "feel/protocol/reports.hpp"
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/host_link.hpp"
@@ -53,6 +54,11 @@
 #include "feel/transport/transport.hpp"
 
 namespace feel::peripheral {
+
+// The joystick inputs a device with these capabilities reports (its axes in order, its
+// buttons and hats): the layout of its Joystick Input and of its descriptor's joystick
+// part (protocol::report_descriptor(layout)).
+[[nodiscard]] protocol::JoystickLayout joystick_layout(const runtime::Capabilities& caps) noexcept;
 
 // The local loop's figures a DeviceStatus report carries, from whoever runs the loop
 // (DeviceRuntime::stats() for a Peripheral). Without a provider the session reports the

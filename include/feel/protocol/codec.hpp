@@ -46,11 +46,39 @@ namespace feel::protocol {
 // "set_effect.gain" or "report.id"/"report.length"). Never allocates, never throws.
 [[nodiscard]] Error decode(std::span<const uint8_t> bytes, AnyReport& out) noexcept;
 
-// The HID report descriptor of a feel device: a Joystick application collection (axes,
-// buttons, hats and the PID collections, usage page 0x0F) plus the vendor-defined reports
-// (usage page 0xFF00). Every feel device has the same descriptor: six axes, 32 buttons and
-// four hats are declared, and a device with fewer reports the rest as 0 (its capabilities,
-// DeviceInfoReport, say which it has).
+// The joystick inputs a device has. They fix Joystick Input's layout, and so the joystick
+// part of the device's descriptor: only the axes, buttons and hats the device has are
+// declared (a standard host makes exactly those its inputs). Each axis is a 16-bit Generic
+// Desktop axis (X..Rz as listed), the buttons one bit each (Button 1..n), each hat a
+// 4-bit Hat Switch (0x39) with 8 directions 0..7 and a null state (15, centred); fields
+// are padded to whole bytes.
+struct JoystickLayout {
+    uint8_t axis_count = kMaxAxes;                                             // 1..6
+    Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};  // in report order
+    uint8_t button_count = 32;                                                 // 0..32
+    uint8_t hat_count = 4;                                                     // 0..4
+
+    friend bool operator==(const JoystickLayout&, const JoystickLayout&) = default;
+};
+// Whether a layout is within those limits (each axis at most once); else why not.
+[[nodiscard]] Error check_layout(const JoystickLayout& layout) noexcept;
+
+// The HID report descriptor of a feel device with every input (JoystickLayout{}: six
+// axes, 32 buttons, four hats): a Joystick application collection with the joystick's
+// inputs and the PID collections (usage page 0x0F), plus the vendor-defined reports (usage
+// page 0xFF00). encode() and decode() of a JoystickInputReport use this layout.
 [[nodiscard]] std::span<const uint8_t> report_descriptor() noexcept;
+// The descriptor of a device with these inputs (check_layout must pass): what a device
+// answers get_descriptor with, and what `feel descriptor --profile P` prints.
+[[nodiscard]] std::vector<uint8_t> report_descriptor(const JoystickLayout& layout);
+
+// Joystick Input in a device's own layout: its size (id byte included), encode (the
+// position of axis k is position[k]) and decode (never allocates, never throws; errors as
+// decode()'s). A pushed hat travels as direction 0 (north): feel's hats know pushed and
+// centred only (the primer's triggers need no more); any direction decodes as pushed.
+[[nodiscard]] std::size_t joystick_input_size(const JoystickLayout& layout) noexcept;
+[[nodiscard]] std::vector<uint8_t> encode(const JoystickInputReport& report, const JoystickLayout& layout);
+[[nodiscard]] Error decode(std::span<const uint8_t> bytes, const JoystickLayout& layout,
+                           JoystickInputReport& out) noexcept;
 
 }  // namespace feel::protocol

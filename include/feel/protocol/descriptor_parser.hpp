@@ -39,6 +39,10 @@ inline constexpr uint32_t kFlagConstant = 0x01;
 inline constexpr uint32_t kFlagVariable = 0x02;
 inline constexpr uint32_t kFlagRelative = 0x04;
 inline constexpr uint32_t kFlagNullState = 0x40;
+// Collection types (HID 1.11 §6.2.2.6).
+inline constexpr uint8_t kCollectionPhysical = 0x00;
+inline constexpr uint8_t kCollectionApplication = 0x01;
+inline constexpr uint8_t kCollectionLogical = 0x02;
 
 struct DescriptorField {
     uint32_t bit_offset = 0;     // from the first bit after the Report ID byte (if any)
@@ -53,8 +57,10 @@ struct DescriptorField {
     int64_t physical_min = 0, physical_max = 0;
     uint32_t unit = 0;
     int32_t unit_exponent = 0;
-    // The usages of the collections around the field, outermost first.
+    // The usages of the collections around the field, outermost first, and their types
+    // (kCollection*), one per usage.
     std::vector<uint32_t> collections;
+    std::vector<uint8_t> collection_types;
 
     [[nodiscard]] bool is_constant() const noexcept { return (flags & kFlagConstant) != 0; }
     [[nodiscard]] bool is_variable() const noexcept { return (flags & kFlagVariable) != 0; }

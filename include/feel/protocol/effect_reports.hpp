@@ -20,7 +20,7 @@ namespace feel::protocol {
 [[nodiscard]] uint32_t wire_duration(int64_t us) noexcept;
 // Iterations to Effect Operation's loop count and Set Effect's iterations:
 // kInfiniteIterations -> kLoopInfinite, n -> n.
-[[nodiscard]] uint8_t wire_iterations(int32_t iterations) noexcept;
+[[nodiscard]] uint16_t wire_iterations(int32_t iterations) noexcept;
 
 // Sets the report's sequence number (every host-to-device report has one; others ignore it).
 void set_sequence(AnyReport& report, uint32_t sequence) noexcept;

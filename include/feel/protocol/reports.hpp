@@ -85,10 +85,12 @@ enum class ReportKind : uint8_t { output, feature, input };
 // DirectInput's INFINITE) where the field allows it.
 inline constexpr uint32_t kWireInfinite = 0xFFFFFFFFu;
 
-// Effect Operation's loop count: 0 plays the effect's own iteration count, 1..254 that
-// many, kLoopInfinite until stopped.
-inline constexpr uint8_t kLoopEffectOwn = 0;
-inline constexpr uint8_t kLoopInfinite = 255;
+// Effect Operation's loop count (16 bits on a feel device): 0 plays the effect's own
+// iteration count, 1..255 that many, kLoopInfinite (the field's null, 0xFFFF) until
+// stopped. Set Effect's iterations: 1..255 or kLoopInfinite. A standard PID device's loop
+// count is 8 bits, where 255 is "infinite" (docs/protocol.md).
+inline constexpr uint16_t kLoopEffectOwn = 0;
+inline constexpr uint16_t kLoopInfinite = 0xFFFF;
 
 // Set Effect: the Effect Structure of §6.3. Sent last, after the type-specific blocks: it
 // commits the effect (the first Set Effect of a block downloads it, later ones update it).
@@ -100,14 +102,17 @@ struct SetEffectReport {
     uint32_t start_delay_us = 0;               // 0..65e6
     uint32_t trigger_repeat_interval_us = 0;   // 0..65e6, 0 = no repeat
     uint16_t gain = 10000;                     // 0..10000
-    uint8_t iterations = 1;                    // vendor: 1..254, or kLoopInfinite
+    uint16_t iterations = 1;                   // vendor: 1..255, or kLoopInfinite
     TriggerKind trigger_kind = TriggerKind::none;  // vendor: none, button, hat
     uint8_t trigger_index = 0;                 // PID Trigger Button: 0 none, button 1..32, hat 1..4
-    uint8_t axis_count = 1;                    // 1..6 (PID Axes Enable, in feel's order)
+    uint8_t axis_count = 1;                    // vendor: 1..6, in feel's order; 0 not given (standard host)
     Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};  // 0..5
     DirectionKind direction_kind = DirectionKind::none;  // PID Direction Enable + vendor form
-    int32_t direction[3] = {0, 0, 0};          // PID Direction, -10000..35999: see feel::Direction
-    bool has_envelope = false;                 // vendor: use the block's Set Envelope
+    // Polar and spherical: PID Direction's Ordinals, 0..35999; cartesian and moments: a
+    // vendor vector, ±10000 per component (see feel::Direction). Slots a form does not
+    // use do not travel and decode as 0.
+    int32_t direction[3] = {0, 0, 0};
+    bool has_envelope = false;                 // the block's Set Envelope applies (wire: vendor no_envelope)
 
     friend bool operator==(const SetEffectReport&, const SetEffectReport&) = default;
 };
@@ -177,7 +182,7 @@ struct SetCustomForceReport {
 };
 
 // Samples per Custom Force Data report.
-inline constexpr int kSamplesPerDataReport = 32;
+inline constexpr int kSamplesPerDataReport = 24;  // so the report fits a 64-byte packet
 
 // Custom Force Data: samples of the block's force profile, sent in order before its Set
 // Custom Force and Set Effect (offset 0 starts a new profile).
@@ -207,7 +212,7 @@ struct EffectOperationReport {
     uint32_t sequence = 0;
     uint16_t block = 1;
     EffectOperation operation = EffectOperation::start;
-    uint8_t loop_count = kLoopEffectOwn;  // 0..255, see kLoopEffectOwn/kLoopInfinite
+    uint16_t loop_count = kLoopEffectOwn;  // 0..255 or kLoopInfinite, see kLoopEffectOwn
 
     friend bool operator==(const EffectOperationReport&, const EffectOperationReport&) = default;
 };
@@ -456,7 +461,7 @@ struct CommandStatusReport {
     char rule[96] = {};                        // the sentence for errors that are not a range
     // The effect's status after the command (effect commands and status requests).
     uint8_t effect_state = 0;                  // runtime::ReportedEffectState
-    uint8_t iterations = 0;                    // 0..255 (255 = infinite)
+    uint16_t iterations = 0;                   // 0..255, or kLoopInfinite
     uint8_t completed_iterations = 0;
     uint32_t elapsed_us = 0;                   // since the start, saturating
     uint8_t last_end = 0;                      // feel::PlayEnd of the last play
