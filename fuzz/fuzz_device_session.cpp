@@ -116,6 +116,15 @@ private:
             case FrameKind::input_report: break;
             default: fail("the device sent a host-to-device frame kind");
         }
+        if (f.kind == FrameKind::input_report && !f.payload.empty() &&
+            f.payload[0] == static_cast<uint8_t>(protocol::ReportId::joystick_input)) {
+            // The device's own joystick layout: the profile's axes, buttons and hats.
+            protocol::JoystickInputReport joy;
+            if (!protocol::decode(f.payload, peripheral::joystick_layout(caps_), joy).ok()) {
+                fail("the device sent a joystick input that does not decode");
+            }
+            return;
+        }
         protocol::AnyReport r;
         if (!protocol::decode(f.payload, r).ok()) fail("the device sent a report that does not decode");
         if (f.kind == FrameKind::feature_reply) {

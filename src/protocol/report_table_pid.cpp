@@ -47,6 +47,8 @@ constexpr uint32_t kDeviceControlUsages[] = {pid::kDcEnableActuators, pid::kDcDi
 #define SEQUENCE(R) FEEL_FIELD(R, sequence, u32(vendor::kSequence, kAnyU32))
 #define BLOCK(R) FEEL_FIELD(R, block, u16(pid::kEffectBlockIndex, kBlock))
 
+constexpr const char* kPastMaxTime = "makes the time (ms x 1000 + us) longer than 65000000 us";
+
 // A time member in microseconds as two wire fields: PID's milliseconds and feel's
 // microseconds below the millisecond. decode() sets the milliseconds first.
 #define TIME_MS(R, member, name, usage)                                                   \
@@ -57,11 +59,11 @@ constexpr uint32_t kDeviceControlUsages[] = {pid::kDcEnableActuators, pid::kDcDi
                     return true;                                                        \
                 })
 #define TIME_FINE(R, member, name, usage)                                                 \
-    FEEL_MAPPED(R, name, u16(usage, kSubMillisecondUs).in(FieldUnit::microseconds),     \
+    FEEL_MAPPED(R, name, u16(usage, kSubMillisecondUs).in(FieldUnit::microseconds).refusing(kPastMaxTime), \
                 [](const R& r, int) noexcept -> int64_t { return r.member % 1000; },    \
                 [](R& r, int, int64_t v) noexcept {                                     \
                     r.member += static_cast<uint32_t>(v);                               \
-                    return true;                                                        \
+                    return r.member <= kMaxTimeUs;                                      \
                 })
 
 // A time's milliseconds; past 65 s a value out of range, so that encode() refuses it.
@@ -85,7 +87,7 @@ constexpr int64_t duration_fine(const SetEffectReport& r, int) noexcept {
 constexpr bool set_duration_fine(SetEffectReport& r, int, int64_t v) noexcept {
     if (r.duration_us == kWireInfinite) return v == 0;
     r.duration_us += static_cast<uint32_t>(v);
-    return true;
+    return r.duration_us <= kMaxTimeUs;
 }
 
 // Direction Enable (PID 0x56) says the effect has a direction; direction_form (vendor)
@@ -150,7 +152,7 @@ constexpr FieldSpec kSetEffect[] = {
     FEEL_MAPPED(SetEffectReport, "duration_fine_us",
                 u16(vendor::kDurationFine, kSubMillisecondUs)
                     .in(FieldUnit::microseconds)
-                    .refusing("must be 0 when the duration is infinite"),
+                    .refusing("must be 0 when the duration is infinite, and makes the time at most 65000000 us"),
                 duration_fine, set_duration_fine),
     TIME_MS(SetEffectReport, trigger_repeat_interval_us, "trigger_repeat_interval_ms",
             pid::kTriggerRepeatInterval),

@@ -105,12 +105,12 @@ std::vector<std::pair<std::string, std::vector<uint8_t>>> seeds() {
     {
         Script s;  // a force profile in two data reports, then a force stream, then a reset
         s.set(create(1, EffectType::force_profile, 40)).get(ReportId::block_load);
-        for (uint16_t offset = 0; offset < 40; offset += 32) {
+        for (uint16_t offset = 0; offset < 40; offset += 24) {  // 24 + 16 (24 samples a report at most)
             protocol::CustomForceDataReport d;
             d.sequence = 2u + offset;
             d.block = 1;
             d.offset = offset;
-            d.count = static_cast<uint8_t>(offset == 0 ? 32 : 8);
+            d.count = static_cast<uint8_t>(offset == 0 ? 24 : 16);
             for (int i = 0; i < d.count; ++i) d.samples[i] = static_cast<int16_t>(200 * (offset + i) - 4000);
             s.out(d);
         }

@@ -45,7 +45,8 @@ protected:
         ASSERT_EQ(rig.create(EffectType::spring), 2);
         rig.ok(spring_axis(rig.next_sequence(), 2, 0, 1500));
         ASSERT_EQ(rig.create(EffectType::force_profile, 64), 3);
-        rig.ok(data(0, 32));
+        rig.ok(data(0, 24));  // a Custom Force Data report carries up to 24 samples
+        rig.ok(data(24, 8));
         rig.run(3);
     }
 
@@ -146,7 +147,7 @@ TEST_F(HostileHost, TypeBlockThatDoesNotFitTheEffect) {
 
 TEST_F(HostileHost, CustomForceDataOutOfOrder) {
     const Snapshot before = snapshot();
-    const auto gap = rig.command(data(64, 32));  // 32 received: the next offset is 32
+    const auto gap = rig.command(data(64, 24));  // 32 received: the next offset is 32
     EXPECT_EQ(gap.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(gap.field, "custom_force_data.offset");
     EXPECT_TRUE(gap.has_range);
@@ -160,7 +161,8 @@ TEST_F(HostileHost, CustomForceDataOutOfOrder) {
     expect_unchanged(before, "Custom Force Data out of order");
 
     // The stage was not disturbed: the rest in order completes the profile.
-    rig.ok(data(32, 32));
+    rig.ok(data(32, 24));
+    rig.ok(data(56, 8));
     protocol::SetCustomForceReport cf;
     cf.sequence = rig.next_sequence();
     cf.block = 3;

@@ -34,6 +34,8 @@ public:
         while (std::chrono::steady_clock::now() < deadline) {
             const std::optional<Frame> f = connection_->receive(100ms);
             if (!f || f->kind != FrameKind::input_report) continue;
+            // Joystick Input is in the device's own layout (its profile's inputs): not read here.
+            if (!f->payload.empty() && f->payload[0] == static_cast<uint8_t>(protocol::ReportId::joystick_input)) continue;
             protocol::AnyReport a;
             if (!protocol::decode(f->payload, a).ok()) {
                 ADD_FAILURE() << "undecodable input report";
