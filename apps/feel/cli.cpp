@@ -28,9 +28,11 @@ void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& 
         "render", "Render a sensation on a simulated device in closed loop; write the trace as "
                   "CSV (and optionally a plot) and print a summary");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
-    cmd->add_option("--sensation", a.sensation, "Name of the sensation to render")->required();
+    cmd->add_option("--sensation", a.sensation,
+                    "Name of the sensation to render (default: the file's only sensation)");
     cmd->add_option("--device", a.device,
-                    "Simulated device: joystick, wheel, 3axis, iforce1 or iforce2 (feel devices)")
+                    "Simulated device: sim:PROFILE or PROFILE, PROFILE joystick, wheel, 3axis, "
+                    "iforce1 or iforce2 (feel devices)")
         ->capture_default_str();
     cmd->add_option("--motion", a.motion,
                     "Target motion of the hand: hold:X[,Y[,Z]], ramp:AXIS:FROM:TO, "
@@ -43,9 +45,13 @@ void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& 
                                              "sensation's length plus a short tail, or 2 s if "
                                              "it never ends)");
     cmd->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..10000")->capture_default_str();
-    cmd->add_option("-o,--output", a.output, "CSV output file, or - for standard output")
-        ->required();
-    cmd->add_option("--plot", a.plot, "Also draw force and position to OUT.svg or OUT.png");
+    cmd->add_option("-o,--output", a.output,
+                    "CSV output file, or - for standard output (required unless --plot is given)");
+    cmd->add_option("--plot", a.plot, "Draw force and position to OUT.svg or OUT.png");
+    cmd->add_option("--press", a.press,
+                    "Buttons and hats to hold down, comma-separated CONTROL@PRESS:RELEASE (seconds): "
+                    "BUTTON 1..32 or hatN:DIR, e.g. 1@0.2:0.9,hat2:up@1.5:1.8; effects with a "
+                    "trigger start on its presses and repeat while it is held");
     cmd->footer(kExitCodes);
 }
 
@@ -83,7 +89,7 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
         "play", "Load a sensation file onto a device and play one sensation, showing the elapsed "
                 "time, the force on each axis and the effects' states live, then the peaks");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
-    cmd->add_option("--sensation", a.sensation, "Name of the sensation to play")->required();
+    cmd->add_option("--sensation", a.sensation, "Name of the sensation to play (default: the file's only sensation)");
     cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
     seconds_option = cmd->add_option("--seconds", seconds,
                                      "Stop after this many seconds, 0 < s <= 3600 (default: when the "
@@ -91,6 +97,9 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
     cmd->add_option("--iterations", a.iterations,
                     "Play each effect this many times: a whole number 1..254 or infinite (default: "
                     "each effect's own count)");
+    cmd->add_option("--press", a.press,
+                    "Simulated devices only: buttons and hats the hand holds down, as for feel render "
+                    "(CONTROL@PRESS:RELEASE, seconds after play), e.g. 1@0.2:0.9,hat2:up@1.5:1.8");
     cmd->footer(kExitCodes);
 }
 
