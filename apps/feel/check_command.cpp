@@ -4,10 +4,12 @@
 // command only lays out the result as a table a person can scan.
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "check_device.hpp"
 #include "cli.hpp"
 #include "feel/effect_type.hpp"
 #include "feel/format/sensation_file.hpp"
@@ -69,7 +71,7 @@ void run_check(const CheckArgs& args, std::ostream& out, std::ostream& /*err*/) 
     const format::SensationFile file = format::load_sensation_file(args.file);
     const size_t n = file.sensations.size();
     out << args.file << ": valid, " << n << (n == 1 ? " sensation\n" : " sensations\n");
-    if (n == 0) return;
+    if (n == 0) return;  // nothing a device could refuse
 
     std::vector<std::vector<std::string>> table;
     table.push_back({"name", "type", "duration", "axes", "trigger", "description"});
@@ -90,6 +92,9 @@ void run_check(const CheckArgs& args, std::ostream& out, std::ostream& /*err*/) 
         }
         line += row[kPadded];
         out << line << '\n';
+    }
+    if (!args.device.empty() && !check_on_device(args.file, file, args.device, out)) {
+        throw std::runtime_error(args.file + ": some sensations do not play on " + args.device);
     }
 }
 

@@ -59,6 +59,9 @@ void add_check(CLI::App& app, CheckArgs& a) {
     CLI::App* cmd = app.add_subcommand(
         "check", "Validate a sensation file and list its sensations");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
+    cmd->add_option("--device", a.device,
+                    "Also check that each sensation plays on this device (its types, axes, buttons, hats, "
+                    "slots and memory): sim:PROFILE, PROFILE, unix:PATH or tcp:HOST:PORT");
     cmd->footer(kExitCodes);
 }
 

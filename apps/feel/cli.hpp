@@ -47,6 +47,7 @@ struct RenderArgs {
 
 struct CheckArgs {
     std::string file;
+    std::string device;  // empty: the format only; else also whether each sensation plays there
 };
 
 struct DevicesArgs {

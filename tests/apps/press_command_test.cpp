@@ -3,6 +3,7 @@
 // lists them; render and play pick a file's only sensation by themselves.
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -182,6 +183,53 @@ TEST_F(Press, RenderTakesSimProfileAsTheHostCommandsDo) {
     const Result bad = run_cli({"render", file_, "--sensation", "gun", "--device", "sim:pedals", "-o", "-"});
     EXPECT_EQ(bad.code, kExitUsage);
     EXPECT_NE(bad.err.find("sim:PROFILE"), std::string::npos) << bad.err;
+}
+
+// feel play --press on the in-process device: the simulated hand presses button 1 from
+// 0.1 s to 0.75 s, so the gun's reflex starts at 0.1, 0.4 and 0.7 s, each tap 4000 on x.
+TEST_F(Press, PlayPressesTheSimulatedHandsButtons) {
+    const Result r = run_cli({"play", file_, "--sensation", "gun", "--device", "sim:wheel", "--press", "1@0.1:0.75",
+                              "--seconds", "1.2"});
+    ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+    // The peak: a tap's magnitude on x (the wheel's only axis), at about a tap's start.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(\nx +([-+][0-9]+\.[0-9]) +([0-9.]+) s)"))) << r.out;
+    EXPECT_NEAR(std::fabs(std::stod(m[1].str())), kMagnitude, 5) << r.out;
+    // A device on a cable has its own hand.
+    const Result remote = run_cli({"play", file_, "--sensation", "gun", "--device", "unix:/nonexistent.sock",
+                                   "--press", "1@0.1:0.2"});
+    EXPECT_EQ(remote.code, kExitUsage) << remote.err;
+    EXPECT_NE(remote.err.find("--press needs a simulated device"), std::string::npos) << remote.err;
+    const Result lacking = run_cli({"play", file_, "--sensation", "gun", "--device", "wheel", "--press",
+                                    "hat1:up@0.1:0.2"});
+    EXPECT_EQ(lacking.code, kExitUsage) << lacking.err;
+    EXPECT_NE(lacking.err.find("wheel"), std::string::npos) << lacking.err;
+}
+
+// The summary's peak is at least every force a live line showed (the first report too).
+TEST_F(Press, PlaysPeakIsAtLeastEveryForceTheLiveLinesShowed) {
+    format::SensationFile one = trigger_file();
+    one.sensations.resize(1);
+    one.sensations[0].effects[0].params.trigger = {};
+    one.sensations[0].effects[0].params.duration_us = 400'000;
+    const std::string single = path("single.feel.json");
+    write(single, format::write_sensation_file(one));
+    const Result r = run_cli({"play", single, "--device", "wheel"});
+    ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+    double shown = 0;
+    int lines = 0;
+    for (const std::string& line : lines_of(r.out)) {
+        std::smatch m;
+        if (std::regex_search(line, m, std::regex(R"(^[0-9]+\.[0-9]{3} s   x +([-+][0-9]+\.[0-9]))"))) {
+            shown = std::max(shown, std::fabs(std::stod(m[1].str())));
+            ++lines;
+        }
+    }
+    ASSERT_GE(lines, 2) << r.out;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(\nx +([-+][0-9]+\.[0-9]))"))) << r.out;
+    EXPECT_GE(std::fabs(std::stod(m[1].str())), shown) << r.out;
+    EXPECT_NEAR(std::fabs(std::stod(m[1].str())), kMagnitude, 5) << r.out;
 }
 
 }  // namespace

@@ -1,0 +1,84 @@
+// feel check --device: a file valid by the format is also judged by a device's limits,
+// given by the profiles' documented capabilities (docs/simulated-device.md): the wheel has
+// no hat, an I-FORCE 1.x-class device plays no dynamics and holds 16 effects (§1.3).
+#include <string>
+
+#include "cli_fixture.hpp"
+
+namespace feel::cli::testing {
+namespace {
+
+EffectParams tap() {
+    EffectParams p;
+    p.type = EffectType::constant;
+    p.duration_us = 100'000;
+    p.axis_count = 1;
+    p.constant.magnitude = 3000;
+    return p;
+}
+
+// tap: plays anywhere. horn: triggered by hat 2. seventeen: a compound of 17 taps.
+format::SensationFile device_file() {
+    format::SensationFile file;
+    file.sensations.push_back({"tap", std::nullopt, false, {{tap(), {}, {}}}});
+    EffectParams horn = tap();
+    horn.trigger = Trigger{TriggerKind::hat, 2};
+    file.sensations.push_back({"horn", std::nullopt, false, {{horn, {}, {}}}});
+    format::Sensation many{"seventeen", std::nullopt, true, {}};
+    for (int i = 0; i < 17; ++i) many.effects.push_back({tap(), {}, {}});
+    file.sensations.push_back(many);
+    return file;
+}
+
+std::string line_starting(const std::string& text, const std::string& prefix) {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind(prefix, 0) == 0) return line;
+    }
+    return {};
+}
+
+class CheckDevice : public CliTest {
+protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        file_ = path("device.feel.json");
+        write(file_, format::write_sensation_file(device_file()));
+    }
+    std::string file_;
+};
+
+TEST_F(CheckDevice, EverySensationPlaysOnAnIforce2) {
+    const Result r = run_cli({"check", file_, "--device", "sim:iforce2"});
+    EXPECT_EQ(r.code, kExitOk) << r.err << r.out;
+    for (const char* name : {"tap ", "horn ", "seventeen "}) {
+        EXPECT_NE(line_starting(r.out, name).find("plays"), std::string::npos) << name << r.out;
+    }
+}
+
+TEST_F(CheckDevice, AHatTheWheelLacksIsNamed) {
+    const Result r = run_cli({"check", file_, "--device", "wheel"});
+    EXPECT_EQ(r.code, kExitFailure) << r.out;
+    EXPECT_NE(line_starting(r.out, "tap ").find("plays"), std::string::npos) << r.out;
+    const std::string horn = line_starting(r.out, "horn ");
+    EXPECT_NE(horn.find("does not play"), std::string::npos) << r.out;
+    EXPECT_NE(horn.find("hat"), std::string::npos) << horn;
+    EXPECT_NE(r.err.find("do not play on wheel"), std::string::npos) << r.err;
+}
+
+TEST_F(CheckDevice, SeventeenEffectsDoNotFitAnIforce1sSixteenSlots) {
+    const Result r = run_cli({"check", file_, "--device", "iforce1"});
+    EXPECT_EQ(r.code, kExitFailure) << r.out;
+    EXPECT_NE(line_starting(r.out, "on sim:iforce1").find("16 effect slots"), std::string::npos) << r.out;
+    EXPECT_NE(line_starting(r.out, "tap ").find("plays"), std::string::npos) << r.out;
+    EXPECT_NE(line_starting(r.out, "seventeen ").find("does not play"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckDevice, AnUnknownDeviceIsAUsageError) {
+    const Result r = run_cli({"check", file_, "--device", "pedals"});
+    EXPECT_EQ(r.code, kExitUsage) << r.out;
+    EXPECT_NE(r.err.find("pedals"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace feel::cli::testing
