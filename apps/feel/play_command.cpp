@@ -121,7 +121,7 @@ sim::InputSchedule press_schedule(const std::vector<render::Press>& presses, con
                 schedule.press(p.press_us, p.control.index).release(p.release_us, p.control.index);
             }
         } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("--press on device ") + profile.name + ": " + e.what());
+            throw UsageError("--press on device " + std::string(profile.name) + ": " + e.what());
         }
     }
     return schedule;

@@ -126,7 +126,7 @@ sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::
                 schedule.press(p.press_us, p.control.index).release(p.release_us, p.control.index);
             }
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument(std::string("--press on device ") + profile.name + ": " + e.what());
+            throw std::invalid_argument("--press on device " + std::string(profile.name) + ": " + e.what());
         }
     }
     return schedule;

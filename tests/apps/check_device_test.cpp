@@ -80,5 +80,20 @@ TEST_F(CheckDevice, AnUnknownDeviceIsAUsageError) {
     EXPECT_NE(r.err.find("pedals"), std::string::npos) << r.err;
 }
 
+// Help footers list the codes each command can return: `devices` cannot fail once its
+// command line is right (unreachable sockets are skipped), the others name their failures.
+TEST_F(CliTest, HelpFootersListTheExitCodesOfTheirCommand) {
+    const Result devices = run_cli({"devices", "--help"});
+    EXPECT_EQ(devices.code, kExitOk);
+    EXPECT_NE(devices.out.find("Exit codes: 0 success, 2 usage error"), std::string::npos) << devices.out;
+    const Result check = run_cli({"check", "--help"});
+    EXPECT_NE(check.out.find("1 failure (an unreadable or invalid file; with --device"), std::string::npos)
+        << check.out;
+    const Result render = run_cli({"render", "--help"});
+    EXPECT_NE(render.out.find("1 failure (an unreadable or invalid file, a sensation the engine refuses"),
+              std::string::npos)
+        << render.out;
+}
+
 }  // namespace
 }  // namespace feel::cli::testing
