@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "device_command.hpp"
+#include "feel/format/sensation_file.hpp"
 #include "feel/version.h"
 #include "studio_command.hpp"
 #include "usb_device_command.hpp"
@@ -73,6 +74,13 @@ void add_check(CLI::App& app, CheckArgs& a) {
                     "Also check that each sensation plays on this device (its types, axes, buttons, hats, "
                     "slots and memory): sim:PROFILE, PROFILE, unix:PATH or tcp:HOST:PORT");
     cmd->footer(exit_codes("an unreadable or invalid file; with --device, a sensation that does not play there or a device that cannot be reached"));
+}
+
+void add_schema(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "schema", "Print the JSON Schema of the sensation format feel/1 (docs/feel-1.schema.json), for "
+                  "editors to complete and check fields");
+    cmd->footer(exit_codes(""));
 }
 
 constexpr const char* kDeviceHelp =
@@ -200,7 +208,7 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(exit_codes("the loop cannot run"));
 }
 
-constexpr const char* kCommands = "render, check, devices, caps, play, stream, monitor, device, bench, studio";
+constexpr const char* kCommands = "render, check, schema, devices, caps, play, stream, monitor, device, bench, studio";
 
 void add_studio(CLI::App& app, StudioArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -312,6 +320,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     CLI::Option* monitor_seconds_option = nullptr;
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
+    add_schema(app);
     add_devices(app, devices_args);
     add_caps(app, caps_args);
     add_play(app, play_args, play_seconds, play_seconds_option);
@@ -349,6 +358,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_render(render_args, out, err);
         } else if (app.got_subcommand("check")) {
             run_check(check_args, out, err);
+        } else if (app.got_subcommand("schema")) {
+            out << format::json_schema();
         } else if (app.got_subcommand("devices")) {
             run_devices(devices_args, out);
         } else if (app.got_subcommand("caps")) {

@@ -109,24 +109,6 @@ std::optional<int64_t> play_length_us(const format::Sensation& sensation, int32_
     return longest;
 }
 
-// The --press list as the simulated hand's script; a UsageError names a bad token, or a
-// button or hat the device lacks.
-sim::InputSchedule press_schedule(const std::vector<render::Press>& presses, const sim::DeviceProfile& profile) {
-    sim::InputSchedule schedule(profile);
-    for (const render::Press& p : presses) {
-        try {
-            if (p.control.kind == TriggerKind::hat) {
-                schedule.push_hat(p.press_us, p.control.index).center_hat(p.release_us, p.control.index);
-            } else {
-                schedule.press(p.press_us, p.control.index).release(p.release_us, p.control.index);
-            }
-        } catch (const std::invalid_argument& e) {
-            throw UsageError("--press on device " + std::string(profile.name) + ": " + e.what());
-        }
-    }
-    return schedule;
-}
-
 std::string effect_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " effect" : " effects"); }
 
 }  // namespace
@@ -159,7 +141,7 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
     }
     host::Device& device = handled ? handled->device : *plain;
     std::optional<sim::InputSchedule> hand;
-    if (handled) hand.emplace(press_schedule(presses, *handled->profile));
+    if (handled) hand.emplace(render::input_schedule(presses, *handled->profile));  // names a control it lacks
     uint32_t buttons_down = 0;
     uint32_t hats_pushed = 0;
     // Presses the schedule says are due by `t_s` seconds after play.

@@ -114,8 +114,8 @@ sim::TargetMotion parse_motion(const std::string& spec, double duration_s, int32
     }
 }
 
-// The presses as the device's input script; the schedule names the range of a button or
-// hat the profile lacks, prefixed here with the --press flag.
+}  // namespace
+
 sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::DeviceProfile& profile) {
     sim::InputSchedule schedule(profile);
     for (const Press& p : presses) {
@@ -131,8 +131,6 @@ sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::
     }
     return schedule;
 }
-
-}  // namespace
 
 Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     if (options.profile == nullptr) {

@@ -14,6 +14,7 @@
 #include "feel/format/sensation_file.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
+#include "feel/sim/input_schedule.hpp"
 
 namespace feel::render {
 
@@ -39,6 +40,11 @@ struct Press {
 // RELEASE seconds with 0 <= PRESS < RELEASE <= kMaxDurationS. Throws
 // std::invalid_argument naming the bad token and the allowed forms.
 [[nodiscard]] std::vector<Press> parse_presses(const std::string& spec);
+
+// The presses as a simulated device's input script (each press and its release). Throws
+// std::invalid_argument naming --press, the device and the allowed range for a button or
+// hat the profile lacks.
+[[nodiscard]] sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::DeviceProfile& profile);
 
 struct RenderOptions {
     const sim::DeviceProfile* profile = nullptr;  // required
