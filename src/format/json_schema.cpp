@@ -70,8 +70,8 @@ json int_array(int min_items, int max_items) {
     return {{"type", "array"}, {"items", {{"type", "integer"}}}, {"minItems", min_items}, {"maxItems", max_items}};
 }
 
-// The block a type takes, as its if/then: the block is required, the envelope allowed only
-// where the type takes one.
+// The block a type takes, as its if/then: the block (and the duration) is required, the
+// envelope allowed only where the type takes one.
 json type_rule(EffectType t) {
     const detail::BlockLayout layout = detail::block_layout(t);
     json extra = json::object();
@@ -96,6 +96,8 @@ json type_rule(EffectType t) {
     }
     json then = {{"properties", {{std::string(layout.key), block}}}, {"required", json::array({layout.key})}};
     if (supports_envelope(t)) then["properties"]["envelope"] = {{"$ref", "#/$defs/envelope"}};
+    // vector_force alone may leave its duration out: it is endless by default.
+    if (t != EffectType::vector_force) then["required"].push_back("duration_us");
     return {{"if", {{"properties", {{"type", {{"const", effect_type_name(t)}}}}}}}, {"then", then}};
 }
 
@@ -121,7 +123,7 @@ json effect_schema() {
     const json trigger = {
         {"anyOf", json::array({json{{"type", "integer"}}, json{{"enum", {"hat1", "hat2", "hat3", "hat4"}}}})}};
     return {{"type", "object"},
-            {"required", {"type", "axes", "duration_us"}},
+            {"required", {"type", "axes"}},
             {"properties",
              {{"description", {{"type", "string"}}},
               {"type", {{"enum", type_names}}},

@@ -166,6 +166,9 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
                                  std::string(error_code_name(error.code)) + "): " + error.message());
     }
     sim::InputSchedule inputs = input_schedule(options.presses, profile);
+    // The device starts with nothing pressed (InputSchedule's script does), so a press at
+    // t = 0 is a press edge at tick 0, not a button already held when the table first looks.
+    reflexes.on_tick(0, 0, 0, engine);
     for (size_t i = 0; i < ids.size(); ++i) {
         if (sensation.effects[i].params.trigger.kind != TriggerKind::none) continue;
         if (const Error error = engine.start(ids[i])) {

@@ -101,6 +101,14 @@ TEST_F(Press, EachPushOfAHatStartsItsReflexOnce) {
     EXPECT_EQ(tap_starts(read(csv)), (std::vector<long long>{100'000, 800'000}));
 }
 
+TEST_F(Press, APressAtTheStartIsAPress) {
+    const std::string csv = path("start.csv");
+    const Result r = run_cli({"render", file_, "--sensation", "gun", "--device", "wheel", "--hand", "kinematic",
+                              "--duration", "0.5", "--press", "1@0:0.05", "-o", csv});
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    EXPECT_EQ(tap_starts(read(csv)), (std::vector<long long>{0}));
+}
+
 TEST_F(Press, WithoutPressesATriggeredEffectWaits) {
     const std::string csv = path("idle.csv");
     const Result r = run_cli({"render", file_, "--sensation", "gun", "--device", "wheel", "--duration", "0.5",
