@@ -9,7 +9,7 @@ namespace {
 using ::testing::HasSubstr;
 
 std::string sine_with_envelope(const std::string& envelope) {
-    return file_with(R"({"type": "sine", "duration_us": 100000, "envelope": {)" + envelope +
+    return file_with(R"({"type": "sine", "duration_us": 100000, "axes": ["x"], "envelope": {)" + envelope +
                      R"(}, "periodic": {"magnitude": 2000, "period_us": 10000}})");
 }
 
