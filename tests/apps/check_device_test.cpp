@@ -30,12 +30,14 @@ format::SensationFile device_file() {
     return file;
 }
 
+// The last line starting with `prefix` (a sensation's verdict comes after its table row).
 std::string line_starting(const std::string& text, const std::string& prefix) {
     std::istringstream in(text);
+    std::string found;
     for (std::string line; std::getline(in, line);) {
-        if (line.rfind(prefix, 0) == 0) return line;
+        if (line.rfind(prefix, 0) == 0) found = line;
     }
-    return {};
+    return found;
 }
 
 class CheckDevice : public CliTest {

@@ -155,6 +155,7 @@ TEST_F(Press, RenderAndPlayPickAFilesOnlySensation) {
     format::SensationFile one = trigger_file();
     one.sensations.resize(1);
     one.sensations[0].effects[0].params.trigger = {};
+    one.sensations[0].effects[0].params.trigger_repeat_interval_us = 0;
     const std::string single = path("single.feel.json");
     write(single, format::write_sensation_file(one));
     const Result rendered = run_cli({"render", single, "--duration", "0.2", "-o", path("one.csv")});
@@ -165,9 +166,8 @@ TEST_F(Press, RenderAndPlayPickAFilesOnlySensation) {
     EXPECT_NE(played.out.find("playing    gun"), std::string::npos) << played.out;
 
     // With several, the error lists them.
-    for (const char* command : {"render", "play"}) {
-        const Result r = run_cli({command, file_, "-o", "-"});
-        EXPECT_EQ(r.code, kExitUsage) << command;
+    for (const Result& r : {run_cli({"render", file_, "-o", "-"}), run_cli({"play", file_})}) {
+        EXPECT_EQ(r.code, kExitUsage) << r.err;
         EXPECT_NE(r.err.find("--sensation"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("gun, horn"), std::string::npos) << r.err;
     }
@@ -219,6 +219,7 @@ TEST_F(Press, PlaysPeakIsAtLeastEveryForceTheLiveLinesShowed) {
     format::SensationFile one = trigger_file();
     one.sensations.resize(1);
     one.sensations[0].effects[0].params.trigger = {};
+    one.sensations[0].effects[0].params.trigger_repeat_interval_us = 0;
     one.sensations[0].effects[0].params.duration_us = 400'000;
     const std::string single = path("single.feel.json");
     write(single, format::write_sensation_file(one));
