@@ -4,10 +4,12 @@
 // command only lays out the result as a table a person can scan.
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "check_device.hpp"
 #include "cli.hpp"
 #include "feel/effect_type.hpp"
 #include "feel/format/sensation_file.hpp"
@@ -46,32 +48,53 @@ std::string axes_column(const format::Sensation& s) {
     return out.empty() ? "-" : out;
 }
 
+// Each effect's trigger (§6.3) and repeat interval: "button 1 every 500 ms", "hat 2";
+// in a compound, prefixed by the effect's index ("#1 button 4"); "-" when none has one.
+std::string trigger_column(const format::Sensation& s) {
+    std::string out;
+    for (size_t i = 0; i < s.effects.size(); ++i) {
+        const EffectParams& p = s.effects[i].params;
+        if (p.trigger.kind == TriggerKind::none) continue;
+        if (!out.empty()) out += ", ";
+        if (s.compound) out += "#" + std::to_string(i) + " ";
+        out += (p.trigger.kind == TriggerKind::hat ? "hat " : "button ") + std::to_string(p.trigger.index);
+        if (p.trigger_repeat_interval_us > 0) {
+            out += " every " + format_seconds(static_cast<double>(p.trigger_repeat_interval_us) * 1e-6);
+        }
+    }
+    return out.empty() ? "-" : out;
+}
+
 }  // namespace
 
 void run_check(const CheckArgs& args, std::ostream& out, std::ostream& /*err*/) {
     const format::SensationFile file = format::load_sensation_file(args.file);
     const size_t n = file.sensations.size();
     out << args.file << ": valid, " << n << (n == 1 ? " sensation\n" : " sensations\n");
-    if (n == 0) return;
+    if (n == 0) return;  // nothing a device could refuse
 
     std::vector<std::vector<std::string>> table;
-    table.push_back({"name", "type", "duration", "axes", "description"});
+    table.push_back({"name", "type", "duration", "axes", "trigger", "description"});
     for (const format::Sensation& s : file.sensations) {
         table.push_back({s.name, type_column(s), duration_column(s), axes_column(s),
-                         s.description.value_or("-")});
+                         trigger_column(s), s.description.value_or("-")});
     }
-    size_t width[4] = {};
+    constexpr size_t kPadded = 5;  // every column but the description
+    size_t width[kPadded] = {};
     for (const auto& row : table) {
-        for (size_t c = 0; c < 4; ++c) width[c] = std::max(width[c], row[c].size());
+        for (size_t c = 0; c < kPadded; ++c) width[c] = std::max(width[c], row[c].size());
     }
     for (const auto& row : table) {
         std::string line;
-        for (size_t c = 0; c < 4; ++c) {
+        for (size_t c = 0; c < kPadded; ++c) {
             line += row[c];
             line.append(width[c] - row[c].size() + 2, ' ');
         }
-        line += row[4];
+        line += row[kPadded];
         out << line << '\n';
+    }
+    if (!args.device.empty() && !check_on_device(args.file, file, args.device, out)) {
+        throw std::runtime_error(args.file + ": some sensations do not play on " + args.device);
     }
 }
 

@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "device_command.hpp"
+#include "feel/format/sensation_file.hpp"
 #include "feel/version.h"
 #include "studio_command.hpp"
 #include "usb_device_command.hpp"
@@ -23,14 +24,26 @@ constexpr const char* kExitCodes =
     "Exit codes: 0 success, 1 failure (bad file, refused effect, unwritable output), 2 usage "
     "error. Full reference: docs/cli.md\n";
 
+// A command's help footer: the exit codes it can return, its failures (exit 1) named.
+// `failures` empty: the command cannot fail once its command line is right.
+std::string exit_codes(const char* failures) {
+    std::string text = "Exit codes: 0 success";
+    if (failures != nullptr && *failures != '\0') text += std::string(", 1 failure (") + failures + ")";
+    return text + ", 2 usage error. Full reference: docs/cli.md\n";
+}
+
+constexpr const char* kDeviceFailures = "a device that cannot be reached or refuses a command";
+
 void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& duration) {
     CLI::App* cmd = app.add_subcommand(
         "render", "Render a sensation on a simulated device in closed loop; write the trace as "
                   "CSV (and optionally a plot) and print a summary");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
-    cmd->add_option("--sensation", a.sensation, "Name of the sensation to render")->required();
+    cmd->add_option("--sensation", a.sensation,
+                    "Name of the sensation to render (default: the file's only sensation)");
     cmd->add_option("--device", a.device,
-                    "Simulated device: joystick, wheel, 3axis, iforce1 or iforce2 (feel devices)")
+                    "Simulated device: sim:PROFILE or PROFILE, PROFILE joystick, wheel, 3axis, "
+                    "iforce1 or iforce2 (feel devices)")
         ->capture_default_str();
     cmd->add_option("--motion", a.motion,
                     "Target motion of the hand: hold:X[,Y[,Z]], ramp:AXIS:FROM:TO, "
@@ -43,17 +56,31 @@ void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& 
                                              "sensation's length plus a short tail, or 2 s if "
                                              "it never ends)");
     cmd->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..10000")->capture_default_str();
-    cmd->add_option("-o,--output", a.output, "CSV output file, or - for standard output")
-        ->required();
-    cmd->add_option("--plot", a.plot, "Also draw force and position to OUT.svg or OUT.png");
-    cmd->footer(kExitCodes);
+    cmd->add_option("-o,--output", a.output,
+                    "CSV output file, or - for standard output (required unless --plot is given)");
+    cmd->add_option("--plot", a.plot, "Draw force and position to OUT.svg or OUT.png");
+    cmd->add_option("--press", a.press,
+                    "Buttons and hats to hold down, comma-separated CONTROL@PRESS:RELEASE (seconds): "
+                    "BUTTON 1..32 or hatN:DIR, e.g. 1@0.2:0.9,hat2:up@1.5:1.8; effects with a "
+                    "trigger start on its presses and repeat while it is held");
+    cmd->footer(exit_codes("an unreadable or invalid file, a sensation the engine refuses, an unwritable output"));
 }
 
 void add_check(CLI::App& app, CheckArgs& a) {
     CLI::App* cmd = app.add_subcommand(
         "check", "Validate a sensation file and list its sensations");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
-    cmd->footer(kExitCodes);
+    cmd->add_option("--device", a.device,
+                    "Also check that each sensation plays on this device (its types, axes, buttons, hats, "
+                    "slots and memory): sim:PROFILE, PROFILE, unix:PATH or tcp:HOST:PORT");
+    cmd->footer(exit_codes("an unreadable or invalid file; with --device, a sensation that does not play there or a device that cannot be reached"));
+}
+
+void add_schema(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "schema", "Print the JSON Schema of the sensation format feel/1 (docs/feel-1.schema.json), for "
+                  "editors to complete and check fields");
+    cmd->footer(exit_codes(""));
 }
 
 constexpr const char* kDeviceHelp =
@@ -67,7 +94,7 @@ void add_devices(CLI::App& app, DevicesArgs& a) {
     cmd->add_option("--socket-dir", a.socket_dirs,
                     "Directory whose Unix sockets are probed (repeatable; default: "
                     "$XDG_RUNTIME_DIR/feel, else /tmp/feel-UID)");
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes(""));
 }
 
 void add_caps(CLI::App& app, CapsArgs& a) {
@@ -75,7 +102,7 @@ void add_caps(CLI::App& app, CapsArgs& a) {
         "caps", "Print a device's capabilities: axes, buttons, forces, effect types, memory, "
                 "loop rate, firmware and protocol versions");
     cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes(kDeviceFailures));
 }
 
 void add_descriptor(CLI::App& app, DescriptorArgs& a) {
@@ -86,7 +113,7 @@ void add_descriptor(CLI::App& app, DescriptorArgs& a) {
         ->capture_default_str();
     cmd->add_option("--format", a.format, "hex (bytes), c (a C array, items decoded in comments) or decoded")
         ->capture_default_str();
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes(""));
 }
 
 void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds_option) {
@@ -94,7 +121,7 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
         "play", "Load a sensation file onto a device and play one sensation, showing the elapsed "
                 "time, the force on each axis and the effects' states live, then the peaks");
     cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
-    cmd->add_option("--sensation", a.sensation, "Name of the sensation to play")->required();
+    cmd->add_option("--sensation", a.sensation, "Name of the sensation to play (default: the file's only sensation)");
     cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
     seconds_option = cmd->add_option("--seconds", seconds,
                                      "Stop after this many seconds, 0 < s <= 3600 (default: when the "
@@ -102,7 +129,10 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
     cmd->add_option("--iterations", a.iterations,
                     "Play each effect this many times: a whole number 1..255 or infinite (default: "
                     "each effect's own count)");
-    cmd->footer(kExitCodes);
+    cmd->add_option("--press", a.press,
+                    "Simulated devices only: buttons and hats the hand holds down, as for feel render "
+                    "(CONTROL@PRESS:RELEASE, seconds after play), e.g. 1@0.2:0.9,hat2:up@1.5:1.8");
+    cmd->footer(exit_codes("an unreadable or invalid file, a sensation the device refuses, a device that cannot be reached"));
 }
 
 void add_stream(CLI::App& app, StreamArgs& a) {
@@ -120,7 +150,7 @@ void add_stream(CLI::App& app, StreamArgs& a) {
     cmd->add_option("--amplitude", a.amplitude, "Amplitude, normalized force 0..10000")->capture_default_str();
     cmd->add_option("--frequency", a.frequency_hz, "Frequency of sine and square, 0 < Hz <= rate / 2")
         ->capture_default_str();
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes(kDeviceFailures));
 }
 
 void add_monitor(CLI::App& app, MonitorArgs& a, double& seconds, CLI::Option*& seconds_option) {
@@ -133,7 +163,7 @@ void add_monitor(CLI::App& app, MonitorArgs& a, double& seconds, CLI::Option*& s
                                      "Ctrl-C)");
     cmd->add_option("--sensation", a.sensation,
                     "FILE:NAME: load the sensation file and play this sensation while watching");
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes("an unreadable or invalid --sensation file, a device that cannot be reached or refuses a command"));
 }
 
 void add_device(CLI::App& app, DeviceArgs& a, UsbDeviceArgs& u) {
@@ -173,23 +203,23 @@ void add_device(CLI::App& app, DeviceArgs& a, UsbDeviceArgs& u) {
     cmd->add_option("--product", u.product, "With --usb: the product string")->capture_default_str();
     cmd->add_option("--serial", u.serial, "With --usb: the serial number string")->capture_default_str();
     cmd->add_option("--log", u.log, "With --usb: write one line per host report and refusal to FILE");
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes("the device cannot listen, bind its USB gadget, or read its token file"));
 }
 
 void add_bench(CLI::App& app, BenchLoopArgs& a) {
     CLI::App* bench = app.add_subcommand("bench", "Measure the device runtime's performance");
     bench->require_subcommand(1);
-    bench->footer(kExitCodes);
+    bench->footer(exit_codes("the benchmark cannot run"));
     CLI::App* loop = bench->add_subcommand(
         "loop", "Run the real-time loop with a busy mix of effects on the simulated joystick and "
                 "report its period jitter; the last line is p50=..us p99=..us p99.9=..us "
                 "overruns=N ticks=N");
     loop->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..20000")->capture_default_str();
     loop->add_option("--seconds", a.seconds, "Seconds to run, 1..3600")->capture_default_str();
-    loop->footer(kExitCodes);
+    loop->footer(exit_codes("the loop cannot run"));
 }
 
-constexpr const char* kCommands = "render, check, devices, caps, descriptor, play, stream, monitor, device, bench, studio";
+constexpr const char* kCommands = "render, check, schema, devices, caps, descriptor, play, stream, monitor, device, bench, studio";
 
 void add_studio(CLI::App& app, StudioArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -204,7 +234,7 @@ void add_studio(CLI::App& app, StudioArgs& a) {
         ->capture_default_str();
     cmd->add_option("--hand", a.hand, "The simulated hand at the start: loose, firm or stiff")
         ->capture_default_str();
-    cmd->footer(kExitCodes);
+    cmd->footer(exit_codes("the Studio cannot listen or read its workspace, a device that cannot be reached"));
 }
 
 // The chain of subcommands the command line selected, outermost first.
@@ -302,6 +332,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     CLI::Option* monitor_seconds_option = nullptr;
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
+    add_schema(app);
     add_devices(app, devices_args);
     add_caps(app, caps_args);
     add_descriptor(app, descriptor_args);
@@ -340,6 +371,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_render(render_args, out, err);
         } else if (app.got_subcommand("check")) {
             run_check(check_args, out, err);
+        } else if (app.got_subcommand("schema")) {
+            out << format::json_schema();
         } else if (app.got_subcommand("devices")) {
             run_devices(devices_args, out);
         } else if (app.got_subcommand("caps")) {

@@ -42,10 +42,12 @@ struct RenderArgs {
     double rate_hz = 1000;
     std::string output;                // CSV path, "-" for stdout
     std::string plot;                  // empty: no plot
+    std::string press;                 // --press list (render::parse_presses); empty: none
 };
 
 struct CheckArgs {
     std::string file;
+    std::string device;  // empty: the format only; else also whether each sensation plays there
 };
 
 struct DevicesArgs {
@@ -75,6 +77,7 @@ struct PlayArgs {
     std::string device = kDefaultDeviceAddress;
     std::optional<double> seconds;     // unset: until the sensation ends, at most kPlayDefaultCapS
     std::string iterations;            // empty: each effect's own count; "infinite" or a whole 1..254
+    std::string press;                 // --press list (render::parse_presses), sim: devices only
     bool terminal = false;             // redraw the progress line in place
 };
 // How long `feel play` lets a sensation run without --seconds: one that never ends (an

@@ -23,9 +23,7 @@ std::string profile_names() {
     return names;
 }
 
-}  // namespace
-
-host::Device open_device(const std::string& address, const host::OpenOptions& options) {
+transport::Address parsed_address(const std::string& address) {
     transport::Address parsed;
     try {
         parsed = transport::Address::parse(address);
@@ -36,7 +34,10 @@ host::Device open_device(const std::string& address, const host::OpenOptions& op
         throw UsageError("--device \"" + address + "\" is not a known device (available: sim:PROFILE with PROFILE " +
                          "one of " + profile_names() + ", unix:PATH or tcp:HOST:PORT)");
     }
-    host::Result<host::Device> device = host::Device::open(parsed.to_string(), options);
+    return parsed;
+}
+
+host::Device opened_or_thrown(host::Result<host::Device> device, const transport::Address& parsed) {
     if (!device) {
         const host::Status status = device.status();
         const std::string message = "cannot open device " + parsed.to_string() + ": " + status.message;
@@ -44,6 +45,28 @@ host::Device open_device(const std::string& address, const host::OpenOptions& op
         throw std::runtime_error(message);
     }
     return std::move(device).value();
+}
+
+}  // namespace
+
+HandledDevice open_handled_device(const std::string& address, const char* flag) {
+    const transport::Address parsed = parsed_address(address);
+    if (parsed.kind != transport::Address::Kind::sim) {
+        throw UsageError(std::string(flag) + " needs a simulated device (--device sim:PROFILE or PROFILE), not \"" +
+                         address + "\": a device on a cable has a hand of its own");
+    }
+    peripheral::PeripheralOptions options;
+    options.profile = parsed.profile;
+    auto sim = std::make_unique<peripheral::Peripheral>(options);
+    transport::ConnectionPair pair = transport::in_process_pair(parsed.to_string());
+    sim->attach(std::move(pair.device));
+    host::Device device = opened_or_thrown(host::Device::attach(std::move(pair.host), parsed.to_string()), parsed);
+    return HandledDevice{sim::find_device_profile(parsed.profile), std::move(sim), std::move(device)};
+}
+
+host::Device open_device(const std::string& address, const host::OpenOptions& options) {
+    const transport::Address parsed = parsed_address(address);
+    return opened_or_thrown(host::Device::open(parsed.to_string(), options), parsed);
 }
 
 void check(const host::Status& status, const std::string& what) {

@@ -5,10 +5,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "feel/host/device.hpp"
 #include "feel/host/result.hpp"
+#include "feel/peripheral/peripheral.hpp"
+#include "feel/sim/device_profile.hpp"
 
 namespace feel::cli {
 
@@ -17,6 +20,17 @@ namespace feel::cli {
 // forms or profiles allowed (exit 2); a device that cannot be reached or does not answer
 // is a std::runtime_error naming the address (exit 1).
 [[nodiscard]] host::Device open_device(const std::string& address, const host::OpenOptions& options = {});
+
+// An in-process simulated device whose hand the command can drive (buttons, hats), with
+// the host's Device on it. The device is declared last so that it closes first.
+struct HandledDevice {
+    const sim::DeviceProfile* profile = nullptr;
+    std::unique_ptr<peripheral::Peripheral> peripheral;
+    host::Device device;
+};
+// Opens `address`, which must be sim:PROFILE or a bare PROFILE, for a command that presses
+// its buttons (`flag` names the option that needs it, in the UsageError otherwise).
+[[nodiscard]] HandledDevice open_handled_device(const std::string& address, const char* flag);
 
 // Throws std::runtime_error "`what`: <the status's message>" when the status is an error.
 void check(const host::Status& status, const std::string& what);

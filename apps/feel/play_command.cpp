@@ -33,10 +33,12 @@
 #include "feel/host/sensation_library.hpp"
 #include "feel/render/render.hpp"
 #include "feel/runtime/runtime_messages.hpp"
+#include "feel/sim/input_schedule.hpp"
 #include "flag_checks.hpp"
 #include "host_device.hpp"
 #include "interrupt.hpp"
 #include "live_output.hpp"
+#include "sensation_choice.hpp"
 
 namespace feel::cli {
 namespace {
@@ -66,15 +68,6 @@ int32_t parse_iterations(const std::string& text) {
         throw UsageError("--iterations = " + text + " is not a number (allowed a whole number 1..255, or infinite)");
     }
     return checked_whole("--iterations", value, 1, 255);
-}
-
-const format::Sensation& sensation_by_name(const format::SensationFile& file, const std::string& name,
-                                           const std::string& path) {
-    if (const format::Sensation* s = file.find(name)) return *s;
-    std::string names;
-    for (const format::Sensation& s : file.sensations) names += (names.empty() ? "" : ", ") + s.name;
-    if (names.empty()) names = "none: the file holds no sensations";
-    throw UsageError("--sensation \"" + name + "\" is not in " + path + " (available: " + names + ")");
 }
 
 // The largest |force| each axis showed, with its sign and when.
@@ -125,11 +118,45 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
     if (args.seconds) limit_s = checked_range("--seconds", *args.seconds, 0, kMaxSeconds, "s", false);
     const int32_t iterations = parse_iterations(args.iterations);
     const format::SensationFile file = format::load_sensation_file(args.file);
-    const format::Sensation& sensation = sensation_by_name(file, args.sensation, args.file);
+    const format::Sensation& sensation = choose_sensation(file, args.sensation, args.file);
     const std::optional<int64_t> length_us = play_length_us(sensation, iterations);
     const bool endless = !length_us;
 
-    host::Device device = open_device(args.device);
+    std::vector<render::Press> presses;
+    try {
+        presses = render::parse_presses(args.press);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    int64_t last_release_us = 0;
+    for (const render::Press& p : presses) last_release_us = std::max(last_release_us, p.release_us);
+
+    // With --press the command drives the simulated hand, so it opens the device itself.
+    std::optional<HandledDevice> handled;
+    std::optional<host::Device> plain;
+    if (presses.empty()) {
+        plain.emplace(open_device(args.device));
+    } else {
+        handled.emplace(open_handled_device(args.device, "--press"));
+    }
+    host::Device& device = handled ? handled->device : *plain;
+    std::optional<sim::InputSchedule> hand;
+    if (handled) hand.emplace(render::input_schedule(presses, *handled->profile));  // names a control it lacks
+    uint32_t buttons_down = 0;
+    uint32_t hats_pushed = 0;
+    // Presses the schedule says are due by `t_s` seconds after play.
+    const auto move_hand = [&](double t_s) {
+        if (!hand) return;
+        const auto t_us = static_cast<int64_t>(t_s * 1e6);
+        if (const uint32_t b = hand->buttons_at(t_us); b != buttons_down) {
+            buttons_down = b;
+            (void)handled->peripheral->set_buttons(b);
+        }
+        if (const uint32_t h = hand->hats_at(t_us); h != hats_pushed) {
+            hats_pushed = h;
+            (void)handled->peripheral->set_hats(h);
+        }
+    };
     const host::DeviceCaps& caps = device.capabilities();
     const int32_t report_hz = use_fastest_reports(device);
     const std::string only[] = {sensation.name};
@@ -160,10 +187,19 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
     LiveLine live(out, args.terminal);
     AxisPeak peaks[kMaxAxes] = {};
     const int32_t axes = caps.axis_count;
+    // Every report the live line shows counts in the peaks, the first one too (it may be
+    // the only report of the sensation's first force, as wait_input() returns newer ones).
+    const auto note_peaks = [&](const host::InputState& s, double t) {
+        for (int32_t a = 0; a < axes; ++a) {
+            if (std::fabs(s.force[a]) > std::fabs(peaks[a].force)) peaks[a] = {s.force[a], t};
+        }
+    };
     host::InputState last = device.input();
+    const double first_s = seconds_since(t0, Clock::now());
+    note_peaks(last, first_s);
     std::string states;
     (void)all_stopped(effects, states);
-    live.show(progress_line(seconds_since(t0, Clock::now()), last, states));  // the states at the start
+    live.show(progress_line(first_s, last, states));  // the states at the start
     uint64_t reports = 0;
     Clock::time_point next_line = t0 + kProgressPeriod;
     Clock::time_point next_status_check = t0;
@@ -179,6 +215,7 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
         }
         const Clock::time_point now = Clock::now();
         if (seconds_since(t0, now) >= cap_s) break;
+        move_hand(seconds_since(t0, now));
         const host::Result<host::InputState> next = device.wait_input(std::chrono::milliseconds(20));
         if (!next) {
             if (next.status().kind == host::ErrorKind::timeout) continue;
@@ -188,14 +225,13 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
         const double t = seconds_since(t0, arrived);
         last = next.value();
         ++reports;
-        for (int32_t a = 0; a < axes; ++a) {
-            if (std::fabs(last.force[a]) > std::fabs(peaks[a].force)) peaks[a] = {last.force[a], t};
-        }
+        note_peaks(last, t);
         if (last.playing_effects > 0) {
             quiet_since_s = -1;
         } else {
             if (quiet_since_s < 0) quiet_since_s = t;
-            if (arrived >= next_status_check) {
+            // Triggered effects wait for their presses: nothing has ended before the last.
+            if (arrived >= next_status_check && t * 1e6 >= static_cast<double>(last_release_us)) {
                 next_status_check = arrived + kStatusCheckPeriod;
                 if (all_stopped(effects, states)) {
                     ended_s = quiet_since_s;

@@ -20,6 +20,7 @@
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
 #include "render_summary.hpp"
+#include "sensation_choice.hpp"
 
 namespace feel::cli {
 namespace {
@@ -32,15 +33,17 @@ std::string number(double v) {
     return buf;
 }
 
+// A profile name, or sim:PROFILE as the host commands spell a simulated device.
 const sim::DeviceProfile& device_by_name(const std::string& name) {
-    if (const sim::DeviceProfile* p = sim::find_device_profile(name)) return *p;
+    const std::string profile = name.rfind("sim:", 0) == 0 ? name.substr(4) : name;
+    if (const sim::DeviceProfile* p = sim::find_device_profile(profile)) return *p;
     std::string names;
     for (const sim::DeviceProfile& p : sim::device_profiles()) {
         names += names.empty() ? "" : ", ";
         names += p.name;
     }
-    throw UsageError("--device " + quoted(name) + " is not a known device (available: " + names +
-                     ")");
+    throw UsageError("--device " + quoted(name) + " is not a simulated device render can run (available: " +
+                     names + ", each also as sim:PROFILE)");
 }
 
 sim::Grip grip_by_name(const std::string& name) {
@@ -62,19 +65,6 @@ void check_plot_path(const std::string& path) {
         throw UsageError("--plot " + quoted(path) +
                          " has an unknown format (allowed extensions .svg, .png)");
     }
-}
-
-const format::Sensation& sensation_by_name(const format::SensationFile& file,
-                                           const std::string& name, const std::string& path) {
-    if (const format::Sensation* s = file.find(name)) return *s;
-    std::string names;
-    for (const format::Sensation& s : file.sensations) {
-        names += names.empty() ? "" : ", ";
-        names += s.name;
-    }
-    if (names.empty()) names = "none: the file holds no sensations";
-    throw UsageError("--sensation " + quoted(name) + " is not in " + path + " (available: " +
-                     names + ")");
 }
 
 void make_parent_directory(const std::string& path) {
@@ -113,10 +103,17 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
         options.duration_s = *args.duration_s;
     }
     check_plot_path(args.plot);
-    if (args.output.empty()) throw UsageError("--output: an output path is required (or - for stdout)");
+    if (args.output.empty() && args.plot.empty()) {
+        throw UsageError("--output: an output path is required (or - for stdout), unless --plot is given");
+    }
+    try {
+        options.presses = render::parse_presses(args.press);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
 
     const format::SensationFile file = format::load_sensation_file(args.file);
-    const format::Sensation& sensation = sensation_by_name(file, args.sensation, args.file);
+    const format::Sensation& sensation = choose_sensation(file, args.sensation, args.file);
 
     const render::Trace trace = render::render(sensation, options);
 
@@ -125,7 +122,7 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
     if (csv_to_stdout) {
         render::write_csv(trace, out);
         if (!out) throw std::runtime_error("error while writing the CSV to standard output");
-    } else {
+    } else if (!args.output.empty()) {
         write_csv_file(trace, args.output);
     }
     if (!args.plot.empty()) {

@@ -53,6 +53,18 @@ void write_dynamic_reports(const render::Trace& trace, std::ostream& out) {
     }
 }
 
+// The presses of --press and the starts the reflexes made (§1.2.c): the first dozen times.
+void write_reflex_starts(const render::Trace& trace, const render::RenderOptions& o, std::ostream& out) {
+    constexpr size_t kShown = 12;
+    out << '\n' << "presses    " << o.presses.size() << "; reflexes started effects "
+        << trace.reflex_starts_us.size() << (trace.reflex_starts_us.size() == 1 ? " time" : " times");
+    for (size_t i = 0; i < trace.reflex_starts_us.size() && i < kShown; ++i) {
+        out << (i == 0 ? ": at " : ", ") << format_seconds(static_cast<double>(trace.reflex_starts_us[i]) * 1e-6);
+    }
+    if (trace.reflex_starts_us.size() > kShown) out << ", ...";
+    out << '\n';
+}
+
 void write_render_summary(const RenderReport& r, std::ostream& out) {
     const render::TraceStats& st = r.stats;
     const render::RenderOptions& o = *r.options;
@@ -79,6 +91,9 @@ void write_render_summary(const RenderReport& r, std::ostream& out) {
     out << "(force and position are normalized: \u00b110000 is the motor limit and the end of "
            "travel)\n";
     if (r.trace != nullptr && r.trace->has_dynamics) write_dynamic_reports(*r.trace, out);
+    if (r.trace != nullptr && (!o.presses.empty() || !r.trace->reflex_starts_us.empty())) {
+        write_reflex_starts(*r.trace, o, out);
+    }
     if (!r.csv_path.empty() || !r.plot_path.empty()) out << '\n';
     if (!r.csv_path.empty()) out << "wrote      " << r.csv_path << " (CSV, " << st.ticks << " rows)\n";
     if (!r.plot_path.empty()) out << "wrote      " << r.plot_path << " (plot)\n";

@@ -40,7 +40,7 @@ T member_type_of(T C::*);  // only for decltype
 
 template <class At, auto Member>
 constexpr FieldSpec field(std::string_view name, bool required,
-                          std::span<const std::string_view> choices = {}) {
+                          std::span<const std::string_view> choices = {}, std::string_view alias = {}) {
     using T = decltype(member_type_of(Member));
     constexpr ValueKind kind = std::is_same_v<T, bool>      ? ValueKind::boolean
                                : std::is_enum_v<T>          ? ValueKind::choice
@@ -56,7 +56,8 @@ constexpr FieldSpec field(std::string_view name, bool required,
             } else {
                 At::in(p, slot).*Member = static_cast<T>(v);
             }
-        }};
+        },
+        alias};
 }
 
 constexpr bool kRequired = true;
@@ -235,8 +236,9 @@ constexpr FieldSpec kControlLaw[] = {
 };
 
 constexpr FieldSpec kEnvelope[] = {
-    field<InEnvelope, &Envelope::impulse_level>("impulse_level", kRequired),
-    field<InEnvelope, &Envelope::settle_time_us>("settle_time_us", kRequired),
+    // The primer's names (§6.4); DirectInput and evdev call them attack level and time.
+    field<InEnvelope, &Envelope::impulse_level>("impulse_level", kRequired, {}, "attack_level"),
+    field<InEnvelope, &Envelope::settle_time_us>("settle_time_us", kRequired, {}, "attack_time_us"),
     field<InEnvelope, &Envelope::fade_level>("fade_level", kOptional),
     field<InEnvelope, &Envelope::fade_time_us>("fade_time_us", kOptional),
 };

@@ -34,6 +34,9 @@ struct FieldSpec {
     // `slot` selects the axis for per-axis blocks (conditions, control_law), else 0.
     int64_t (*get)(const EffectParams& p, int slot);
     void (*set)(EffectParams& p, int slot, int64_t value);
+    // Another name the reader accepts for this field (DirectInput's and evdev's, e.g.
+    // attack_level for impulse_level); empty: none. The writer always writes `name`.
+    std::string_view alias;
 };
 
 enum class BlockShape : uint8_t {

@@ -156,8 +156,9 @@ private:
                      const std::string& path, const std::string& pointer, std::string_view extra) {
         if (!obj.is_object()) where_.fail(path, "expected an object, found " + describe(obj));
         for (const std::string& key : obj.keys) {
-            const bool known = key == extra || std::any_of(fields.begin(), fields.end(),
-                                                           [&](const FieldSpec& f) { return f.name == key; });
+            const bool known = key == extra || std::any_of(fields.begin(), fields.end(), [&](const FieldSpec& f) {
+                                   return f.name == key || (!f.alias.empty() && f.alias == key);
+                               });
             if (!known) {
                 // Listed in canonical order: control_law leads its block, samples ends its.
                 std::string allowed = extra == "control_law" ? "control_law" : "";
@@ -168,8 +169,18 @@ private:
             }
         }
         for (const FieldSpec& f : fields) {
-            const std::string field_path = path + "." + std::string(f.name);
+            std::string field_path = path + "." + std::string(f.name);
             const JsonValue* v = obj.find(f.name);
+            if (const JsonValue* aliased = f.alias.empty() ? nullptr : obj.find(f.alias)) {
+                if (v != nullptr) {
+                    where_.fail(path, "both " + quote(f.name) + " and its alias " + quote(f.alias) +
+                                          " are given (give one of them)");
+                }
+                v = aliased;
+                std::string alias_path = path + "." + std::string(f.alias);
+                aliased_.push_back({field_path, alias_path});
+                field_path = std::move(alias_path);
+            }
             if (v == nullptr) {
                 if (f.required) where_.fail(field_path, "required field is missing");
                 continue;
@@ -439,7 +450,10 @@ private:
             }
             return;
         }
-        const std::string_view field = e.field;
+        std::string_view field = e.field;
+        for (const Aliased& a : aliased_) {
+            if (a.field == field) field = a.as_written;  // name the field as the file does
+        }
         if (field == "custom.sample_count") {
             // The file has no sample_count: it is the length of "samples".
             where_.fail("custom.samples", std::to_string(p_.custom.sample_count) +
@@ -456,6 +470,13 @@ private:
         }
         where_.fail(field, e.rule);
     }
+
+    // A field the file gave under its alias: the validator's name and the file's.
+    struct Aliased {
+        std::string field;
+        std::string as_written;
+    };
+    std::vector<Aliased> aliased_;
 
     struct Overflow {
         std::string path;

@@ -25,6 +25,8 @@
 
 #include "feel/engine.hpp"
 #include "feel/render/render.hpp"
+#include "feel/runtime/reflexes.hpp"
+#include "feel/sim/input_schedule.hpp"
 #include "feel/sim/sim_device.hpp"
 
 namespace feel::render {
@@ -114,6 +116,22 @@ sim::TargetMotion parse_motion(const std::string& spec, double duration_s, int32
 
 }  // namespace
 
+sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::DeviceProfile& profile) {
+    sim::InputSchedule schedule(profile);
+    for (const Press& p : presses) {
+        try {
+            if (p.control.kind == TriggerKind::hat) {
+                schedule.push_hat(p.press_us, p.control.index).center_hat(p.release_us, p.control.index);
+            } else {
+                schedule.press(p.press_us, p.control.index).release(p.release_us, p.control.index);
+            }
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--press on device " + std::string(profile.name) + ": " + e.what());
+        }
+    }
+    return schedule;
+}
+
 Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     if (options.profile == nullptr) {
         throw std::invalid_argument("--device: no device profile given (render needs one)");
@@ -141,7 +159,18 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
         if (created.error) throw_refused(sensation, i, spec.params, "refused", created.error);
         ids.push_back(created.id);
     }
+    // Effects with a trigger are reflexes: armed, started by their presses (§1.2.c).
+    runtime::ReflexTable reflexes(static_cast<int32_t>(std::max<size_t>(1, ids.size())));
+    if (const Error error = reflexes.assign_all(engine, ids)) {
+        throw std::runtime_error("sensation \"" + sensation.name + "\": its triggers cannot be armed (" +
+                                 std::string(error_code_name(error.code)) + "): " + error.message());
+    }
+    sim::InputSchedule inputs = input_schedule(options.presses, profile);
+    // The device starts with nothing pressed (InputSchedule's script does), so a press at
+    // t = 0 is a press edge at tick 0, not a button already held when the table first looks.
+    reflexes.on_tick(0, 0, 0, engine);
     for (size_t i = 0; i < ids.size(); ++i) {
+        if (sensation.effects[i].params.trigger.kind != TriggerKind::none) continue;
         if (const Error error = engine.start(ids[i])) {
             throw_refused(sensation, i, sensation.effects[i].params, "could not start", error);
         }
@@ -157,7 +186,11 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     for (int64_t n = 0; n < ticks; ++n) {
         TickInput in;
         in.t_us = tick_time_us(n, rate);
+        (void)inputs.apply(device, in.t_us);
         device.sense(in);
+        const uint64_t fired_before = reflexes.fired();
+        reflexes.on_tick(in, engine);
+        for (uint64_t k = fired_before; k < reflexes.fired(); ++k) trace.reflex_starts_us.push_back(in.t_us);
         TickOutput out;
         engine.tick(in, out);
 

@@ -82,4 +82,9 @@ inline constexpr size_t kMaxFileEffects = 4096;
 // without exactly one effect): a file that could not be read back is never written.
 [[nodiscard]] std::string write_sensation_file(const SensationFile& file);
 
+// The JSON Schema (draft 2020-12) of feel/1, generated from the format's field table:
+// what docs/feel-1.schema.json holds (`feel schema` prints it) for editors to complete and
+// check fields. Ranges are left to the reader.
+[[nodiscard]] std::string json_schema();
+
 }  // namespace feel::format

@@ -14,6 +14,7 @@
 #include "feel/format/sensation_file.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
+#include "feel/sim/input_schedule.hpp"
 
 namespace feel::render {
 
@@ -26,12 +27,35 @@ inline constexpr double kMaxRateHz = 10000;
 inline constexpr double kMaxDurationS = 600;
 inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (88 B a row: ~180 MB)
 
+// A button or hat switch held down from press_us to release_us (`feel render --press`).
+struct Press {
+    Trigger control{};       // kind button (1..32) or hat (1..4)
+    int64_t press_us = 0;    // µs after the start, >= 0
+    int64_t release_us = 0;  // µs after the start, > press_us
+};
+
+// Parses a --press list: comma-separated tokens CONTROL@PRESS:RELEASE, CONTROL a button
+// number (1..32) or hatN:DIR (N 1..4, DIR up, down, left, right, up-left, up-right,
+// down-left, down-right: a reflex triggers on any direction off center), PRESS and
+// RELEASE seconds with 0 <= PRESS < RELEASE <= kMaxDurationS. Throws
+// std::invalid_argument naming the bad token and the allowed forms.
+[[nodiscard]] std::vector<Press> parse_presses(const std::string& spec);
+
+// The presses as a simulated device's input script (each press and its release). Throws
+// std::invalid_argument naming --press, the device and the allowed range for a button or
+// hat the profile lacks.
+[[nodiscard]] sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::DeviceProfile& profile);
+
 struct RenderOptions {
     const sim::DeviceProfile* profile = nullptr;  // required
     sim::Grip grip = sim::Grip::firm;
     std::string motion = "hold:0";                 // a TargetMotion spec
     double duration_s = 0;                         // 0: the sensation's length, or 2 s if endless
     double rate_hz = 1000;                         // whole Hz, kMinRateHz..kMaxRateHz
+    // Buttons and hats pressed during the render. Effects with a trigger (§6.3) are not
+    // started at t = 0: they are reflexes (§1.2.c) that start on each press of their
+    // trigger and every trigger_repeat_interval_us while it is held, as on the device.
+    std::vector<Press> presses;
 };
 
 struct TraceRow {
@@ -55,6 +79,7 @@ struct Trace {
     std::vector<TraceRow> rows;
     bool has_dynamics = false;                 // the sensation has a dynamic: mass columns
     std::vector<DynamicReport> final_reports;  // dynamics that ended by themselves (§5.2)
+    std::vector<int64_t> reflex_starts_us;     // when a reflex started its effect, µs (every effect)
     int64_t interim_reports = 0;               // interim reports the engine sent
 };
 
