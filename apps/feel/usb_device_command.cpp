@@ -48,7 +48,8 @@ int run_usb_device(const DeviceArgs& device, const UsbDeviceArgs& usb, std::ostr
         throw UsageError("--udc and --ffs exclude each other: with --ffs, whoever set up the FunctionFS "
                          "instance binds it to a UDC");
     }
-    const peripheral::PeripheralOptions options = peripheral_options(device);
+    peripheral::PeripheralOptions options = peripheral_options(device);
+    options.host_watchdog = false;  // the bus reports the host's going (FunctionFS DISABLE)
     usb::GadgetOptions gadget_options;
     gadget_options.udc = usb.udc;
     gadget_options.vendor_id = parse_usb_id("--vid", usb.vid);

@@ -761,6 +761,10 @@ struct DeviceSession::Impl {
             refuse(r.sequence, id, r.block, *why);
             return Step::done;
         }
+        if (auto why = detail::check_type_block_values(protocol::AnyReport{r}, b->type)) {
+            refuse(r.sequence, id, r.block, *why);
+            return Step::done;
+        }
         if constexpr (std::is_same_v<R, protocol::SetCustomForceReport>) {
             if (r.sample_count > caps.sample_memory) {
                 Refusal why = Refusal::out_of_range("set_custom_force.sample_count", r.sample_count,
@@ -845,6 +849,7 @@ struct DeviceSession::Impl {
         }
         EffectParams next = b->shadow;
         detail::apply_set_effect(r, next, caps);
+        detail::ignore_direction_of_per_axis_conditions(b->type, b->arrived.conditions, next);
         // PID's rule: an effect has an envelope when a Set Envelope arrived for its block
         // (Set Effect's vendor no_envelope can only take it away).
         next.has_envelope = next.has_envelope && b->arrived.envelope;

@@ -81,8 +81,9 @@ sim::Grip grip_named(const std::string& name) {
     throw std::invalid_argument("hand \"" + name + "\" is not a hand (allowed: " + names + ")");
 }
 
-runtime::RuntimeConfig config_for(const sim::DeviceProfile& profile, int32_t loop_rate_hz) {
+runtime::RuntimeConfig config_for(const sim::DeviceProfile& profile, int32_t loop_rate_hz, bool host_watchdog) {
     runtime::RuntimeConfig config = runtime::runtime_config_for(profile);
+    if (!host_watchdog) config.safety.host_timeout_us = kInfiniteUs;
     if (loop_rate_hz != 0) {
         const int32_t max = std::min(profile.max_loop_rate_hz, runtime::kMaxLoopRateHz);
         if (loop_rate_hz < runtime::kMinLoopRateHz || loop_rate_hz > max) {
@@ -154,7 +155,7 @@ struct Peripheral::Impl {
         : options(o),
           profile(&profile_named(o.profile)),
           caps(runtime::capabilities_for(*profile)),
-          config(config_for(*profile, o.loop_rate_hz)) {
+          config(config_for(*profile, o.loop_rate_hz, o.host_watchdog)) {
         const sim::Grip grip = grip_named(o.hand);
         sim::TargetMotion motion = sim::TargetMotion::parse(o.motion, kMotionSpanS, profile->axis_count);
         auto backend = std::make_unique<runtime::SimBackend>(*profile, grip, std::move(motion));

@@ -161,6 +161,19 @@ std::optional<Refusal> check_type_block_fits(ReportId id, EffectType type, uint1
                        block_words(block, type) + "; this report is for " + fitting_types(id));
 }
 
+std::optional<Refusal> check_type_block_values(const protocol::AnyReport& report, EffectType type) {
+    const auto* periodic = std::get_if<protocol::SetPeriodicReport>(&report);
+    if (periodic == nullptr || periodic->magnitude >= 0) return std::nullopt;
+    if (type != EffectType::saw_up && type != EffectType::saw_down) return std::nullopt;
+    // A saw upside down is the other saw (-saw_up(p) = saw_down(p)), which no phase gives:
+    // the slope's sign is the type's, and an effect's type never changes.
+    const bool up = type == EffectType::saw_up;
+    Refusal why = Refusal::out_of_range("set_periodic.magnitude", periodic->magnitude, range::kLevel);
+    why.rule = std::string("inverted, a ") + (up ? "saw_up is a saw_down" : "saw_down is a saw_up") +
+               " and a type never changes: create a " + (up ? "saw_down" : "saw_up") + " instead";
+    return why;
+}
+
 void apply_type_block(const protocol::AnyReport& report, Block& block) {
     EffectParams& p = block.shadow;
     Arrivals& a = block.arrived;
@@ -185,9 +198,18 @@ void apply_type_block(const protocol::AnyReport& report, Block& block) {
                 c.offset_mode = r.offset_mode;
                 a.conditions = static_cast<uint8_t>(a.conditions | (1u << r.axis_index));
             } else if constexpr (std::is_same_v<R, protocol::SetPeriodicReport>) {
+                const int32_t phase = r.phase == 36000 ? 0 : r.phase;  // 360° (a standard host's) is 0°
                 p.periodic.magnitude = r.magnitude;
                 p.periodic.offset = r.offset;
-                p.periodic.phase = r.phase == 36000 ? 0 : r.phase;  // 360° (a standard host's) is 0°
+                p.periodic.phase = phase;
+                if (is_periodic(block.type) && r.magnitude < 0) {
+                    // PID's Magnitude is signed; a negative one is the wave upside down (evdev's
+                    // negative periodic magnitude). A sine, square or triangle upside down is the
+                    // same wave half a period on: -w(p) = w(p + 1/2). The offset stays. Saws were
+                    // refused before (check_type_block_values).
+                    p.periodic.magnitude = -r.magnitude;
+                    p.periodic.phase = (phase + 18000) % 36000;
+                }
                 p.periodic.period_us = r.period_us;
                 a.periodic = true;
             } else if constexpr (std::is_same_v<R, protocol::SetSweepReport>) {
@@ -258,6 +280,19 @@ void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p, const
         for (int32_t& angle : p.direction.value) angle = angle == 36000 ? 0 : angle;
     }
     p.has_envelope = r.has_envelope;
+}
+
+void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived, EffectParams& p) noexcept {
+    // angle_spring is not here: its direction is the spring's angle.
+    if (type != EffectType::spring && type != EffectType::damper && type != EffectType::inertia &&
+        type != EffectType::friction) {
+        return;
+    }
+    const int axes = p.axis_count >= 1 && p.axis_count <= kMaxAxes ? p.axis_count : 1;
+    for (int i = 0; i < axes; ++i) {
+        if ((conditions_arrived & (1u << i)) == 0) return;  // check_blocks_complete names the missing one
+    }
+    p.direction = Direction{};
 }
 
 std::optional<Refusal> check_blocks_complete(const Block& block, const EffectParams& next, uint16_t index) {

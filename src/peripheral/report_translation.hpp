@@ -45,6 +45,13 @@ struct Refusal {
 [[nodiscard]] std::optional<Refusal> check_type_block_fits(protocol::ReportId id, EffectType type,
                                                            uint16_t block);
 
+// What a type block's values mean for an effect of this type, beyond the report's ranges.
+// A Set Periodic with a negative magnitude (PID's Magnitude is signed: the wave upside down,
+// evdev's negative periodic magnitude) is a wave half a period on for sine, square and
+// triangle (apply_type_block maps it), and the other saw for saw_up and saw_down, which
+// this refuses: an effect's type never changes (docs/protocol.md, "Standard hosts").
+[[nodiscard]] std::optional<Refusal> check_type_block_values(const protocol::AnyReport& report, EffectType type);
+
 // Writes a type block into the block's shadow and notes its arrival. The report must fit
 // (check_type_block_fits). Custom Force Data carries samples, not parameters: not here.
 void apply_type_block(const protocol::AnyReport& report, Block& block);
@@ -55,6 +62,15 @@ void apply_type_block(const protocol::AnyReport& report, Block& block);
 // and hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
 void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params,
                       const runtime::Capabilities& device);
+
+// DirectInput's rule for conditions (spring, damper, inertia, friction): given one Set
+// Condition per axis, the effect ignores its direction, which applies only to one block
+// given for several axes. hid-pidff always sends Direction Enable with a direction and
+// one block per axis; this drops that direction from `params` when every axis of the
+// effect has its block (`conditions_arrived`: bit i for axis i). feel's own effects take
+// no direction on conditions (the engine refuses one): the rule only reads the wire.
+void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived,
+                                             EffectParams& params) noexcept;
 
 // For a block's first commit: std::nullopt when every type block the effect needs has
 // arrived, else a Refusal naming the first one missing.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "feel/units.hpp"
 #include "session_rig.hpp"
 
 namespace feel::peripheral::test {
@@ -348,15 +349,15 @@ TEST(DeviceLimits, DynamicOnAnIforce1IsNotSupported) {
 TEST(DeviceLimits, EngineRefusalNamesFieldAndRangeAndRollsBack) {
     SessionRig rig;
     const uint16_t block = rig.create(EffectType::sine);
-    // -500 is a valid magnitude on the wire (sweeps are signed) but not for a sine.
-    rig.ok(periodic(rig.next_sequence(), block, -500, 20'000));
+    // A period of 0 ms is a valid time on the wire but a wave of no frequency for the engine.
+    rig.ok(periodic(rig.next_sequence(), block, 500, 0));
     const auto s = rig.command(set_effect(rig.next_sequence(), block, EffectType::sine));
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
-    EXPECT_STREQ(s.field, "periodic.magnitude");
+    EXPECT_STREQ(s.field, "periodic.period_us");
     EXPECT_TRUE(s.has_range);
-    EXPECT_EQ(s.value, -500);
-    EXPECT_EQ(s.allowed_min, 0);
-    EXPECT_EQ(s.allowed_max, 10000);
+    EXPECT_EQ(s.value, 0);
+    EXPECT_EQ(s.allowed_min, range::kPeriodUs.min);
+    EXPECT_EQ(s.allowed_max, range::kPeriodUs.max);
     EXPECT_EQ(rig.pipeline().resident_effects(), 0);
     // The refused transaction is gone: the block is as Create New Effect left it.
     const auto view = rig.session().block(block);
@@ -370,7 +371,7 @@ TEST(DeviceLimits, EngineRefusalNamesFieldAndRangeAndRollsBack) {
     rig.ok(periodic(rig.next_sequence(), block, 3000, 20'000));
     rig.ok(set_effect(rig.next_sequence(), block, EffectType::sine));
     const EffectParams committed = rig.session().block(block)->committed_params;
-    rig.ok(periodic(rig.next_sequence(), block, -1, 20'000));
+    rig.ok(periodic(rig.next_sequence(), block, 3000, 0));
     EXPECT_EQ(rig.command(set_effect(rig.next_sequence(), block, EffectType::sine)).code,
               ErrorCode::invalid_parameter);
     EXPECT_EQ(rig.session().block(block)->committed_params, committed);

@@ -40,6 +40,11 @@ struct PeripheralOptions {
     std::string motion = "hold:0";     // the hand's target motion (feel render --motion)
     int32_t loop_rate_hz = 0;          // 0: the profile's default; else 100..20000
     runtime::DeviceRuntimeOptions runtime{};  // SCHED_FIFO / mlockall wishes
+    // false: the transport says when the host goes (USB: unplug, bus reset, unbind end the
+    // connection), so silence is not loss: no host-link watchdog, neither the detach of a
+    // silent host nor the runtime's fade. A standard PID host (hid-pidff) sends nothing
+    // while its effects play and has no keep-alive.
+    bool host_watchdog = true;
 };
 
 struct PeripheralStats {
