@@ -45,13 +45,14 @@ fi
 fetch() {  # fetch PACKAGE: its .deb into the cache, unless it is there
     local pkg=$1
     if ! ls "$cache/${pkg}"_*.deb >/dev/null 2>&1; then
-        say "downloading $pkg"
-        (cd "$cache" && apt-get download -q "$pkg" >/dev/null 2>&1) || { say "apt-get download $pkg failed"; exit 1; }
+        # Messages go to stderr: this function's stdout is the path its caller captures.
+        say "downloading $pkg" >&2
+        (cd "$cache" && apt-get download -q "$pkg" >/dev/null 2>&1) || { say "apt-get download $pkg failed" >&2; return 1; }
     fi
     ls "$cache/${pkg}"_*.deb | sort -V | tail -1
 }
-kernel_deb=$(fetch "$kernel_pkg")
-busybox_deb=$(fetch busybox-static)
+kernel_deb=$(fetch "$kernel_pkg") || exit 1
+busybox_deb=$(fetch busybox-static) || exit 1
 
 # Each .deb is extracted once, next to it (the kernel's module tree is large).
 extract() {  # extract DEB: prints the directory it is extracted in
