@@ -8,6 +8,7 @@
 #include <ostream>
 #include <vector>
 
+#include "bridge_command.hpp"
 #include "cli.hpp"
 #include "device_command.hpp"
 #include "feel/format/sensation_file.hpp"
@@ -219,7 +220,18 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(exit_codes("the loop cannot run"));
 }
 
-constexpr const char* kCommands = "render, check, schema, devices, caps, descriptor, play, stream, monitor, device, bench, studio";
+constexpr const char* kCommands = "render, check, schema, devices, caps, descriptor, play, stream, monitor, device, bench, studio, bridge";
+
+void add_bridge(CLI::App& app, BridgeArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "bridge", "Make a feel device a Linux force-feedback joystick through uinput, for games "
+                  "(docs/real-devices.md); runs until Ctrl-C");
+    cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
+    cmd->add_option("--name", a.name, "The input device's name, 0..79 bytes (default: \"feel PROFILE (bridge)\")");
+    cmd->add_option("--log", a.log, "Write one line per report the device receives, feature reply and refusal to FILE");
+    cmd->add_option("--uinput", a.uinput, "The uinput device node")->capture_default_str();
+    cmd->footer(exit_codes("uinput missing or not permitted, a device that cannot be reached"));
+}
 
 void add_studio(CLI::App& app, StudioArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -294,7 +306,7 @@ std::string parse_error_message(const CLI::App& app, std::span<const std::string
 
 // Whether the command runs until its work ends or it is asked to stop (signals matter).
 bool long_running(const CLI::App& app) {
-    for (const char* name : {"device", "play", "stream", "monitor", "studio"}) {
+    for (const char* name : {"device", "play", "stream", "monitor", "studio", "bridge"}) {
         if (app.got_subcommand(name)) return true;
     }
     return false;
@@ -343,6 +355,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     StudioArgs studio_args;
     add_studio(app, studio_args);
     add_bench(app, bench_loop_args);
+    BridgeArgs bridge_args;
+    add_bridge(app, bridge_args);
 
     // Progress is redrawn in place only on a terminal (live_output.hpp).
     const bool terminal = &out == &std::cout && ::isatty(STDOUT_FILENO) == 1;
@@ -392,6 +406,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
         } else if (app.got_subcommand("device")) {
             if (usb_args.usb) return run_usb_device(device_args, usb_args, out, err, stop_requested());
             return run_device(device_args, out, err, stop_requested());
+        } else if (app.got_subcommand("bridge")) {
+            return run_bridge_command(bridge_args, out, err, stop_requested());
         } else if (app.got_subcommand("bench")) {
             run_bench_loop(bench_loop_args, out, err);  // "loop" is bench's only subcommand
         }
