@@ -14,8 +14,12 @@ mount -t tmpfs tmpfs /tmp
 mount -t tmpfs tmpfs /run
 
 hs=1
+bridge=0
 for word in $(cat /proc/cmdline); do
-    case $word in feel.hs=*) hs=${word#feel.hs=} ;; esac
+    case $word in
+        feel.hs=*) hs=${word#feel.hs=} ;;
+        feel.bridge=*) bridge=${word#feel.bridge=} ;;
+    esac
 done
 
 mark() { echo "==== $* t=$(cut -d' ' -f1 /proc/uptime)"; }
@@ -111,5 +115,46 @@ for judge in fftest testhaptic; do
     cat /tmp/$judge.spy 2>/dev/null
     echo "==== $judge spy end"
 done
+
+# --- feel bridge: the simulated device as a uinput joystick (docs/real-devices.md) -------
+# The USB device is gone by now, so the bridge's event node is the only one with EV_FF.
+if [ "$bridge" = 1 ]; then
+    mark "bridge begin"
+    feel bridge --device sim:iforce2 --log /tmp/bridge.log > /tmp/bridge.out 2>&1 &
+    bridge_pid=$!
+    bridge_event=
+    for i in $(seq 1 300); do
+        bridge_event=$(sed -n 's|.* as \(/dev/input/event[0-9]*\) .*|\1|p' /tmp/bridge.out)
+        [ -n "$bridge_event" ] && break
+        kill -0 "$bridge_pid" 2>/dev/null || break
+        sleep 0.1
+    done
+    cat /tmp/bridge.out
+    if [ -z "$bridge_event" ]; then
+        mark "no bridge event device"
+    else
+        mark "bridge event device $bridge_event"
+        mark "bridge fftest begin"
+        ( for n in 0 1 2 3 4 5; do echo $n; sleep 1.2; done; echo -1 ) |
+            FF_SPY_LOG=/tmp/bridge-fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 60 fftest "$bridge_event" 2>&1
+        mark "bridge fftest end"
+        mark "bridge testhaptic begin"
+        FF_SPY_LOG=/tmp/bridge-testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
+        mark "bridge testhaptic end"
+    fi
+    kill -TERM "$bridge_pid" 2>/dev/null
+    for i in $(seq 1 50); do kill -0 "$bridge_pid" 2>/dev/null || break; sleep 0.1; done
+    wait "$bridge_pid"
+    echo "feel bridge exit status $?"
+    cat /tmp/bridge.out
+    echo "==== feel bridge.log begin"
+    cat /tmp/bridge.log 2>/dev/null
+    echo "==== feel bridge.log end"
+    for judge in bridge-fftest bridge-testhaptic; do
+        echo "==== $judge spy begin"
+        cat /tmp/$judge.spy 2>/dev/null
+        echo "==== $judge spy end"
+    done
+fi
 dmesg | grep -iE 'pidff|force|hid|usb' | sed 's/^/dmesg: /'
 finish

@@ -3,6 +3,8 @@
 #
 #   tests/linux/run.sh FEEL_BINARY CHECKER_BINARY FF_SPY_LIBRARY FF_PROBE [OUT_DIR]
 #
+# The bridge's checker (check_bridge_log) is found beside CHECKER_BINARY.
+#
 # Why a VM. These machines have no USB and their kernel cannot load modules. Debian's own
 # kernel package (linux-image-6.1.0-*-amd64) has everything as modules: dummy_hcd (a USB
 # device controller wired to a USB host controller in the same kernel), libcomposite and
@@ -22,6 +24,7 @@ set -euo pipefail
 
 feel=$(realpath "$1")
 checker=$(realpath "$2")
+bridge_checker=$(dirname "$checker")/feel_check_bridge_log
 spy=$(realpath "$3")
 probe=$(realpath "$4")
 out=${5:-out/linux}
@@ -80,7 +83,7 @@ done
 modules=(drivers/usb/common/usb-common drivers/usb/core/usbcore drivers/usb/gadget/udc/udc-core
          fs/configfs/configfs drivers/usb/gadget/libcomposite drivers/usb/gadget/udc/dummy_hcd
          drivers/usb/gadget/function/usb_f_fs drivers/hid/hid drivers/hid/usbhid/usbhid
-         drivers/hid/hid-generic drivers/input/evdev)
+         drivers/hid/hid-generic drivers/input/evdev drivers/input/misc/uinput)
 : > "$root/etc/modules.order"
 for m in "${modules[@]}"; do
     src=$kernel_dir/lib/modules/$kver/kernel/$m.ko
@@ -120,28 +123,31 @@ say "initramfs $(du -h "$work/initramfs.gz" | cut -f1), kernel $kver"
 
 # --- boot, once per speed ---------------------------------------------------------------
 boot() {  # boot SPEED: high or full
-    local speed=$1 hs=1
+    local speed=$1 hs=1 bridge=0
     [[ $speed == full ]] && hs=0
+    [[ $speed == "$first" ]] && bridge=1  # feel bridge needs no USB: one run is enough
     local console=$out/console-$speed.log
     local t0
     t0=$(date +%s%N)
     timeout 600 qemu-system-x86_64 -accel tcg -m 512M -smp 2 -nographic -no-reboot -nic none \
         -kernel "$vmlinuz" -initrd "$work/initramfs.gz" \
-        -append "console=ttyS0 panic=-1 quiet loglevel=4 feel.hs=$hs usbhid.dyndbg=+p" \
+        -append "console=ttyS0 panic=-1 quiet loglevel=4 feel.hs=$hs feel.bridge=$bridge usbhid.dyndbg=+p" \
         > "$console" 2>&1 </dev/null || { say "qemu failed ($speed speed), see $console"; return 1; }
     say "$speed speed: the VM ran $(seconds_since "$t0") s"
     # The VM writes its device log between markers on the console.
     sed -n '/^==== feel device.log begin/,/^==== feel device.log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
         > "$out/device-$speed.log"
     sed -n '/^==== probe begin/,/^==== probe end/p' "$console" | sed '1d;$d' | tr -d '\r' > "$out/probe-$speed.log"
-    for judge in fftest testhaptic; do
+    for judge in fftest testhaptic bridge-fftest bridge-testhaptic; do
         sed -n "/^==== $judge spy begin/,/^==== $judge spy end/p" "$console" | sed '1d;$d' | tr -d '\r' \
             > "$out/$judge-$speed.spy"
     done
+    sed -n '/^==== feel bridge.log begin/,/^==== feel bridge.log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
+        > "$out/bridge-$speed.log"
 }
 speeds=${FEEL_LINUX_SPEEDS:-high full}
-for speed in $speeds; do boot "$speed"; done
 first=${speeds%% *}
+for speed in $speeds; do boot "$speed"; done
 cp "$out/console-$first.log" "$out/console.log"
 cp "$out/device-$first.log" "$out/device.log"
 
@@ -154,6 +160,13 @@ for speed in $speeds; do
     read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-$speed.txt" | tail -1) || true
     passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 done
+# feel bridge (docs/real-devices.md), run in the first speed's VM: what fftest and
+# testhaptic asked the bridge's event node for against what the feel device received.
+"$bridge_checker" --console "$out/console-$first.log" --wire-log "$out/bridge-$first.log" \
+    --fftest "$out/bridge-fftest-$first.spy" --testhaptic "$out/bridge-testhaptic-$first.spy" \
+    | tee "$out/check-bridge.txt" || status=1
+read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-bridge.txt" | tail -1) || true
+passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 say "done in $(seconds_since "$started") s (console: $out/console.log, device log: $out/device.log)"
 echo "linux: $passed passed, $failed failed"
 exit $status
