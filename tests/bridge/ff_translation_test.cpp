@@ -32,7 +32,7 @@ ff_effect base(uint16_t type) {
     return e;
 }
 
-const EffectParams& only(const Translation& t) {
+EffectParams only(const Translation& t) {
     EXPECT_EQ(t.error, 0) << t.message;
     EXPECT_EQ(t.effects.size(), 1u);
     return t.effects.at(0);
@@ -42,7 +42,7 @@ TEST(FfTranslation, ConstantForceEveryField) {
     ff_effect e = base(FF_CONSTANT);
     e.u.constant.level = -16384;
     e.u.constant.envelope = {.attack_length = 100, .attack_level = 0x7fff, .fade_length = 300, .fade_level = 4096};
-    const EffectParams& p = only(translate_effect(e, stick()));
+    const EffectParams p = only(translate_effect(e, stick()));
     EXPECT_EQ(p.type, EffectType::constant);
     EXPECT_EQ(p.constant.magnitude, -5000);  // -16384 * 10000 / 32768
     EXPECT_EQ(p.duration_us, 2'000'000);     // replay.length 2000 ms
@@ -65,7 +65,7 @@ TEST(FfTranslation, ZeroLengthIsEndlessAndNoEnvelopeIsNone) {
     ff_effect e = base(FF_CONSTANT);
     e.replay.length = 0;
     e.u.constant.level = 32767;
-    const EffectParams& p = only(translate_effect(e, stick()));
+    const EffectParams p = only(translate_effect(e, stick()));
     EXPECT_EQ(p.duration_us, kInfiniteUs);
     EXPECT_FALSE(p.has_envelope);
     EXPECT_EQ(p.constant.magnitude, 10000);
@@ -75,7 +75,7 @@ TEST(FfTranslation, RampLevels) {
     ff_effect e = base(FF_RAMP);
     e.u.ramp.start_level = 16384;
     e.u.ramp.end_level = -16384;
-    const EffectParams& p = only(translate_effect(e, stick()));
+    const EffectParams p = only(translate_effect(e, stick()));
     EXPECT_EQ(p.type, EffectType::ramp);
     EXPECT_EQ(p.ramp.start, 5000);
     EXPECT_EQ(p.ramp.end, -5000);
@@ -92,7 +92,7 @@ TEST(FfTranslation, PeriodicWaveformsAndFields) {
         e.u.periodic.magnitude = 24576;
         e.u.periodic.offset = -8192;
         e.u.periodic.phase = 0x4000;
-        const EffectParams& p = only(translate_effect(e, stick()));
+        const EffectParams p = only(translate_effect(e, stick()));
         EXPECT_EQ(p.type, type);
         EXPECT_EQ(p.periodic.period_us, 20'000);
         EXPECT_EQ(p.periodic.magnitude, 7500);  // 24576 * 10000 / 32767 = 7500.2
@@ -108,14 +108,14 @@ TEST(FfTranslation, NegativeMagnitudeIsTheWaveUpsideDown) {
     e.u.periodic.period = 1000;
     e.u.periodic.magnitude = -8192;
     e.u.periodic.phase = 0x8000;  // 180°, plus the 180° of the sign: a whole turn
-    const EffectParams& p = only(translate_effect(e, stick()));
+    const EffectParams p = only(translate_effect(e, stick()));
     EXPECT_EQ(p.type, EffectType::sine);
     EXPECT_EQ(p.periodic.magnitude, 2500);
     EXPECT_EQ(p.periodic.phase, 0);
     // A saw up upside down (1 - 2p instead of 2p - 1) is the saw down, same phase.
     e.u.periodic.waveform = FF_SAW_UP;
     e.u.periodic.phase = 0;
-    const EffectParams& saw = only(translate_effect(e, stick()));
+    const EffectParams saw = only(translate_effect(e, stick()));
     EXPECT_EQ(saw.type, EffectType::saw_down);
     EXPECT_EQ(saw.periodic.magnitude, 2500);
     EXPECT_EQ(saw.periodic.phase, 0);
@@ -130,7 +130,7 @@ TEST(FfTranslation, ConditionsOnePerAxis) {
                             .left_coeff = -8192, .deadband = 0x8000, .center = 32767};
         e.u.condition[1] = {.right_saturation = 0, .left_saturation = 49152, .right_coeff = -32768,
                             .left_coeff = 0, .deadband = 0, .center = -16384};
-        const EffectParams& p = only(translate_effect(e, stick()));
+        const EffectParams p = only(translate_effect(e, stick()));
         EXPECT_EQ(p.type, feel_type);
         EXPECT_EQ(p.direction.kind, DirectionKind::none);  // a condition acts on each axis
         ASSERT_EQ(p.axis_count, 2);
@@ -179,7 +179,7 @@ TEST(FfTranslation, TriggerButtonsAndRepeat) {
     ff_effect e = base(FF_CONSTANT);
     e.trigger.button = BTN_TRIGGER + 2;  // BTN_THUMB2: the third button
     e.trigger.interval = 150;
-    const EffectParams& p = only(translate_effect(e, stick()));
+    const EffectParams p = only(translate_effect(e, stick()));
     EXPECT_EQ(p.trigger.kind, TriggerKind::button);
     EXPECT_EQ(p.trigger.index, 3);
     EXPECT_EQ(p.trigger_repeat_interval_us, 150'000);
@@ -193,7 +193,7 @@ TEST(FfTranslation, OneAxisDeviceTakesTheComponentAlongItsAxis) {
     ff_effect e = base(FF_CONSTANT);
     e.u.constant.level = 32767;
     e.direction = 0xc000;  // 270°: sin = -1
-    const EffectParams& p = only(translate_effect(e, stick(1)));
+    const EffectParams p = only(translate_effect(e, stick(1)));
     EXPECT_EQ(p.axis_count, 1);
     EXPECT_EQ(p.direction.kind, DirectionKind::cartesian);
     EXPECT_EQ(p.direction.value[0], -10000);
@@ -234,8 +234,8 @@ TEST(FfTranslation, RefusesWhatFeelCannotPlayNamingTheField) {
 TEST(FfTranslation, CapabilitiesFollowTheDevice) {
     host::DeviceCaps caps = stick();
     FfCapabilities all = ff_capabilities(caps);
-    for (uint16_t bit : {FF_CONSTANT, FF_PERIODIC, FF_RAMP, FF_SPRING, FF_DAMPER, FF_INERTIA, FF_FRICTION, FF_RUMBLE,
-                         FF_GAIN, FF_AUTOCENTER, FF_SQUARE, FF_TRIANGLE, FF_SINE, FF_SAW_UP, FF_SAW_DOWN}) {
+    for (int bit : {FF_CONSTANT, FF_PERIODIC, FF_RAMP, FF_SPRING, FF_DAMPER, FF_INERTIA, FF_FRICTION, FF_RUMBLE,
+                    FF_GAIN, FF_AUTOCENTER, FF_SQUARE, FF_TRIANGLE, FF_SINE, FF_SAW_UP, FF_SAW_DOWN}) {
         EXPECT_NE(std::find(all.bits.begin(), all.bits.end(), bit), all.bits.end()) << bit;
     }
     EXPECT_TRUE(all.missing.empty());

@@ -1,0 +1,117 @@
+// What the Linux VM's checkers share (tests/linux: check_device_log.cpp for feel's USB device,
+// check_bridge_log.cpp for `feel bridge`): reading the logs' "<t> <verb> [<report>] k=v ..."
+// lines, counting checks, and the independent truth both compare against: hid-pidff's
+// conversions from evdev's units to a field's logical range (drivers/hid/usbhid/hid-pidff.c,
+// Linux 6.1), written out here from the kernel's source, and feel's documented ranges.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace feel_linux_checks {
+
+struct Line {
+    double t = 0;
+    std::string verb;                       // spy: upload, uploaded, play, gain, ...; device: frame kind
+    std::string report;                     // device log: the report key
+    std::map<std::string, int64_t> fields;  // name=value pairs
+    std::string text;
+};
+
+inline std::vector<std::string> read_lines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    return lines;
+}
+
+// "<t> <verb> [<report>] k=v k=v ..." (values decimal or 0x hex).
+inline std::optional<Line> parse(const std::string& text, bool has_report) {
+    std::istringstream in(text);
+    Line l;
+    l.text = text;
+    if (!(in >> l.t >> l.verb)) return std::nullopt;
+    std::string word;
+    bool first = true;
+    while (in >> word) {
+        const std::size_t eq = word.find('=');
+        if (eq == std::string::npos) {
+            if (first && has_report) l.report = word;
+            first = false;
+            continue;
+        }
+        first = false;
+        const std::string value = word.substr(eq + 1);
+        char* end = nullptr;
+        const long long v = std::strtoll(value.c_str(), &end, 0);
+        if (end != value.c_str()) l.fields[word.substr(0, eq)] = v;
+    }
+    return l;
+}
+
+struct Checks {
+    int passed = 0, failed = 0;
+    std::string prefix;
+    void expect(bool ok, const std::string& what) {
+        (ok ? passed : failed)++;
+        std::cout << (ok ? "ok     " : "FAIL   ") << prefix << what << "\n";
+    }
+    void equal(int64_t got, int64_t want, const std::string& what, int64_t tolerance = 0) {
+        expect(std::llabs(got - want) <= tolerance,
+               what + " = " + std::to_string(got) + " (expected " + std::to_string(want) + ")");
+    }
+};
+
+// hid-pidff's conversions (Linux 6.1, drivers/hid/usbhid/hid-pidff.c), for a field with
+// logical range [min, max]:
+//   pidff_rescale(i, m):  i * (max - min) / m + min
+//   pidff_set(u16 v):     pidff_rescale(v, 0xffff)                 gains, saturations, deadband, phase
+//   pidff_set_signed(v):  min < 0: v > 0 ? v * max / 0x7fff : v * min / -0x8000
+//                         min >= 0: v >= 0 ? rescale(v, 0x7fff) : rescale(-v, 0x8000)
+//   envelope levels:      pidff_rescale(min(v, 0x7fff), 0x7fff)
+//   times:                the value unchanged (milliseconds)
+//   direction:            pidff_rescale(direction, 0xffff)
+inline int64_t rescale(int64_t i, int64_t m, int64_t min, int64_t max) { return i * (max - min) / m + min; }
+inline int64_t set_unsigned(int64_t v, int64_t min, int64_t max) { return rescale(v, 0xffff, min, max); }
+inline int64_t set_signed(int64_t v, int64_t min, int64_t max) {
+    if (min < 0) return v == 0 ? 0 : v > 0 ? v * max / 0x7fff : v * min / -0x8000;
+    return v >= 0 ? rescale(v, 0x7fff, min, max) : rescale(-v, 0x8000, min, max);
+}
+inline int64_t envelope_level(int64_t v, int64_t min, int64_t max) { return rescale(std::min<int64_t>(v, 0x7fff), 0x7fff, min, max); }
+
+// feel's logical ranges (docs/protocol.md).
+constexpr int64_t kLevel = 10000;     // levels and magnitudes: 0..10000 or -10000..10000
+constexpr int64_t kAngle = 36000;     // direction: 0..36000 hundredths of a degree
+
+// PID 1.0's effect type usages (HID PID 1.0 §5.2, page 0x0F) for evdev's types.
+inline int pid_effect_usage(int64_t type, int64_t waveform) {
+    switch (type) {
+        case 0x52: return 0x26;  // FF_CONSTANT -> ET Constant Force
+        case 0x57: return 0x27;  // FF_RAMP -> ET Ramp
+        case 0x53: return 0x40;  // FF_SPRING -> ET Spring
+        case 0x54: return 0x43;  // FF_FRICTION -> ET Friction
+        case 0x55: return 0x41;  // FF_DAMPER -> ET Damper
+        case 0x56: return 0x42;  // FF_INERTIA -> ET Inertia
+        case 0x51:               // FF_PERIODIC
+        case 0x50:               // FF_RUMBLE: ff-core makes it a 50 ms sine
+            switch (type == 0x50 ? 0x5a : waveform) {
+                case 0x58: return 0x30;  // FF_SQUARE -> ET Square
+                case 0x59: return 0x32;  // FF_TRIANGLE -> ET Triangle
+                case 0x5a: return 0x31;  // FF_SINE -> ET Sine
+                case 0x5b: return 0x33;  // FF_SAW_UP -> ET Sawtooth Up
+                case 0x5c: return 0x34;  // FF_SAW_DOWN -> ET Sawtooth Down
+                default: return 0;
+            }
+        default: return 0;
+    }
+}
+
+}  // namespace feel_linux_checks
