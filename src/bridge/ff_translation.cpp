@@ -122,6 +122,29 @@ std::string not_on_device(EffectType t, const host::DeviceCaps& caps) {
     return std::string("this device (") + caps.device + ") does not play " + std::string(effect_type_name(t));
 }
 
+// evdev's times reach 65535 ms; feel's stop at 65 s (the primer's "0 to 65 million" µs).
+constexpr uint16_t kMaxTimeMs = static_cast<uint16_t>(kMaxTimeUs / 1000);
+
+std::string time_too_long(const char* field, uint16_t ms) {
+    if (ms <= kMaxTimeMs) return {};
+    return std::string("ff_effect ") + field + " = " + std::to_string(ms) + " ms is out of range (allowed 0..65000 ms)";
+}
+
+// The times of the effect's own kind (evdev leaves the others' bytes to the union).
+std::string check_times(const ff_effect& e) {
+    std::string why = time_too_long("replay.length", e.replay.length);
+    if (why.empty()) why = time_too_long("replay.delay", e.replay.delay);
+    if (why.empty() && e.type != FF_RUMBLE && e.trigger.button != 0) why = time_too_long("trigger.interval", e.trigger.interval);
+    const ff_envelope* envelope = e.type == FF_CONSTANT ? &e.u.constant.envelope
+                                  : e.type == FF_RAMP   ? &e.u.ramp.envelope
+                                  : e.type == FF_PERIODIC ? &e.u.periodic.envelope
+                                                          : nullptr;
+    if (why.empty() && envelope != nullptr) why = time_too_long("envelope.attack_length", envelope->attack_length);
+    if (why.empty() && envelope != nullptr) why = time_too_long("envelope.fade_length", envelope->fade_length);
+    if (why.empty() && e.type == FF_PERIODIC) why = time_too_long("u.periodic.period", e.u.periodic.period);
+    return why;
+}
+
 // The fields every effect shares: replay, trigger.
 std::string set_common(const ff_effect& e, EffectParams& p) {
     p.duration_us = e.replay.length == 0 ? kInfiniteUs : evdev_ms_to_us(e.replay.length);
@@ -164,6 +187,7 @@ int32_t iterations_of_count(int32_t value) noexcept { return value <= 254 ? valu
 
 Translation translate_effect(const ff_effect& e, const host::DeviceCaps& caps) {
     if (caps.axis_count < 1) return refuse("the device has no axes");
+    if (std::string why = check_times(e); !why.empty()) return refuse(why);
     EffectParams p;
     if (e.type != FF_RUMBLE) {
         // FF_RUMBLE has neither trigger nor direction (games leave them uninitialised).
@@ -198,7 +222,7 @@ Translation translate_effect(const ff_effect& e, const host::DeviceCaps& caps) {
                               " is not offered (allowed FF_SQUARE 0x58, FF_TRIANGLE 0x59, FF_SINE 0x5a, "
                               "FF_SAW_UP 0x5b, FF_SAW_DOWN 0x5c)");
             }
-            if (w.period == 0) return refuse("ff_effect u.periodic.period = 0 is out of range (allowed 1..65535 ms)");
+            if (w.period == 0) return refuse("ff_effect u.periodic.period = 0 is out of range (allowed 1..65000 ms)");
             const bool inverted = w.magnitude < 0;
             if (std::string why = need(inverted ? wave->inverted : wave->type); !why.empty()) return refuse(why);
             const int32_t magnitude = evdev_signed_level(w.magnitude);

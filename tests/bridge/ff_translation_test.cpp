@@ -214,7 +214,12 @@ TEST(FfTranslation, RefusesWhatFeelCannotPlayNamingTheField) {
     ff_effect e = base(FF_PERIODIC);
     e.u.periodic.waveform = FF_SINE;
     e.u.periodic.period = 0;
-    expect_refused(e, "u.periodic.period = 0 is out of range (allowed 1..65535 ms)");
+    expect_refused(e, "u.periodic.period = 0 is out of range (allowed 1..65000 ms)");
+    e.u.periodic.period = 65001;  // evdev's 16 bits reach past feel's 65 s
+    expect_refused(e, "u.periodic.period = 65001 ms is out of range (allowed 0..65000 ms)");
+    ff_effect long_one = base(FF_CONSTANT);
+    long_one.replay.length = 65535;
+    expect_refused(long_one, "replay.length = 65535 ms is out of range");
     e.u.periodic.period = 10;
     e.u.periodic.waveform = FF_CUSTOM;
     expect_refused(e, "u.periodic.waveform = 0x005d is not offered");
