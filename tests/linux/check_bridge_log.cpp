@@ -1,6 +1,7 @@
 // `feel bridge` in the Linux VM (tests/linux/run.sh): reads what the VM left and decides.
 //
 //   feel_check_bridge_log --console FILE --wire-log FILE --fftest SPY_LOG --testhaptic SPY_LOG
+//                         --events HEX_DUMP
 //
 // In the VM, `feel bridge --device sim:iforce2 --log FILE` made a uinput joystick; fftest and
 // SDL2's testhaptic played their effects on its event node with ff_spy.so preloaded.
@@ -11,6 +12,9 @@
 //     units and feel units"), which is hid-pidff's arithmetic, written out independently in
 //     log_checks.hpp from the kernel's source; FF_RUMBLE's documented pair of sines;
 //   - the kernel, which answered each program's EVIOCSFF with the bridge's reply.
+//   - the kernel's input events read from the bridge's node while fftest played (one struct
+//     input_event a line, in hex): the axes the banner declares, each within -10000..10000,
+//     in SYN_REPORT batches.
 // The wire log says what the feel device received over its cable: each uploaded effect is
 // found by the Create New Effect(s) between the program's EVIOCSFF and its return (the
 // bridge answers the kernel only after the device answered), and every field is compared.
@@ -193,6 +197,33 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
     }
 }
 
+// struct input_event on x86-64 (linux/input.h): struct timeval (16 bytes), __u16 type,
+// __u16 code, __s32 value, little-endian.
+void check_events(const std::vector<std::string>& hex, Checks& c) {
+    constexpr int kEvSyn = 0, kEvAbs = 3, kAbsX = 0, kAbsY = 1;
+    auto byte = [](const std::string& h, std::size_t i) { return static_cast<uint32_t>(std::stoul(h.substr(2 * i, 2), nullptr, 16)); };
+    int abs_x = 0, abs_y = 0, syn = 0, outside = 0, other = 0;
+    for (const std::string& h : hex) {
+        if (h.size() != 48) continue;
+        const uint32_t type = byte(h, 16) | byte(h, 17) << 8;
+        const uint32_t code = byte(h, 18) | byte(h, 19) << 8;
+        const auto value = static_cast<int32_t>(byte(h, 20) | byte(h, 21) << 8 | byte(h, 22) << 16 | byte(h, 23) << 24);
+        if (type == kEvSyn) {
+            ++syn;
+        } else if (type == kEvAbs && (code == kAbsX || code == kAbsY)) {
+            (code == kAbsX ? abs_x : abs_y)++;
+            if (value < -10000 || value > 10000) ++outside;
+        } else if (type != 1) {  // EV_KEY may come too
+            ++other;
+        }
+    }
+    std::printf("measure [bridge] input events while fftest played: %d ABS_X, %d ABS_Y, %d SYN_REPORT\n", abs_x, abs_y, syn);
+    c.expect(abs_x + abs_y > 0, "the handle's positions came out as EV_ABS events (ABS_X/ABS_Y)");
+    c.expect(syn > 0, "the events came in SYN_REPORT batches");
+    c.equal(outside, 0, "EV_ABS values outside -10000..10000");
+    c.equal(other, 0, "events other than EV_ABS, EV_KEY and EV_SYN");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -305,6 +336,7 @@ int main(int argc, char** argv) {
         }
         c.prefix = "[bridge] ";
     }
+    check_events(read_lines(args["--events"]), c);
     std::cout << c.prefix << c.passed << " passed, " << c.failed << " failed\n";
     return c.failed == 0 ? 0 : 1;
 }

@@ -135,9 +135,17 @@ if [ "$bridge" = 1 ]; then
     else
         mark "bridge event device $bridge_event"
         mark "bridge fftest begin"
+        # The handle's motion under fftest's forces, as input events: the first 1000
+        # (struct input_event, 24 bytes each on x86-64) read from the node meanwhile.
+        ( timeout 6 cat "$bridge_event" | head -c 24000 > /tmp/bridge-events.bin ) &
+        events_reader=$!
         ( for n in 0 1 2 3 4 5; do echo $n; sleep 1.2; done; echo -1 ) |
             FF_SPY_LOG=/tmp/bridge-fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 60 fftest "$bridge_event" 2>&1
         mark "bridge fftest end"
+        wait "$events_reader"
+        echo "==== bridge events begin"
+        hexdump -v -e '24/1 "%02x" "\n"' /tmp/bridge-events.bin
+        echo "==== bridge events end"
         mark "bridge testhaptic begin"
         FF_SPY_LOG=/tmp/bridge-testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
         mark "bridge testhaptic end"
