@@ -51,15 +51,6 @@ const Line* last_line(const std::vector<Line>& log, const std::string& report, i
     return found;
 }
 
-// The value of the first of `names` the line has (the report table's name, then older ones).
-int64_t get(const Line& l, std::initializer_list<const char*> names, Checks& c, const std::string& at) {
-    for (const char* name : names) {
-        if (auto it = l.fields.find(name); it != l.fields.end()) return it->second;
-    }
-    c.expect(false, at + l.report + " has no field " + *names.begin() + ": " + l.text);
-    return INT64_MIN;
-}
-
 int64_t angle(int64_t evdev) { return rescale(evdev, 0xffff, 0, kAngle) % kAngle; }
 
 struct Upload {
@@ -105,11 +96,7 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
             return;
         }
         c.expect(env != nullptr, where + "Set Envelope received");
-        if (env == nullptr) return;
-        c.equal(get(*env, {"attack_level", "impulse_level"}, c, where), envelope_level(a.fields.at("attack_level"), 0, kLevel), where + "attack level");
-        c.equal(get(*env, {"attack_time_ms", "settle_time_ms"}, c, where), a.fields.at("attack_length"), where + "attack time ms");
-        c.equal(get(*env, {"fade_level"}, c, where), envelope_level(a.fields.at("fade_level"), 0, kLevel), where + "fade level");
-        c.equal(get(*env, {"fade_time_ms"}, c, where), a.fields.at("fade_length"), where + "fade time ms");
+        if (env != nullptr) check_envelope_fields(a, *env, c, where);
     };
     for (std::size_t k = 0; k < u.blocks.size(); ++k) {
         const int64_t block = u.blocks[k];
@@ -117,26 +104,26 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
         const Line* effect = last_line(log, "set_effect", block, from, to);
         c.expect(effect != nullptr, where + "Set Effect received");
         if (effect == nullptr) continue;
-        c.equal(get(*effect, {"type_usage"}, c, where), pid_effect_usage(type == 0x50 ? 0x51 : type, type == 0x50 ? 0x5a : waveform),
+        c.equal(field(*effect, {"type_usage"}, c, where), pid_effect_usage(type == 0x50 ? 0x51 : type, type == 0x50 ? 0x5a : waveform),
                 where + "effect type usage");
         const int64_t length = a.fields.at("length");
-        c.equal(get(*effect, {"duration_ms"}, c, where), length == 0 ? 0xFFFF : length, where + "duration ms (0: infinite, 0xFFFF)");
-        c.equal(get(*effect, {"start_delay_ms"}, c, where), a.fields.at("delay"), where + "start delay ms");
-        c.equal(get(*effect, {"gain"}, c, where), kLevel, where + "effect gain (evdev has none: full)");
-        c.equal(get(*effect, {"trigger_index", "trigger_button"}, c, where), type == 0x50 ? 0 : a.fields.at("trigger_button"),
+        c.equal(field(*effect, {"duration_ms"}, c, where), length == 0 ? 0xFFFF : length, where + "duration ms (0: infinite, 0xFFFF)");
+        c.equal(field(*effect, {"start_delay_ms"}, c, where), a.fields.at("delay"), where + "start delay ms");
+        c.equal(field(*effect, {"gain"}, c, where), kLevel, where + "effect gain (evdev has none: full)");
+        c.equal(field(*effect, {"trigger_index", "trigger_button"}, c, where), type == 0x50 ? 0 : a.fields.at("trigger_button"),
                 where + "trigger button (none; FF_RUMBLE has no trigger)");
         if (wave) {
-            c.equal(get(*effect, {"direction_enable"}, c, where), 1, where + "direction given");
-            c.equal(get(*effect, {"direction_angle[0]", "direction[0]"}, c, where), angle(a.fields.at("direction")),
+            c.equal(field(*effect, {"direction_enable"}, c, where), 1, where + "direction given");
+            c.equal(field(*effect, {"direction_angle[0]", "direction[0]"}, c, where), angle(a.fields.at("direction")),
                     where + "direction (evdev 0..0xFFFF -> 0..35999)");
         } else {
-            c.equal(get(*effect, {"direction_enable"}, c, where), 0, where + "no direction (conditions act per axis; rumble on one axis)");
+            c.equal(field(*effect, {"direction_enable"}, c, where), 0, where + "no direction (conditions act per axis; rumble on one axis)");
         }
         switch (type) {
             case 0x52: {
                 const Line* r = last_line(log, "set_constant_force", block, from, to);
                 c.expect(r != nullptr, where + "Set Constant Force received");
-                if (r) c.equal(get(*r, {"magnitude"}, c, where), set_signed(a.fields.at("level"), -kLevel, kLevel), where + "level");
+                if (r) c.equal(field(*r, {"magnitude"}, c, where), set_signed(a.fields.at("level"), -kLevel, kLevel), where + "level");
                 envelope_of(block, where);
                 break;
             }
@@ -144,8 +131,8 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
                 const Line* r = last_line(log, "set_ramp_force", block, from, to);
                 c.expect(r != nullptr, where + "Set Ramp Force received");
                 if (r) {
-                    c.equal(get(*r, {"ramp_start", "start"}, c, where), set_signed(a.fields.at("start_level"), -kLevel, kLevel), where + "ramp start");
-                    c.equal(get(*r, {"ramp_end", "end"}, c, where), set_signed(a.fields.at("end_level"), -kLevel, kLevel), where + "ramp end");
+                    c.equal(field(*r, {"ramp_start", "start"}, c, where), set_signed(a.fields.at("start_level"), -kLevel, kLevel), where + "ramp start");
+                    c.equal(field(*r, {"ramp_end", "end"}, c, where), set_signed(a.fields.at("end_level"), -kLevel, kLevel), where + "ramp end");
                 }
                 envelope_of(block, where);
                 break;
@@ -155,11 +142,11 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
                 c.expect(r != nullptr, where + "Set Periodic received");
                 if (r) {
                     const int64_t m = set_signed(a.fields.at("magnitude"), -kLevel, kLevel);
-                    c.equal(get(*r, {"magnitude"}, c, where), m < 0 ? -m : m, where + "magnitude (|level|: upside down is the phase or the other saw)");
-                    c.equal(get(*r, {"offset"}, c, where), set_signed(a.fields.at("offset"), -kLevel, kLevel), where + "offset");
-                    c.equal(get(*r, {"period_ms"}, c, where), a.fields.at("period"), where + "period ms");
+                    c.equal(field(*r, {"magnitude"}, c, where), m < 0 ? -m : m, where + "magnitude (|level|: upside down is the phase or the other saw)");
+                    c.equal(field(*r, {"offset"}, c, where), set_signed(a.fields.at("offset"), -kLevel, kLevel), where + "offset");
+                    c.equal(field(*r, {"period_ms"}, c, where), a.fields.at("period"), where + "period ms");
                     const bool by_phase = negative && waveform != 0x5b && waveform != 0x5c;
-                    c.equal(get(*r, {"phase"}, c, where), (angle(a.fields.at("phase")) + (by_phase ? 18000 : 0)) % kAngle,
+                    c.equal(field(*r, {"phase"}, c, where), (angle(a.fields.at("phase")) + (by_phase ? 18000 : 0)) % kAngle,
                             where + "phase (+180 degrees when upside down)");
                 }
                 envelope_of(block, where);
@@ -170,26 +157,19 @@ void check_upload(Upload& u, const std::vector<Line>& log, Checks& c) {
                 c.expect(r != nullptr, where + "Set Periodic received");
                 if (r) {
                     const bool strong = k == 0;
-                    c.equal(get(*r, {"magnitude"}, c, where),
+                    c.equal(field(*r, {"magnitude"}, c, where),
                             set_unsigned(a.fields.at(strong ? "strong_magnitude" : "weak_magnitude"), 0, kLevel),
                             where + (strong ? "strong motor magnitude" : "weak motor magnitude"));
-                    c.equal(get(*r, {"period_ms"}, c, where), strong ? kRumbleStrongPeriodMs : kRumbleWeakPeriodMs, where + "period ms");
-                    c.equal(get(*r, {"offset"}, c, where), 0, where + "offset");
+                    c.equal(field(*r, {"period_ms"}, c, where), strong ? kRumbleStrongPeriodMs : kRumbleWeakPeriodMs, where + "period ms");
+                    c.equal(field(*r, {"offset"}, c, where), 0, where + "offset");
                 }
                 break;
             }
             default: {  // conditions: one Set Condition per axis
                 for (int axis = 0; axis < 2; ++axis) {
-                    const std::string s = std::to_string(axis);
                     const Line* r = last_line(log, "set_condition", block, from, to, axis);
-                    c.expect(r != nullptr, where + "Set Condition axis " + s + " received");
-                    if (r == nullptr) continue;
-                    c.equal(get(*r, {"center_offset"}, c, where), set_signed(a.fields.at("center" + s), -kLevel, kLevel), where + "axis " + s + " center");
-                    c.equal(get(*r, {"pos_coefficient"}, c, where), set_signed(a.fields.at("right_coeff" + s), -kLevel, kLevel), where + "axis " + s + " positive coefficient");
-                    c.equal(get(*r, {"neg_coefficient"}, c, where), set_signed(a.fields.at("left_coeff" + s), -kLevel, kLevel), where + "axis " + s + " negative coefficient");
-                    c.equal(get(*r, {"pos_saturation"}, c, where), set_unsigned(a.fields.at("right_saturation" + s), 0, kLevel), where + "axis " + s + " positive saturation");
-                    c.equal(get(*r, {"neg_saturation"}, c, where), set_unsigned(a.fields.at("left_saturation" + s), 0, kLevel), where + "axis " + s + " negative saturation");
-                    c.equal(get(*r, {"deadband"}, c, where), set_unsigned(a.fields.at("deadband" + s), 0, kLevel), where + "axis " + s + " deadband");
+                    c.expect(r != nullptr, where + "Set Condition axis " + std::to_string(axis) + " received");
+                    if (r != nullptr) check_condition_fields(a, *r, axis, c, where);
                 }
                 break;
             }
@@ -293,7 +273,7 @@ int main(int argc, char** argv) {
                 }
             }
             c.expect(r != nullptr, "gain " + std::to_string(g.fields.at("value")) + " reached the device");
-            if (r) c.equal(get(*r, {"gain"}, c, ""), set_unsigned(g.fields.at("value"), 0, kLevel), "device gain");
+            if (r) c.equal(field(*r, {"gain"}, c, ""), set_unsigned(g.fields.at("value"), 0, kLevel), "device gain");
         }
         // Plays and stops: an Effect Operation start (count given) or stop for each of the
         // effect's blocks, within 2 s.

@@ -58,14 +58,6 @@ const Line* find_field_line(const std::vector<Line>& log, const std::string& rep
     return found;
 }
 
-int64_t field(const Line& l, std::initializer_list<const char*> names, Checks& c, const std::string& what) {
-    for (const char* n : names) {
-        if (auto it = l.fields.find(n); it != l.fields.end()) return it->second;
-    }
-    c.expect(false, what + ": the device log's report has no field " + *names.begin());
-    return INT64_MIN;
-}
-
 void check_effect(const Upload& u, const std::vector<Line>& log, double until, Checks& c) {
     const Line& a = u.asked;
     const int64_t type = a.fields.at("type");
@@ -133,12 +125,7 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
 
     auto check_envelope = [&](const Line* env) {
         c.expect(env != nullptr, at + "Set Envelope received");
-        if (env == nullptr) return;
-        c.equal(field(*env, {"attack_level", "impulse_level"}, c, at), envelope_level(a.fields.at("attack_level"), 0, kLevel),
-                at + "attack level");
-        c.equal(field(*env, {"attack_time_ms", "settle_time_ms"}, c, at), a.fields.at("attack_length"), at + "attack time ms");
-        c.equal(field(*env, {"fade_level"}, c, at), envelope_level(a.fields.at("fade_level"), 0, kLevel), at + "fade level");
-        c.equal(field(*env, {"fade_time_ms"}, c, at), a.fields.at("fade_length"), at + "fade time ms");
+        if (env != nullptr) check_envelope_fields(a, *env, c, at);
     };
     switch (type) {
         case 0x52: {  // constant
@@ -183,16 +170,9 @@ void check_effect(const Upload& u, const std::vector<Line>& log, double until, C
         }
         case 0x53: case 0x54: case 0x55: case 0x56: {  // conditions: one Set Condition per axis
             for (int axis = 0; axis < 2; ++axis) {
-                const std::string s = std::to_string(axis);
                 const Line* r = find_field_line(log, "set_condition", block, a.t, until, axis);
-                c.expect(r != nullptr, at + "Set Condition axis " + s + " received");
-                if (r == nullptr) continue;
-                c.equal(field(*r, {"center_offset"}, c, at), set_signed(a.fields.at("center" + s), -kLevel, kLevel), at + "axis " + s + " center");
-                c.equal(field(*r, {"pos_coefficient"}, c, at), set_signed(a.fields.at("right_coeff" + s), -kLevel, kLevel), at + "axis " + s + " positive coefficient");
-                c.equal(field(*r, {"neg_coefficient"}, c, at), set_signed(a.fields.at("left_coeff" + s), -kLevel, kLevel), at + "axis " + s + " negative coefficient");
-                c.equal(field(*r, {"pos_saturation"}, c, at), set_unsigned(a.fields.at("right_saturation" + s), 0, kLevel), at + "axis " + s + " positive saturation");
-                c.equal(field(*r, {"neg_saturation"}, c, at), set_unsigned(a.fields.at("left_saturation" + s), 0, kLevel), at + "axis " + s + " negative saturation");
-                c.equal(field(*r, {"deadband"}, c, at), set_unsigned(a.fields.at("deadband" + s), 0, kLevel), at + "axis " + s + " deadband");
+                c.expect(r != nullptr, at + "Set Condition axis " + std::to_string(axis) + " received");
+                if (r != nullptr) check_condition_fields(a, *r, axis, c, at);
             }
             break;
         }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -112,6 +113,40 @@ inline int pid_effect_usage(int64_t type, int64_t waveform) {
             }
         default: return 0;
     }
+}
+
+// The value of the first of `names` the line has (the report table's name, then older ones);
+// a failed check when it has none.
+inline int64_t field(const Line& l, std::initializer_list<const char*> names, Checks& c, const std::string& what) {
+    for (const char* n : names) {
+        if (auto it = l.fields.find(n); it != l.fields.end()) return it->second;
+    }
+    c.expect(false, what + ": the device log's report has no field " + *names.begin() + ": " + l.text);
+    return INT64_MIN;
+}
+
+// A Set Envelope against the envelope of the ff_effect `asked` (the spy's upload line).
+inline void check_envelope_fields(const Line& asked, const Line& env, Checks& c, const std::string& at) {
+    c.equal(field(env, {"attack_level", "impulse_level"}, c, at), envelope_level(asked.fields.at("attack_level"), 0, kLevel),
+            at + "attack level");
+    c.equal(field(env, {"attack_time_ms", "settle_time_ms"}, c, at), asked.fields.at("attack_length"), at + "attack time ms");
+    c.equal(field(env, {"fade_level"}, c, at), envelope_level(asked.fields.at("fade_level"), 0, kLevel), at + "fade level");
+    c.equal(field(env, {"fade_time_ms"}, c, at), asked.fields.at("fade_length"), at + "fade time ms");
+}
+
+// A Set Condition against evdev's condition[axis] of the ff_effect `asked`.
+inline void check_condition_fields(const Line& asked, const Line& r, int axis, Checks& c, const std::string& at) {
+    const std::string s = std::to_string(axis);
+    c.equal(field(r, {"center_offset"}, c, at), set_signed(asked.fields.at("center" + s), -kLevel, kLevel), at + "axis " + s + " center");
+    c.equal(field(r, {"pos_coefficient"}, c, at), set_signed(asked.fields.at("right_coeff" + s), -kLevel, kLevel),
+            at + "axis " + s + " positive coefficient");
+    c.equal(field(r, {"neg_coefficient"}, c, at), set_signed(asked.fields.at("left_coeff" + s), -kLevel, kLevel),
+            at + "axis " + s + " negative coefficient");
+    c.equal(field(r, {"pos_saturation"}, c, at), set_unsigned(asked.fields.at("right_saturation" + s), 0, kLevel),
+            at + "axis " + s + " positive saturation");
+    c.equal(field(r, {"neg_saturation"}, c, at), set_unsigned(asked.fields.at("left_saturation" + s), 0, kLevel),
+            at + "axis " + s + " negative saturation");
+    c.equal(field(r, {"deadband"}, c, at), set_unsigned(asked.fields.at("deadband" + s), 0, kLevel), at + "axis " + s + " deadband");
 }
 
 }  // namespace feel_linux_checks
