@@ -208,6 +208,10 @@ Translation translate_effect(const ff_effect& e, const host::DeviceCaps& caps) {
         }
         case FF_RAMP: {
             if (std::string why = need(EffectType::ramp); !why.empty()) return refuse(why);
+            if (e.replay.length == 0) {
+                return refuse("ff_effect replay.length = 0 (endless) leaves a ramp no end to reach its end level "
+                              "(allowed 1..65000 ms for FF_RAMP)");
+            }
             p.ramp.start = evdev_signed_level(e.u.ramp.start_level);
             p.ramp.end = evdev_signed_level(e.u.ramp.end_level);
             if (std::string why = set_envelope(e.u.ramp.envelope, p); !why.empty()) return refuse(why);

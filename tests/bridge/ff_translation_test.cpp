@@ -229,6 +229,9 @@ TEST(FfTranslation, RefusesWhatFeelCannotPlayNamingTheField) {
     ff_effect t = base(FF_CONSTANT);
     t.trigger.button = 0x6269;
     expect_refused(t, "trigger.button = 0x6269 is not a joystick button");
+    ff_effect endless_ramp = base(FF_RAMP);
+    endless_ramp.replay.length = 0;
+    expect_refused(endless_ramp, "replay.length = 0 (endless) leaves a ramp no end");
     ff_effect unknown = base(0x4f);
     expect_refused(unknown, "type = 0x004f");
     host::DeviceCaps no_ramp = stick();
