@@ -135,5 +135,26 @@ TEST(BridgeEffects, GainAndAutocenter) {
     EXPECT_TRUE(b.lines.empty());
 }
 
+TEST(BridgeEffects, OnAOneAxisWheelAForceAlongTheAxisPlays) {
+    host::Device wheel = host::Device::open("sim:wheel").value();
+    ASSERT_EQ(wheel.capabilities().axis_count, 1);
+    std::vector<std::string> lines;
+    BridgeEffects effects(wheel, [&](const std::string& l) { lines.push_back(l); });
+    ff_effect right = constant(0, 16384);
+    right.direction = 0xc000;  // from the right: 270°, sin = -1
+    ASSERT_EQ(effects.upload(right), 0) << (lines.empty() ? "" : lines.back());
+    const EffectParams& p = effects.feel_effects(0).at(0)->parameters();
+    EXPECT_EQ(p.axis_count, 1);
+    EXPECT_EQ(p.direction.kind, DirectionKind::cartesian);
+    EXPECT_EQ(p.direction.value[0], -10000);
+    ff_effect spring{};
+    spring.type = FF_SPRING;
+    spring.id = 1;
+    spring.u.condition[0].right_coeff = 32767;
+    spring.u.condition[0].left_coeff = 32767;
+    ASSERT_EQ(effects.upload(spring), 0) << (lines.empty() ? "" : lines.back());
+    EXPECT_EQ(effects.feel_effects(1).at(0)->parameters().axis_count, 1);
+}
+
 }  // namespace
 }  // namespace feel::bridge
