@@ -31,6 +31,7 @@ int run_bridge_command(const BridgeArgs& args, std::ostream& out, std::ostream& 
     bridge::BridgeOptions options;
     options.uinput_path = args.uinput;
     options.name = args.name;
+    options.verbose = args.verbose;
     const bridge::BridgeStats stats = bridge::run_bridge(
         *device, options, [&](const std::string& line) { out << line << std::endl; },
         [&](const std::string& line) { err << line << std::endl; }, stop);

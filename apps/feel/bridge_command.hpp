@@ -1,7 +1,7 @@
 // feel bridge: a feel device as a Linux force-feedback joystick through uinput
 // (docs/real-devices.md, "feel bridge").
 //
-//   feel bridge [--device ADDR] [--name TEXT] [--log FILE]
+//   feel bridge [--device ADDR] [--name TEXT] [--log FILE] [--verbose]
 //
 // Prints the event node and what the device offers, serves games until SIGINT/SIGTERM, then
 // removes the input device and prints its figures.
@@ -20,6 +20,7 @@ struct BridgeArgs {
     std::string name;                            // the input device's name (empty: the default)
     std::string log;                             // --log FILE: what the device receives
     std::string uinput = "/dev/uinput";          // --uinput PATH
+    bool verbose = false;                        // --verbose: one line per request of the game
 };
 
 // Runs until `stop`. Throws UsageError (exit 2) for a malformed --device, std::runtime_error

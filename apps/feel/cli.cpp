@@ -230,6 +230,8 @@ void add_bridge(CLI::App& app, BridgeArgs& a) {
     cmd->add_option("--name", a.name, "The input device's name, 0..79 bytes (default: \"feel PROFILE (bridge)\")");
     cmd->add_option("--log", a.log, "Write one line per report the device receives, feature reply and refusal to FILE");
     cmd->add_option("--uinput", a.uinput, "The uinput device node")->capture_default_str();
+    cmd->add_flag("--verbose", a.verbose, "Print one line per request of the game: each effect it uploads (in "
+                                          "evdev's terms), erase, play, stop, gain and autocenter");
     cmd->footer(exit_codes("uinput missing or not permitted, a device that cannot be reached"));
 }
 

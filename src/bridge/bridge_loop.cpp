@@ -115,6 +115,7 @@ BridgeStats run_bridge(host::Device& device, const BridgeOptions& options,
                     ++stats.uploads;
                     const int result = effects.upload(*e);
                     if (result != 0) ++stats.uploads_refused;
+                    if (options.verbose) say("upload " + describe_ff_effect(*e) + (result == 0 ? ": ok" : ": refused"));
                     uinput.end_upload(r.request_id, *e, result);
                     break;
                 }
@@ -123,17 +124,25 @@ BridgeStats run_bridge(host::Device& device, const BridgeOptions& options,
                     if (!id) break;
                     ++stats.erases;
                     uinput.end_erase(r.request_id, *id, effects.erase(*id));
+                    if (options.verbose) say("erase id " + std::to_string(*id));
                     break;
                 }
                 case UinputRequest::Kind::play:
                     ++stats.plays;
                     effects.play(r.code, r.value);
+                    if (options.verbose) {
+                        say((r.value > 0 ? "play id " : "stop id ") + std::to_string(r.code) +
+                            (r.value > 0 ? " " + std::to_string(r.value) + " times" : std::string()));
+                    }
                     break;
                 case UinputRequest::Kind::gain:
+                    // ff-core keeps gain and autocenter within 0..0xFFFF; the clamp only narrows the type.
                     effects.set_gain(static_cast<uint16_t>(std::clamp(r.value, 0, 0xffff)));
+                    if (options.verbose) say("gain " + std::to_string(r.value));
                     break;
                 case UinputRequest::Kind::autocenter:
                     effects.set_autocenter(static_cast<uint16_t>(std::clamp(r.value, 0, 0xffff)));
+                    if (options.verbose) say("autocenter " + std::to_string(r.value));
                     break;
             }
         }

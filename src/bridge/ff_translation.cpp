@@ -274,6 +274,49 @@ Translation translate_effect(const ff_effect& e, const host::DeviceCaps& caps) {
     return out;
 }
 
+std::string describe_ff_effect(const ff_effect& e) {
+    std::string d = type_name(e.type) + " id " + std::to_string(e.id) + ": length " + std::to_string(e.replay.length) +
+                    " ms, delay " + std::to_string(e.replay.delay) + " ms";
+    const auto envelope = [&](const ff_envelope& v) {
+        d += ", envelope " + std::to_string(v.attack_length) + " ms " + std::to_string(v.attack_level) + " / " +
+             std::to_string(v.fade_length) + " ms " + std::to_string(v.fade_level);
+    };
+    if (e.type != FF_RUMBLE) {
+        d += ", direction " + hex(e.direction);
+        if (e.trigger.button != 0) d += ", trigger " + hex(e.trigger.button) + " every " + std::to_string(e.trigger.interval) + " ms";
+    }
+    switch (e.type) {
+        case FF_CONSTANT:
+            d += ", level " + std::to_string(e.u.constant.level);
+            envelope(e.u.constant.envelope);
+            break;
+        case FF_RAMP:
+            d += ", level " + std::to_string(e.u.ramp.start_level) + " to " + std::to_string(e.u.ramp.end_level);
+            envelope(e.u.ramp.envelope);
+            break;
+        case FF_PERIODIC:
+            d += ", waveform " + hex(e.u.periodic.waveform) + ", period " + std::to_string(e.u.periodic.period) +
+                 " ms, magnitude " + std::to_string(e.u.periodic.magnitude) + ", offset " +
+                 std::to_string(e.u.periodic.offset) + ", phase " + hex(e.u.periodic.phase);
+            envelope(e.u.periodic.envelope);
+            break;
+        case FF_SPRING: case FF_DAMPER: case FF_INERTIA: case FF_FRICTION:
+            for (int i = 0; i < 2; ++i) {
+                const ff_condition_effect& c = e.u.condition[i];
+                d += ", axis " + std::to_string(i) + " coefficients " + std::to_string(c.right_coeff) + "/" +
+                     std::to_string(c.left_coeff) + " saturations " + std::to_string(c.right_saturation) + "/" +
+                     std::to_string(c.left_saturation) + " deadband " + std::to_string(c.deadband) + " centre " +
+                     std::to_string(c.center);
+            }
+            break;
+        case FF_RUMBLE:
+            d += ", strong " + std::to_string(e.u.rumble.strong_magnitude) + ", weak " + std::to_string(e.u.rumble.weak_magnitude);
+            break;
+        default: break;
+    }
+    return d;
+}
+
 FfCapabilities ff_capabilities(const host::DeviceCaps& caps) {
     FfCapabilities c;
     const auto offer = [&](uint16_t bit, const char* name, EffectType t) {

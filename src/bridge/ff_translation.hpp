@@ -58,6 +58,10 @@ struct FfCapabilities {
 // larger as infinite (SDL sends INT_MAX for SDL_HAPTIC_INFINITY). `value` > 0.
 [[nodiscard]] int32_t iterations_of_count(int32_t value) noexcept;
 
+// One line saying what a game asked, in evdev's own terms (`feel bridge --verbose`), e.g.
+//   "FF_CONSTANT id 1: length 20000 ms, delay 0 ms, direction 0x6000, level 8192, envelope 1000 ms 4096 / 1000 ms 4096"
+[[nodiscard]] std::string describe_ff_effect(const ff_effect& effect);
+
 // The centring spring FF_AUTOCENTER asks for: strength 0..0xFFFF as both coefficients on
 // each of the device's first two axes, full saturation, centre 0, endless.
 [[nodiscard]] EffectParams autocenter_spring(uint16_t strength, const host::DeviceCaps& caps);

@@ -253,6 +253,17 @@ TEST(FfTranslation, CapabilitiesFollowTheDevice) {
     EXPECT_FALSE(few.missing.empty());
 }
 
+TEST(FfTranslation, DescribesWhatTheGameAskedInEvdevTerms) {
+    ff_effect e = base(FF_CONSTANT);
+    e.id = 1;
+    e.u.constant.level = 8192;
+    EXPECT_EQ(describe_ff_effect(e),
+              "FF_CONSTANT id 1: length 2000 ms, delay 250 ms, direction 0x4000, level 8192, envelope 0 ms 0 / 0 ms 0");
+    ff_effect r = base(FF_RUMBLE);
+    r.u.rumble.strong_magnitude = 100;
+    EXPECT_EQ(describe_ff_effect(r), "FF_RUMBLE id -1: length 2000 ms, delay 250 ms, strong 100, weak 0");
+}
+
 TEST(FfTranslation, PlayCountsAndAutocenter) {
     EXPECT_EQ(iterations_of_count(1), 1);
     EXPECT_EQ(iterations_of_count(254), 254);

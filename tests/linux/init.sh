@@ -120,7 +120,7 @@ done
 # The USB device is gone by now, so the bridge's event node is the only one with EV_FF.
 if [ "$bridge" = 1 ]; then
     mark "bridge begin"
-    feel bridge --device sim:iforce2 --log /tmp/bridge.log > /tmp/bridge.out 2>&1 &
+    feel bridge --device sim:iforce2 --log /tmp/bridge.log --verbose > /tmp/bridge.out 2>&1 &
     bridge_pid=$!
     bridge_event=
     for i in $(seq 1 300); do

@@ -29,6 +29,7 @@ struct BridgeOptions {
     std::string uinput_path = "/dev/uinput";
     std::string name;           // the input device's name; empty: "feel <profile> (bridge)"
     int32_t input_poll_ms = 4;  // how often the device's state is turned into events, 1..100
+    bool verbose = false;       // `say` one line per request of the kernel (what the game asked)
 };
 
 struct BridgeStats {
