@@ -262,19 +262,7 @@ int main(int argc, char** argv) {
             check_upload(u, log, c);
             blocks_of[u.done.fields.at("id")] = u.blocks;
         }
-        // Gains: Device Gain on 0..10000 from evdev's 0..0xFFFF.
-        for (const Line& g : spy) {
-            if (g.verb != "gain") continue;
-            const Line* r = nullptr;
-            for (const Line& l : log) {
-                if (l.t >= g.t && l.report == "device_gain") {
-                    r = &l;
-                    break;
-                }
-            }
-            c.expect(r != nullptr, "gain " + std::to_string(g.fields.at("value")) + " reached the device");
-            if (r) c.equal(field(*r, {"gain"}, c, ""), set_unsigned(g.fields.at("value"), 0, kLevel), "device gain");
-        }
+        check_gains(spy, log, c, who);
         // Plays and stops: an Effect Operation start (count given) or stop for each of the
         // effect's blocks, within 2 s.
         int plays = 0, seen = 0;

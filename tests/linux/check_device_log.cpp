@@ -373,19 +373,7 @@ int main(int argc, char** argv) {
             const double until = k + 1 < uploads.size() ? uploads[k + 1].asked.t : uploads[k].done.t + 2.0;
             check_effect(uploads[k], log, until, c);
         }
-        // Gains: Device Gain = pidff_set(gain) on 0..10000.
-        for (const Line& g : spy) {
-            if (g.verb != "gain") continue;
-            const Line* r = nullptr;
-            for (const Line& l : log) {
-                if (l.t >= g.t && l.report == "device_gain") {
-                    r = &l;
-                    break;
-                }
-            }
-            c.expect(r != nullptr, who + " gain " + std::to_string(g.fields.at("value")) + " reached the device");
-            if (r) c.equal(field(*r, {"gain"}, c, who), set_unsigned(g.fields.at("value"), 0, kLevel), who + " device gain");
-        }
+        check_gains(spy, log, c, who);
         // Plays and stops: an Effect Operation for the effect's block with Op Effect Start
         // (0x79) or Op Effect Stop (0x7B).
         int plays = 0, seen = 0;

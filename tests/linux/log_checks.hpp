@@ -149,4 +149,21 @@ inline void check_condition_fields(const Line& asked, const Line& r, int axis, C
     c.equal(field(r, {"deadband"}, c, at), set_unsigned(asked.fields.at("deadband" + s), 0, kLevel), at + "axis " + s + " deadband");
 }
 
+// Each FF_GAIN a program wrote (the spy's "gain" lines) reached the device as a Device Gain
+// report on 0..10000 (hid-pidff's pidff_set).
+inline void check_gains(const std::vector<Line>& spy, const std::vector<Line>& log, Checks& c, const std::string& who) {
+    for (const Line& g : spy) {
+        if (g.verb != "gain") continue;
+        const Line* r = nullptr;
+        for (const Line& l : log) {
+            if (l.t >= g.t && l.report == "device_gain") {
+                r = &l;
+                break;
+            }
+        }
+        c.expect(r != nullptr, who + " gain " + std::to_string(g.fields.at("value")) + " reached the device");
+        if (r) c.equal(field(*r, {"gain"}, c, who), set_unsigned(g.fields.at("value"), 0, kLevel), who + " device gain");
+    }
+}
+
 }  // namespace feel_linux_checks
