@@ -1,7 +1,7 @@
 // `feel bridge` in the Linux VM (tests/linux/run.sh): reads what the VM left and decides.
 //
 //   feel_check_bridge_log --console FILE --wire-log FILE --fftest SPY_LOG --testhaptic SPY_LOG
-//                         --events HEX_DUMP
+//                         --events HEX_DUMP --invalid PROBE_LOG
 //
 // In the VM, `feel bridge --device sim:iforce2 --log FILE` made a uinput joystick; fftest and
 // SDL2's testhaptic played their effects on its event node with ff_spy.so preloaded.
@@ -15,6 +15,9 @@
 //   - the kernel's input events read from the bridge's node while fftest played (one struct
 //     input_event a line, in hex): the axes the banner declares, each within -10000..10000,
 //     in SYN_REPORT batches.
+//   - ff_probe's EVIOCSFF results for ff_effects feel cannot play (errno EINVAL each, from the
+//     bridge through the kernel) and a valid one after them (accepted: the bridge carried on),
+//     with the bridge's log line naming the ff_effect field on the console.
 // The wire log says what the feel device received over its cable: each uploaded effect is
 // found by the Create New Effect(s) between the program's EVIOCSFF and its return (the
 // bridge answers the kernel only after the device answered), and every field is compared.
@@ -305,6 +308,29 @@ int main(int argc, char** argv) {
         c.prefix = "[bridge] ";
     }
     check_events(read_lines(args["--events"]), c);
+    // Refusals: the kernel hands the bridge's errno to the program (EINVAL = 22).
+    const std::map<std::string, std::string> refused = {
+        {"periodic_period_0", "u.periodic.period = 0 is out of range"},
+        {"endless_ramp", "replay.length = 0 (endless) leaves a ramp no end"},
+        {"envelope_level_0x8000", "envelope.attack_level = 32768 is out of range (allowed 0..32767)"},
+        {"trigger_not_a_button", "trigger.button = 0x6269 is not a joystick button"}};
+    std::map<std::string, Line> results;
+    for (const std::string& t : read_lines(args["--invalid"])) {
+        if (auto l = parse("0 " + t, false); l && l->verb == "invalid") {
+            const std::size_t at = t.find("case=");
+            results[t.substr(at + 5, t.find(' ', at) - at - 5)] = *l;
+        }
+    }
+    for (const auto& [name, why] : refused) {
+        auto it = results.find(name);
+        c.expect(it != results.end(), "invalid ff_effect " + name + " was tried");
+        if (it == results.end()) continue;
+        c.equal(it->second.fields.at("errno"), 22, "invalid ff_effect " + name + ": EVIOCSFF failed with EINVAL");
+        c.expect(has(why), "invalid ff_effect " + name + ": the bridge logged \"" + why + "\"");
+    }
+    auto valid = results.find("valid_constant");
+    c.expect(valid != results.end() && valid->second.fields.at("result") == 0,
+             "a valid ff_effect after the refusals was accepted (the bridge carried on)");
     std::cout << c.prefix << c.passed << " passed, " << c.failed << " failed\n";
     return c.failed == 0 ? 0 : 1;
 }

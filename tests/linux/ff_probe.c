@@ -8,7 +8,11 @@
  *   ff_probe EVENT flood SECONDS update one effect's level as fast as the kernel takes it
  *                                (each EVIOCSFF is a Set Constant Force report), while feel
  *                                logs its loop rate; prints how many updates went out.
+ *   ff_probe EVENT invalid 0     uploads ff_effects a device cannot play (`feel bridge`:
+ *                                docs/real-devices.md, "Errors"), then a valid one; prints
+ *                                each EVIOCSFF's result and errno.
  */
+#include <errno.h>
 #include <fcntl.h>
 #include <linux/input.h>
 #include <stdio.h>
@@ -79,6 +83,28 @@ int main(int argc, char **argv)
             sleep_s(0.35);  /* the effect ends after 150 ms; the motors rest again */
             ioctl(fd, EVIOCRMFF, e.id);
             sleep_s(0.05 + (double)(rand() % 1000) * 1e-5);  /* a random phase against the 1 ms tick */
+        }
+    } else if (strcmp(argv[2], "invalid") == 0) {
+        struct ff_effect cases[5];
+        const char *names[5] = {"periodic_period_0", "endless_ramp", "envelope_level_0x8000", "trigger_not_a_button",
+                                "valid_constant"};
+        cases[0] = constant(0, 1000);
+        cases[0].type = FF_PERIODIC;
+        cases[0].u.periodic.waveform = FF_SINE;
+        cases[0].u.periodic.period = 0;
+        cases[0].u.periodic.magnitude = 0x4000;
+        cases[1] = constant(0, 0);
+        cases[1].type = FF_RAMP;
+        cases[1].u.ramp.start_level = 0x1000;
+        cases[2] = constant(0x1000, 1000);
+        cases[2].u.constant.envelope.attack_level = 0x8000;
+        cases[3] = constant(0x1000, 1000);
+        cases[3].trigger.button = 0x6269;
+        cases[4] = constant(0x1000, 1000);
+        for (int k = 0; k < 5; ++k) {
+            const int r = ioctl(fd, EVIOCSFF, &cases[k]);
+            printf("invalid case=%s result=%d errno=%d\n", names[k], r, r < 0 ? errno : 0);
+            if (r == 0) ioctl(fd, EVIOCRMFF, cases[k].id);
         }
     } else if (strcmp(argv[2], "flood") == 0) {
         const double seconds = atof(argv[3]);

@@ -149,6 +149,11 @@ if [ "$bridge" = 1 ]; then
         mark "bridge testhaptic begin"
         FF_SPY_LOG=/tmp/bridge-testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
         mark "bridge testhaptic end"
+        # ff_effects the device cannot play: a clean errno each, and the bridge carries on.
+        ff_probe "$bridge_event" invalid 0 > /tmp/bridge-invalid.log 2>&1
+        echo "==== bridge invalid begin"
+        cat /tmp/bridge-invalid.log
+        echo "==== bridge invalid end"
     fi
     kill -TERM "$bridge_pid" 2>/dev/null
     for i in $(seq 1 50); do kill -0 "$bridge_pid" 2>/dev/null || break; sleep 0.1; done

@@ -146,6 +146,8 @@ boot() {  # boot SPEED: high or full
         > "$out/bridge-$speed.log"
     sed -n '/^==== bridge events begin/,/^==== bridge events end/p' "$console" | sed '1d;$d' | tr -d '\r' \
         > "$out/bridge-events-$speed.txt"
+    sed -n '/^==== bridge invalid begin/,/^==== bridge invalid end/p' "$console" | sed '1d;$d' | tr -d '\r' \
+        > "$out/bridge-invalid-$speed.txt"
 }
 speeds=${FEEL_LINUX_SPEEDS:-high full}
 first=${speeds%% *}
@@ -166,7 +168,7 @@ done
 # testhaptic asked the bridge's event node for against what the feel device received.
 "$bridge_checker" --console "$out/console-$first.log" --wire-log "$out/bridge-$first.log" \
     --fftest "$out/bridge-fftest-$first.spy" --testhaptic "$out/bridge-testhaptic-$first.spy" \
-    --events "$out/bridge-events-$first.txt" \
+    --events "$out/bridge-events-$first.txt" --invalid "$out/bridge-invalid-$first.txt" \
     | tee "$out/check-bridge.txt" || status=1
 read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-bridge.txt" | tail -1) || true
 passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
