@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <string_view>
+#include <utility>
 
 #include "evdev_units.hpp"
 
