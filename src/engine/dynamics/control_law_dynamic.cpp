@@ -51,6 +51,14 @@ TetherAxisState initial_state(const TetherLaw& law, double handle, double handle
 
 bool finite(const TetherAxisState& s) noexcept { return std::isfinite(s.position) && std::isfinite(s.velocity); }
 
+// The law as seen in the frame of a handle accelerating at `acceleration`: the frame adds
+// the force −M·a on the mass, which the law's gravity term carries.
+TetherLaw in_handle_frame(const TetherLaw& law, double acceleration) noexcept {
+    TetherLaw framed = law;
+    framed.gravity = law.gravity - acceleration;
+    return framed;
+}
+
 }  // namespace
 
 void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
@@ -66,12 +74,18 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
     if (!c.state->initialized) {
         for (int i = 0; i < n; ++i) {
             const int a = axis_index(p.axes[i]);
-            st.now[i] = initial_state(laws[i], c.position[a], c.velocity[a], hysteresis);
+            st.now[i] = laws[i].handle_frame ? initial_state(laws[i], 0.0, 0.0, hysteresis)
+                                             : initial_state(laws[i], c.position[a], c.velocity[a], hysteresis);
         }
         c.state->initialized = true;
     } else if (c.dt_s > 0) {
         for (int i = 0; i < n; ++i) {
             const int a = axis_index(p.axes[i]);
+            if (laws[i].handle_frame) {
+                advance_tether(in_handle_frame(laws[i], st.handle_acceleration[i]), st.now[i], HandlePath{}, c.dt_s,
+                               hysteresis);
+                continue;
+            }
             const HandlePath sensed{st.handle_position[i], (c.position[a] - st.handle_position[i]) / c.dt_s,
                                     st.handle_velocity[i]};
             advance_tether(laws[i], st.now[i], sensed, c.dt_s, hysteresis);
@@ -87,23 +101,33 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
         // The handle is expected to go on along the line through its last two sensed
         // positions; before there are two, at its estimated velocity.
         const double heading = fresh ? handle_velocity : (handle - st.handle_position[i]) / horizon;
+        const double handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0;
+        // Where the mass is seen from: the handle, for a law simulated in its frame.
+        const double frame_position = law.handle_frame ? 0.0 : handle;
+        const double frame_velocity = law.handle_frame ? 0.0 : handle_velocity;
         TetherAxisState& now = st.now[i];
-        if (!finite(now)) now = initial_state(law, handle, handle_velocity, hysteresis);  // never expected
+        if (!finite(now)) now = initial_state(law, frame_position, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
 
         double pull = 0;
         if (horizon > 0) {
             TetherAxisState ahead = now;
-            const HandlePath expected{handle, heading, handle_velocity};
-            pull = -advance_tether(law, ahead, expected, horizon, hysteresis) / horizon;
+            if (law.handle_frame) {
+                pull = -advance_tether(in_handle_frame(law, handle_acceleration), ahead, HandlePath{}, horizon,
+                                       hysteresis) / horizon;
+            } else {
+                const HandlePath expected{handle, heading, handle_velocity};
+                pull = -advance_tether(law, ahead, expected, horizon, hysteresis) / horizon;
+            }
         } else {
-            pull = tether_reaction(law, now.position - handle, now.velocity - handle_velocity);
+            pull = tether_reaction(law, now.position - frame_position, now.velocity - frame_velocity);
         }
         force[a] += std::isfinite(pull) ? pull : 0.0;
         st.handle_position[i] = handle;
         st.handle_velocity[i] = handle_velocity;
-        result.mass_position[a] = static_cast<float>(now.position - handle);
-        result.mass_velocity[a] = static_cast<float>(now.velocity - handle_velocity);
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0;
+        result.mass_position[a] = static_cast<float>(now.position - frame_position);
+        result.mass_velocity[a] = static_cast<float>(now.velocity - frame_velocity);
     }
 }
 
