@@ -9,8 +9,9 @@
 // joystick", "the user will feel the momentum of the mass ... as the user accelerates and
 // decelerates the joystick". With no play the coupling is the tether alone, which lets the
 // mass lag the handle a little: the comparison allows up to 30 ms of lag (the lag that fits
-// best is searched, and must be the same for every amplitude), an error within 35% of the
-// peak inertial force, and tick-to-tick jitter below 5% of it.
+// best within 0..30 ms is searched), an error within 35% of the peak inertial force, and
+// tick-to-tick jitter (the change of F from one tick to the next, less the change of −M·a)
+// below 5% of it. These are the issue's bounds.
 #include <gtest/gtest.h>
 
 #include <cmath>

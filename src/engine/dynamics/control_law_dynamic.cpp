@@ -29,6 +29,20 @@
 // cancels the sampled spring's energy leak). On the engine's very first tick there is no
 // tick length to predict over; the force is then the tether's instantaneous reaction.
 //
+// Dynamic Inertia without play is simulated in the handle's frame instead (issue 16 §2).
+// There the handle's motion reaches the mass only as the frame's force −M·a, a the
+// engine's estimated acceleration, held over the tick; the same two steps then run with
+// the handle standing still at 0 (the law's gravity term carries −a, the exact step stays
+// exact). Why: the tension of a tether as stiff as Inertia's is k·stretch + b·rate, and
+// driven by the sensed handle it moves by k·(one count) whenever a count is crossed (110
+// force units on the joystick, a quarter of the inertial force of a brisk 1 Hz sine) and by
+// b times the velocity estimate's tick-to-tick wander; the review measured 83–97% error.
+// The acceleration estimate is a fit over many samples, and the tether filters it once
+// more, so the force is −M·a within 16% and jitters by under 4% of it (docs/dynamics.md
+// has the figures). With play the mass must know where the handle is to rattle within
+// it, which double-integrating an estimated acceleration cannot tell, so it keeps the
+// sensed-path drive above.
+//
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
 #include <cmath>
