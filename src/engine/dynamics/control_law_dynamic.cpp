@@ -139,7 +139,7 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
         force[a] += std::isfinite(pull) ? pull : 0.0;
         st.handle_position[i] = handle;
         st.handle_velocity[i] = handle_velocity;
-        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0;
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? static_cast<float>(handle_acceleration) : 0.0f;
         result.mass_position[a] = static_cast<float>(now.position - frame_position);
         result.mass_velocity[a] = static_cast<float>(now.velocity - frame_velocity);
     }

@@ -29,7 +29,7 @@ struct ControlLawState {
     // estimated. The next tick advances the mass from here (control_law_dynamic.cpp).
     double handle_position[kMaxAxes] = {};  // position units
     double handle_velocity[kMaxAxes] = {};  // position units/s
-    double handle_acceleration[kMaxAxes] = {};  // position units/s², estimated
+    float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
 };
 
 }  // namespace feel::detail
