@@ -5,10 +5,11 @@
 // mapping Inertia → Mass (M = Inertia/10000 · dynamic_mass_ref, docs/dynamics.md), never a
 // value fitted from the rendered force.
 //
-// §5.6: "Dynamic Inertia ... simulates the inertia of a mass that is coupled to the
-// joystick", "the user will feel the momentum of the mass ... as the user accelerates and
-// decelerates the joystick". With no play the coupling is the tether alone, which lets the
-// mass lag the handle a little: the comparison allows up to 30 ms of lag (the lag that fits
+// §5.6: "Dynamic_Inertia is a new command that enables accurate weight simulation", and
+// "Inertia defines the felt weight of the joystick, wheel, or other gaming device"; "Play
+// defines a gap of free motion between the stick and the mass", so with Play 0 the mass is
+// coupled to the stick and is felt as its weight: the force of a mass M moved along the
+// handle's path, −M·a. The coupling is §8.4's tether, which lets the mass lag a little: the comparison allows up to 30 ms of lag (the lag that fits
 // best within 0..30 ms is searched), an error within 35% of the peak inertial force, and
 // tick-to-tick jitter (the change of F from one tick to the next, less the change of −M·a)
 // below 5% of it. These are the issue's bounds.
