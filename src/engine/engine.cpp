@@ -185,12 +185,14 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
     const double dt_s = static_cast<double>(dt_us) * 1e-6;
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
-    // read it: fitted only in ticks where one plays.
+    // without play (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
     bool inertia_plays = false;
     for (int32_t i = 0; i < m.slot_count; ++i) {
         const Slot& s = m.slots[i];
-        inertia_plays |= (s.params.type == EffectType::inertia || s.params.type == EffectType::dynamic_inertia) &&
-                         s.state != EffectState::free && s.state != EffectState::stopped;
+        const bool reads_acceleration =
+            s.params.type == EffectType::inertia ||
+            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
+        inertia_plays |= reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
     }
     m.motion.update(in.t_us, in.position, axes, inertia_plays);
     float velocity[kMaxAxes] = {};

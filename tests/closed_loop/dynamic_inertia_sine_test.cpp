@@ -123,6 +123,24 @@ TEST(DynamicInertiaClosedLoop, OnSinesTheForceIsTheMassTimesTheAcceleration) {
     }
 }
 
+TEST(DynamicInertiaClosedLoop, OnEveryProfileTheForceIsTheMassTimesTheAcceleration) {
+    // The same on the wheel and the 3-axis device (their own mass scale, dynamic_mass_ref),
+    // the review's sine at the three loop rates.
+    for (const char* profile_name : {"wheel", "3axis"}) {
+        const EngineConfig config = sim::engine_config_for(*sim::find_device_profile(profile_name));
+        for (double rate : {500.0, 1000.0, 10000.0}) {
+            for (int32_t inertia : {3000, 10000}) {
+                SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz, inertia " +
+                             std::to_string(inertia));
+                const double mass = inertia / 10000.0 * config.dynamic_mass_ref;
+                const auto rows = run_loop(profile_name, sim::Grip::kinematic, "sine:x:2000:1",
+                                           {dynamic_inertia_on({Axis::x}, inertia)}, 1.5, rate);
+                expect_feels_like_a_mass(fit(rows, mass, 2000, 1, sine_acceleration, 1, 0.5));
+            }
+        }
+    }
+}
+
 TEST(DynamicInertiaClosedLoop, OnACircleEachAxisFeelsTheMassTimesItsAcceleration) {
     const sim::DeviceProfile& joystick = *sim::find_device_profile("joystick");
     const EngineConfig config = sim::engine_config_for(joystick);
