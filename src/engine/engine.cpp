@@ -184,13 +184,15 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // may hold it at their surface.
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
     const double dt_s = static_cast<double>(dt_us) * 1e-6;
-    // The acceleration costs as much as the velocity and only inertia reads it: fitted
-    // only in ticks where one plays.
+    // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
+    // without play (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
     bool inertia_plays = false;
     for (int32_t i = 0; i < m.slot_count; ++i) {
         const Slot& s = m.slots[i];
-        inertia_plays |= s.params.type == EffectType::inertia && s.state != EffectState::free &&
-                         s.state != EffectState::stopped;
+        const bool reads_acceleration =
+            s.params.type == EffectType::inertia ||
+            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
+        inertia_plays |= reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
     }
     m.motion.update(in.t_us, in.position, axes, inertia_plays);
     float velocity[kMaxAxes] = {};
@@ -249,8 +251,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         double force[kMaxAxes] = {};
         const EffectClass cls = effect_class(s.params.type);
         if (cls == EffectClass::dynamic) {
-            const detail::DynamicContext dynamic{&s.params, &m.config, in.position, velocity,
-                                                 s.start_position, dt_s, clock.tau_us, &s.dynamic};
+            const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
+                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic};
             detail::DynamicResult result;
             detail::render_dynamic(dynamic, force, result);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);

@@ -22,11 +22,14 @@ struct TetherAxisState {
 
 struct ControlLawState {
     // The mass at the time of the current tick, per EFFECT axis (axes[i] of the params).
+    // For a law simulated in the handle's frame (TetherLaw::handle_frame), relative to the
+    // handle: position = stretch, velocity = its rate.
     TetherAxisState now[kMaxAxes] = {};
     // The handle at the current tick: where the sensor saw it and the velocity the engine
     // estimated. The next tick advances the mass from here (control_law_dynamic.cpp).
     double handle_position[kMaxAxes] = {};  // position units
     double handle_velocity[kMaxAxes] = {};  // position units/s
+    float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
 };
 
 }  // namespace feel::detail

@@ -30,6 +30,9 @@ struct DynamicContext {
     const EngineConfig* config = nullptr;
     const float* position = nullptr;        // [kMaxAxes] handle, sensed, position units
     const float* velocity = nullptr;        // [kMaxAxes] handle, estimated, position units/s
+    // [kMaxAxes] handle, estimated, position units/s²: fitted in ticks where an inertia
+    // condition or a Dynamic Inertia plays, else 0
+    const float* acceleration = nullptr;
     const float* start_position = nullptr;  // [kMaxAxes] handle at the effect's first playing tick
     double dt_s = 0;                        // time since the previous tick, s (0 on the first)
     int64_t tau_us = 0;                     // time since the effect began playing

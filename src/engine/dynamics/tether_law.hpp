@@ -41,6 +41,10 @@ struct TetherLaw {
     double pos_init = 0;    // position units, the mass's start relative to the handle
     double vel_init = 0;    // position units/s, relative to the handle
     int32_t half_cycles = 0;  // 0 = never ends; else ends after this many half oscillations
+    // The mass is simulated in the handle's frame, driven by the handle's estimated
+    // acceleration rather than by its sensed position and estimated velocity: Dynamic
+    // Inertia (control_law_dynamic.cpp says why).
+    bool handle_frame = false;
 };
 
 // A handle moving at constant velocity over an interval: p(t) = position + velocity·t. The

@@ -104,7 +104,8 @@ public:
             for (int a = 0; a < kMaxAxes; ++a) start_[a] = position[a];
             started_ = true;
         }
-        const detail::DynamicContext c{&params_, &config_, position, velocity, start_, dt_s, tau_us_, &state};
+        const float acceleration[kMaxAxes] = {};
+        const detail::DynamicContext c{&params_, &config_, position, velocity, acceleration, start_, dt_s, tau_us_, &state};
         model_(c, t.force, t.result);
         tau_us_ += static_cast<int64_t>(std::llround(dt_s * 1e6));
         return t;

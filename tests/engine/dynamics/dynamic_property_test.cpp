@@ -146,7 +146,8 @@ RC_GTEST_PROP(ControlLawProperty, FiniteAndWithinTheMotorLimitForAnyParametersRa
         for (int a = 0; a < config.axis_count; ++a) {
             velocity[a] = n == 0 ? 0.0f : static_cast<float>((in.position[a] - previous[a]) / (static_cast<double>(dt_us) * 1e-6));
         }
-        const detail::DynamicContext context{&p, &config, in.position, velocity, in.position, n == 0 ? 0.0 : static_cast<double>(dt_us) * 1e-6, t_us, &state};
+        const float acceleration[kMaxAxes] = {};
+        const detail::DynamicContext context{&p, &config, in.position, velocity, acceleration, in.position, n == 0 ? 0.0 : static_cast<double>(dt_us) * 1e-6, t_us, &state};
         double raw[kMaxAxes] = {};
         detail::DynamicResult result;
         detail::render_dynamic(context, raw, result);

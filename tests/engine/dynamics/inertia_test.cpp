@@ -13,10 +13,11 @@ namespace {
 
 TEST(Inertia, AnAcceleratedHandleFeelsTheMassItDrags) {
     // Handle at constant acceleration a: once the tether's transient has died, the mass
-    // accelerates with it and the handle feels −m·a. The tether damper measures against
-    // the engine's velocity estimate, which lags a steadily accelerating handle by about
-    // sqrt(2·q·a) (q: a sensor count) and so lets the stretch grow by that lag over the
-    // tick: the force is −m·a within k·sqrt(2·q·a)·T/2.
+    // accelerates with it and the handle feels −m·a. Without play the mass is simulated
+    // in the handle's frame, driven by the engine's acceleration estimate (a parabola fit
+    // to the quantized samples, control_law_dynamic.cpp); the bound allowed here,
+    // k·sqrt(2·q·a)·T/2 (q: a sensor count), is that of the earlier drive through the
+    // velocity estimate, which lagged a steadily accelerating handle by about sqrt(2·q·a).
     const EngineConfig c = sim::engine_config_for(*sim::find_device_profile("joystick"));
     for (int32_t inertia : {2000, 10000}) {
         const double m = per_10000(inertia, c.dynamic_mass_ref);
