@@ -42,6 +42,7 @@ struct RenderArgs {
     double rate_hz = 1000;
     std::string output;                // CSV path, "-" for stdout
     std::string plot;                  // empty: no plot
+    std::string plot_xy;               // --plot-xy: the x-y plane; empty: none
     std::string press;                 // --press list (render::parse_presses); empty: none
 };
 
