@@ -218,10 +218,19 @@ void draw_ticks(cairo_t* cr, const Mapping& m) {
     cairo_restore(cr);
 }
 
+// A number as the notes show it: whole units, or as given when it is short.
 std::string number(double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
+    std::snprintf(buf, sizeof buf, std::fabs(v) >= 100 ? "%.0f" : "%g", v);
     return buf;
+}
+
+// " (y = −3000)" for an angle element at an axis angle, else "".
+std::string axis_angle_place(const SurfaceMark& s) {
+    if (s.angle % 9000 != 0) return "";
+    double ux = 0, uy = 0;
+    compass_direction(s.angle, ux, uy);
+    return std::string(ux != 0 ? " (x = " : " (y = ") + number((ux + uy) * s.at) + ")";
 }
 
 void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
@@ -256,16 +265,17 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
         draw_path(cr, trace, m, &TraceRow::target, 1.4);
         cairo_set_dash(cr, nullptr, 0, 0);
     }
-    if (reported) {  // under the handle: its dots show beside it where clipping moved it
+    set_color(cr, kAxisColors[0]);
+    draw_path(cr, trace, m, &TraceRow::position, 1.8);
+    if (reported) {  // sparse dots over the handle, which shows between them
         set_color(cr, kAxisColors[1]);
-        cairo_set_dash(cr, kReportedDash, 2, 0);
+        const double sparse_dots[] = {kReportedDash[0], 3 * kReportedDash[1]};
+        cairo_set_dash(cr, sparse_dots, 2, 0);
         cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-        draw_path(cr, trace, m, &TraceRow::reported, 3.0);
+        draw_path(cr, trace, m, &TraceRow::reported, 2.4);
         cairo_set_dash(cr, nullptr, 0, 0);
         cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     }
-    set_color(cr, kAxisColors[0]);
-    draw_path(cr, trace, m, &TraceRow::position, 1.6);
     draw_forces(cr, trace, m, span);
     const TraceRow& start = trace.rows.front();
     set_color(cr, kInk);
@@ -284,14 +294,20 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     for (const SurfaceMark& s : trace.surfaces) {
         double ux = 0, uy = 0;
         if (!plane_direction(s, ux, uy)) continue;
-        const std::string where = s.axis == 0 ? "x = " + number(s.at)
+        const std::string where = s.axis == 0   ? "x = " + number(s.at)
                                   : s.axis == 1 ? "y = " + number(s.at)
-                                                : "at " + number(s.at) + " along compass " + number(s.angle / 100.0) + "\u00b0";
+                                                : "at " + number(s.at) + " along compass " + number(s.angle / 100.0) + "\u00b0" +
+                                                      axis_angle_place(s);
         if (s.barrier) {
-            notes.push_back("barrier " + where + ", " + number(s.thickness) + " thick");
+            notes.push_back("barrier " + where);
+            notes.push_back("    faces \u00b1" + number(s.thickness / 2) + " from its center");
         } else {
-            notes.push_back("wall " + where + (s.solid_above ? ", solid beyond" : ", solid before") +
-                            (s.clipping ? ", clipping" : "") + (s.relative ? ", relative" : ""));
+            const std::string axis = s.axis == 0 ? "x" : "y";
+            const std::string solid =
+                s.axis >= 0 ? "solid where " + axis + (s.solid_above ? " > " : " < ") + number(s.at)
+                            : "solid toward compass " + number(((s.angle + (s.solid_above ? 0 : 18000)) % 36000) / 100.0) + "\u00b0";
+            notes.push_back("wall " + where);
+            notes.push_back("    " + solid + (s.clipping ? ", clipping" : "") + (s.relative ? ", relative" : ""));
         }
     }
     if (std::any_of(trace.surfaces.begin(), trace.surfaces.end(), [](const SurfaceMark& s) { return !s.barrier; })) {
@@ -308,7 +324,7 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     set_color(cr, kInk);
     draw_text(cr, "\u25cf start of the path", column_x + 4, y, Align::start);
     for (const std::string& note : notes) {
-        y += 20;
+        y += note.rfind("    ", 0) == 0 ? 17 : 23;
         draw_text(cr, note, column_x + 4, y, Align::start);
     }
 }
