@@ -18,7 +18,7 @@
 // How long it plays without --seconds (play_limit()): a sensation that ends by itself
 // plays until it has, and with --press not before the last release; in case an effect's
 // end is never seen, it is stopped at its length (after the last release, when there is
-// one: a reflex starts at the latest then) plus kEndSlackS. A sensation that never ends
+// one: a reflex starts at the latest then) plus kEndSlackS (10 s). A sensation that never ends
 // is stopped kPlayDefaultCapS after the start, or after the last release with --press.
 // With --press, effects with a trigger wait for their presses as in `feel render`: play
 // starts only the others (without it, every effect starts once, as SensationLibrary::play
@@ -119,9 +119,11 @@ std::optional<int64_t> play_length_us(const format::Sensation& sensation, int32_
 
 std::string effect_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " effect" : " effects"); }
 
-// Beyond a sensation's own end, the time its end may take to show in the reports (the
-// presses and the reports go through the host's clock and queues).
-constexpr double kEndSlackS = 0.25;
+// Beyond a sensation's own end, the time its end may take to show in the reports before
+// play gives up waiting: the presses and the reports go through the host's clock and
+// queues, which a loaded machine can hold up for a long time, so it is the same generous
+// grace as for a sensation that never ends.
+constexpr double kEndSlackS = kPlayDefaultCapS;
 
 // When play stops a sensation without --seconds, and what it says about that.
 struct PlayLimit {
