@@ -227,7 +227,7 @@ TEST_F(Press, PlayWithoutSecondsEndsWhenTheLastReflexHasEnded) {
     ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(ended      after ([0-9.]+) s)"))) << r.out;
     const double last_end_s = 0.7 + static_cast<double>(kTapUs) * 1e-6;
     EXPECT_GE(std::stod(m[1].str()), last_end_s - 0.01) << r.out;
-    EXPECT_LE(std::stod(m[1].str()), last_end_s + 0.06) << r.out;  // the host's clock and report queue
+    EXPECT_LT(std::stod(m[1].str()), last_end_s + 0.4) << r.out;  // the host's clock and queues, under load
     ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(\nx +[-+][0-9]+\.[0-9] +([0-9.]+) s)"))) << r.out;
     EXPECT_GE(std::stod(m[1].str()), 0.1 - 0.01) << r.out;
 }
@@ -246,7 +246,8 @@ TEST_F(Press, PlayStopsAnEndlessSensationTenSecondsAfterTheLastRelease) {
     EXPECT_NE(r.out.find("limit      10.300 s"), std::string::npos) << r.out;
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(stopped    after ([0-9.]+) s)"))) << r.out;
-    EXPECT_NEAR(std::stod(m[1].str()), 0.3 + kPlayDefaultCapS, 0.1) << r.out;
+    EXPECT_GE(std::stod(m[1].str()), 0.3 + kPlayDefaultCapS) << r.out;
+    EXPECT_LT(std::stod(m[1].str()), 0.3 + kPlayDefaultCapS + 0.4) << r.out;
 }
 
 // The summary's peak is at least every force a live line showed (the first report too).
