@@ -25,7 +25,7 @@ namespace feel::render {
 inline constexpr double kMinRateHz = 100;
 inline constexpr double kMaxRateHz = 10000;
 inline constexpr double kMaxDurationS = 600;
-inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (88 B a row: ~180 MB)
+inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (208 B a row: ~420 MB)
 
 // A button or hat switch held down from press_us to release_us (`feel render --press`).
 struct Press {
