@@ -7,7 +7,7 @@
 // that a wall the hand never reaches still shows where it is.
 //
 // What is drawn, bottom to top: each wall's solid half-plane (shaded) and its surface line,
-// each barrier's slab between its faces; the hand's target path (dashed); the handle's
+// each barrier's slab between its faces; the hand's target path (grey); the handle's
 // path (solid); the reported position (dotted, when a clipping wall can make it differ);
 // the force on the handle as arrows at evenly spaced ticks, their length proportional
 // to the force; and the start of the path. A wall line is the set p·u = at across the whole
@@ -259,11 +259,9 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     cairo_rectangle(cr, m.area.x, m.area.y, m.area.w, m.area.h);
     cairo_clip(cr);
     draw_surfaces(cr, trace, m, far);
-    if (trace.has_hand) {
+    if (trace.has_hand) {  // solid: the dashes of a path the hand goes round twice would fill each other's gaps
         set_color(cr, kTargetColor, 0.8);
-        cairo_set_dash(cr, kTargetDash, 2, 0);
         draw_path(cr, trace, m, &TraceRow::target, 1.4);
-        cairo_set_dash(cr, nullptr, 0, 0);
     }
     set_color(cr, kAxisColors[0]);
     draw_path(cr, trace, m, &TraceRow::position, 1.8);
@@ -286,7 +284,7 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
 
     // The legend, and what the surfaces are, in the column right of the plot.
     std::vector<LegendEntry> entries{{"handle", kAxisColors[0]}};
-    if (trace.has_hand) entries.push_back({"hand target", kTargetColor, LegendEntry::Mark::dashed, 0.8});
+    if (trace.has_hand) entries.push_back({"hand target", kTargetColor, LegendEntry::Mark::line, 0.8});
     if (reported) entries.push_back({"reported position", kAxisColors[1], LegendEntry::Mark::dotted});
     entries.push_back({"force (10000 = " + number(kArrowFullScale * span) + " units long)", kForceColor,
                        LegendEntry::Mark::arrow});

@@ -168,7 +168,7 @@ TEST_F(Plots, TheXyWallLineLiesWhereTheFileSaysAndTheReportedPathStopsThere) {
     EXPECT_NE(r.out.find("floor_xy.svg (x-y plot)"), std::string::npos) << r.out;
     const std::vector<SvgPath> paths = stroked_paths(read(svg));
 
-    const auto target = with_style(paths, {kTargetXyStroke, kTargetDash, "stroke-width:1.4;"});
+    const auto target = with_style(paths, {kTargetXyStroke, "stroke-width:1.4;"});
     ASSERT_EQ(target.size(), 1u);
     const Ruler ruler = ruler_from_circle(target[0].points, kRadius);
     EXPECT_NEAR(ruler.per_unit_x, ruler.per_unit_y, 1e-4 * ruler.per_unit_x) << "one scale on both axes";
@@ -196,7 +196,7 @@ TEST_F(Plots, AnAngleWallAndABarrierLieOnTheirLinesInTheXyView) {
     const Result r = render("far_corner", {"--plot-xy", svg});
     ASSERT_EQ(r.code, kExitOk) << r.err;
     const std::vector<SvgPath> paths = stroked_paths(read(svg));
-    const auto target = with_style(paths, {kTargetXyStroke, kTargetDash, "stroke-width:1.4;"});
+    const auto target = with_style(paths, {kTargetXyStroke, "stroke-width:1.4;"});
     ASSERT_EQ(target.size(), 1u);
     const Ruler ruler = ruler_from_circle(target[0].points, kRadius);
 
