@@ -130,7 +130,8 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
     cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
     seconds_option = cmd->add_option("--seconds", seconds,
                                      "Stop after this many seconds, 0 < s <= 3600 (default: when the "
-                                     "sensation ends, at most 10 s for one that never ends)");
+                                     "sensation ends, not before the last --press release; one that "
+                                     "never ends 10 s after the start or the last release)");
     cmd->add_option("--iterations", a.iterations,
                     "Play each effect this many times: a whole number 1..255 or infinite (default: "
                     "each effect's own count)");
