@@ -32,7 +32,7 @@ demo: build
 	    --device joystick --hand firm -o out/railing_impact.csv --plot out/railing_impact.png
 	$(FEEL) render examples/walls.feel.json --sensation horizontal_wall \
 	    --device joystick --hand firm --motion circle:6000:0.5 -o out/horizontal_wall.csv \
-	    --plot out/horizontal_wall.png
+	    --plot out/horizontal_wall.png --plot-xy out/horizontal_wall_xy.png
 	$(FEEL) play examples/primer.feel.json --sensation railing_impact --seconds 1
 	$(FEEL) stream --rate 60 --seconds 1
 

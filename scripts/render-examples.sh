@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Renders every sensation of every example file to out/examples/FILE/NAME.{csv,png}, with
-# a firm hand sweeping a slow circle so that conditions have something to push against.
+# Renders every sensation of every example file to out/examples/FILE/NAME.{csv,png} and its
+# x-y view NAME.xy.png, with a firm hand sweeping a slow circle so that conditions have
+# something to push against.
 # Usage: scripts/render-examples.sh [FEEL_BINARY]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +17,7 @@ for file in examples/*.feel.json; do
   for name in $names; do
     out="out/examples/$base/$name"
     if "$feel" render "$file" --sensation "$name" --hand firm --motion "$motion" \
-         --duration 4 -o "$out.csv" --plot "$out.png" > /dev/null 2> "$out.err"; then
+         --duration 4 -o "$out.csv" --plot "$out.png" --plot-xy "$out.xy.png" > /dev/null 2> "$out.err"; then
       rm -f "$out.err"
       echo "rendered $out.png"
     else

@@ -58,8 +58,13 @@ void add_render(CLI::App& app, RenderArgs& a, double& duration_s, CLI::Option*& 
                                              "it never ends)");
     cmd->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..10000")->capture_default_str();
     cmd->add_option("-o,--output", a.output,
-                    "CSV output file, or - for standard output (required unless --plot is given)");
-    cmd->add_option("--plot", a.plot, "Draw force and position to OUT.svg or OUT.png");
+                    "CSV output file, or - for standard output (required unless --plot or --plot-xy is given)");
+    cmd->add_option("--plot", a.plot,
+                    "Draw force and position against time, with the hand's target, the reported "
+                    "position and the walls and barriers, to OUT.svg or OUT.png");
+    cmd->add_option("--plot-xy", a.plot_xy,
+                    "Draw the x-y plane (2-axis devices): the handle's path, the hand's target, "
+                    "walls and barriers, force arrows, to OUT.svg or OUT.png");
     cmd->add_option("--press", a.press,
                     "Buttons and hats to hold down, comma-separated CONTROL@PRESS:RELEASE (seconds): "
                     "BUTTON 1..32 or hatN:DIR, e.g. 1@0.2:0.9,hat2:up@1.5:1.8; effects with a "
@@ -126,7 +131,8 @@ void add_play(CLI::App& app, PlayArgs& a, double& seconds, CLI::Option*& seconds
     cmd->add_option("--device", a.device, kDeviceHelp)->capture_default_str();
     seconds_option = cmd->add_option("--seconds", seconds,
                                      "Stop after this many seconds, 0 < s <= 3600 (default: when the "
-                                     "sensation ends, at most 10 s for one that never ends)");
+                                     "sensation ends, not before the last --press release; one that "
+                                     "never ends 10 s after the start or the last release)");
     cmd->add_option("--iterations", a.iterations,
                     "Play each effect this many times: a whole number 1..255 or infinite (default: "
                     "each effect's own count)");

@@ -42,6 +42,7 @@ struct RenderArgs {
     double rate_hz = 1000;
     std::string output;                // CSV path, "-" for stdout
     std::string plot;                  // empty: no plot
+    std::string plot_xy;               // --plot-xy: the x-y plane; empty: none
     std::string press;                 // --press list (render::parse_presses); empty: none
 };
 
@@ -75,13 +76,14 @@ struct PlayArgs {
     std::string file;
     std::string sensation;
     std::string device = kDefaultDeviceAddress;
-    std::optional<double> seconds;     // unset: until the sensation ends, at most kPlayDefaultCapS
+    std::optional<double> seconds;     // unset: until the sensation ends (play_command.cpp's play_limit)
     std::string iterations;            // empty: each effect's own count; "infinite" or a whole 1..254
     std::string press;                 // --press list (render::parse_presses), sim: devices only
     bool terminal = false;             // redraw the progress line in place
 };
 // How long `feel play` lets a sensation run without --seconds: one that never ends (an
-// infinite duration or iteration count) is stopped after this many seconds.
+// infinite duration or iteration count) is stopped this many seconds after the start, or
+// after the last release of --press; one that ends is given this long beyond its end.
 inline constexpr double kPlayDefaultCapS = 10;
 
 struct StreamArgs {

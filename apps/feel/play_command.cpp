@@ -13,8 +13,16 @@
 // ten times a second a progress line shows the elapsed time, the force on each axis and
 // the state of each effect of the sensation. The sensation has ended when a state report
 // shows no effect playing and every effect's status, asked over the protocol, says
-// stopped (a compound's delayed effect plays nothing yet but is not stopped). Without
-// --seconds, a sensation that never ends is stopped after kPlayDefaultCapS seconds.
+// stopped (a compound's delayed effect plays nothing yet but is not stopped).
+//
+// How long it plays without --seconds (play_limit()): a sensation that ends by itself
+// plays until it has, and with --press not before the last release; in case an effect's
+// end is never seen, it is stopped at its length (after the last release, when there is
+// one: a reflex starts at the latest then) plus kEndSlackS (10 s). A sensation that never ends
+// is stopped kPlayDefaultCapS after the start, or after the last release with --press.
+// With --press, effects with a trigger wait for their presses as in `feel render`: play
+// starts only the others (without it, every effect starts once, as SensationLibrary::play
+// does, so that a reflex's effect can be felt without a hand).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -111,6 +119,32 @@ std::optional<int64_t> play_length_us(const format::Sensation& sensation, int32_
 
 std::string effect_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " effect" : " effects"); }
 
+// Beyond a sensation's own end, the time its end may take to show in the reports before
+// play gives up waiting: the presses and the reports go through the host's clock and
+// queues, which a loaded machine can hold up for a long time, so it is the same generous
+// grace as for a sensation that never ends.
+constexpr double kEndSlackS = kPlayDefaultCapS;
+
+// When play stops a sensation without --seconds, and what it says about that.
+struct PlayLimit {
+    double seconds = 0;
+    std::string rule;  // one line for the header, and the reason when the limit is hit
+};
+
+PlayLimit play_limit(std::optional<int64_t> length_us, int64_t last_release_us) {
+    const double release_s = static_cast<double>(last_release_us) * 1e-6;
+    const std::string slack = " + " + number(kEndSlackS) + " s";
+    if (!length_us) {
+        if (last_release_us == 0) return {kPlayDefaultCapS, "the sensation never ends by itself"};
+        return {release_s + kPlayDefaultCapS,
+                "the sensation never ends by itself; " + number(kPlayDefaultCapS) + " s after the last release"};
+    }
+    const double length_s = static_cast<double>(*length_us) * 1e-6;
+    if (last_release_us == 0) return {length_s + kEndSlackS, "its length " + format_elapsed(length_s) + slack};
+    return {release_s + length_s + kEndSlackS,
+            "the last release + its length " + format_elapsed(length_s) + slack + ", if its end is not seen before"};
+}
+
 }  // namespace
 
 void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
@@ -169,20 +203,32 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
             << " of full strength (is the handle held?)\n";
     }
 
-    const double cap_s = limit_s ? *limit_s : kPlayDefaultCapS;
+    const PlayLimit rule = play_limit(length_us, last_release_us);
+    const double cap_s = limit_s ? *limit_s : rule.seconds;
     out << "playing    " << sensation.name << " (" << effect_count(effects.size()) << ", "
         << (endless ? std::string("endless") : format_elapsed(static_cast<double>(*length_us) * 1e-6)) << ") from "
         << args.file << '\n'
         << "on         " << device.address() << " (" << caps.device << ", " << caps.class_name
         << "), state reports at " << report_hz << " Hz\n";
-    if (!limit_s && endless) {
-        out << "limit      " << number(kPlayDefaultCapS)
-            << " s: the sensation never ends by itself (--seconds S to change)\n";
+    if (!limit_s && (endless || !presses.empty())) {
+        if (!presses.empty() && !endless) {
+            out << "until      every effect has stopped after the last release at "
+                << format_elapsed(static_cast<double>(last_release_us) * 1e-6) << "\n";
+        }
+        out << "limit      " << format_elapsed(cap_s) << ": " << rule.rule << " (--seconds S to change)\n";
     }
     out << std::flush;
 
     const Clock::time_point t0 = Clock::now();
-    check(library.play(sensation.name, iterations), "play " + sensation.name);
+    if (presses.empty()) {
+        check(library.play(sensation.name, iterations), "play " + sensation.name);
+    } else {  // the reflexes wait for the hand's presses, as in feel render
+        for (std::size_t i = 0; i < effects.size(); ++i) {
+            if (sensation.effects[i].params.trigger.kind != TriggerKind::none) continue;
+            check(effects[i].start(iterations), "play " + sensation.name + ": start effect block " +
+                                                    std::to_string(effects[i].block()));
+        }
+    }
 
     LiveLine live(out, args.terminal);
     AxisPeak peaks[kMaxAxes] = {};
@@ -260,7 +306,7 @@ void run_play(const PlayArgs& args, std::ostream& out, std::ostream& err) {
             break;
         case Why::limit:
             out << "stopped    after " << format_elapsed(elapsed_s)
-                << (limit_s ? " (--seconds)" : " (the limit for a sensation that never ends)") << '\n';
+                << (limit_s ? " (--seconds)" : " (the limit: " + rule.rule + ")") << '\n';
             break;
         case Why::interrupted:
             out << "stopped    after " << format_elapsed(elapsed_s) << " (interrupted)\n";

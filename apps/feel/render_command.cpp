@@ -57,13 +57,12 @@ sim::Grip grip_by_name(const std::string& name) {
     throw UsageError("--hand " + quoted(name) + " is not a hand (allowed: " + names + ")");
 }
 
-void check_plot_path(const std::string& path) {
+void check_plot_path(const std::string& flag, const std::string& path) {
     if (path.empty()) return;
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".svg" && ext != ".png") {
-        throw UsageError("--plot " + quoted(path) +
-                         " has an unknown format (allowed extensions .svg, .png)");
+        throw UsageError(flag + " " + quoted(path) + " has an unknown format (allowed extensions .svg, .png)");
     }
 }
 
@@ -102,9 +101,14 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
         }
         options.duration_s = *args.duration_s;
     }
-    check_plot_path(args.plot);
-    if (args.output.empty() && args.plot.empty()) {
-        throw UsageError("--output: an output path is required (or - for stdout), unless --plot is given");
+    check_plot_path("--plot", args.plot);
+    check_plot_path("--plot-xy", args.plot_xy);
+    if (!args.plot_xy.empty() && options.profile->axis_count < 2) {
+        throw UsageError("--plot-xy needs a 2-axis device; " + std::string(options.profile->name) + " has " +
+                         std::to_string(options.profile->axis_count) + " axis (--plot draws it against time)");
+    }
+    if (args.output.empty() && args.plot.empty() && args.plot_xy.empty()) {
+        throw UsageError("--output: an output path is required (or - for stdout), unless --plot or --plot-xy is given");
     }
     try {
         options.presses = render::parse_presses(args.press);
@@ -129,6 +133,10 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
         make_parent_directory(args.plot);
         render::write_plot(trace, plot_title(sensation.name, options), args.plot);
     }
+    if (!args.plot_xy.empty()) {
+        make_parent_directory(args.plot_xy);
+        render::write_xy_plot(trace, plot_title(sensation.name, options), args.plot_xy);
+    }
 
     RenderReport r;
     r.file = args.file;
@@ -137,6 +145,7 @@ void run_render(const RenderArgs& args, std::ostream& out, std::ostream& err) {
     r.stats = render::summarize(trace);
     r.csv_path = csv_to_stdout ? "" : args.output;
     r.plot_path = args.plot;
+    r.plot_xy_path = args.plot_xy;
     r.trace = &trace;
     write_render_summary(r, report);
 }

@@ -94,9 +94,10 @@ void write_render_summary(const RenderReport& r, std::ostream& out) {
     if (r.trace != nullptr && (!o.presses.empty() || !r.trace->reflex_starts_us.empty())) {
         write_reflex_starts(*r.trace, o, out);
     }
-    if (!r.csv_path.empty() || !r.plot_path.empty()) out << '\n';
+    if (!r.csv_path.empty() || !r.plot_path.empty() || !r.plot_xy_path.empty()) out << '\n';
     if (!r.csv_path.empty()) out << "wrote      " << r.csv_path << " (CSV, " << st.ticks << " rows)\n";
     if (!r.plot_path.empty()) out << "wrote      " << r.plot_path << " (plot)\n";
+    if (!r.plot_xy_path.empty()) out << "wrote      " << r.plot_xy_path << " (x-y plot)\n";
 }
 
 }  // namespace feel::cli

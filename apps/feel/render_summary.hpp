@@ -17,6 +17,7 @@ struct RenderReport {
     render::TraceStats stats{};
     std::string csv_path;                            // empty: the CSV went to stdout
     std::string plot_path;                           // empty: no plot
+    std::string plot_xy_path;                        // empty: no x-y plot
     const render::Trace* trace = nullptr;            // for the dynamics' reports
 };
 

@@ -8,25 +8,30 @@
 // would make big files and a smeared line. When there are more than a few points per
 // column, each column is drawn as the vertical span from its lowest to its highest
 // value (in the order they occurred), which keeps every peak visible, exactly where it is.
-#include <cairo-svg.h>
+//
+// The position panel shows what a designer checks a wall or a barrier against: the handle
+// (solid), where the hand wanted it (dashed), the position the device reports (dotted,
+// when a clipping wall can make it differ from the handle's), a dynamic's mass
+// (dash-dot), and each wall as a line at its surface with its solid side shaded, each
+// barrier as the band between its faces. Elements at an angle other than an axis angle
+// have no single coordinate to draw against time; the x-y plot (plot_xy.cpp) shows them.
 #include <cairo.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <cmath>
-#include <memory>
 #include <numbers>
-#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "feel/render/render.hpp"
+#include "plot_canvas.hpp"
 #include "plot_scale.hpp"
 
 namespace feel::render {
 namespace {
 
-using detail::Scale;
+using namespace detail;
 
 constexpr double kWidth = 1100;
 constexpr double kHeight = 720;
@@ -35,68 +40,62 @@ constexpr double kRight = 28;
 constexpr double kTop = 64;       // the title
 constexpr double kBottom = 62;    // x tick labels and the time label
 constexpr double kPanelGap = 34;
-constexpr const char* kFont = "DejaVu Sans";
-
-struct Rgb {
-    double r, g, b;
-};
-// One color per axis (x, y, z, rx, ry, rz), distinct for the common color-vision types.
-constexpr Rgb kAxisColors[kMaxAxes] = {
-    {0.122, 0.467, 0.706}, {0.839, 0.373, 0.000}, {0.173, 0.627, 0.173},
-    {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}, {0.890, 0.467, 0.761},
-};
-constexpr Rgb kInk{0.15, 0.15, 0.17};
-constexpr Rgb kMuted{0.38, 0.38, 0.42};
-constexpr Rgb kGrid{0.90, 0.90, 0.92};
-
-struct Rect {
-    double x, y, w, h;
-};
+// Data to device coordinates: the value range sits a few units inside the frame, so a
+// force held at the motor limit draws as a visible line, not as part of the frame.
+constexpr double kValueInset = 7;
 
 using Column = float (TraceRow::*)[kMaxAxes];
 
-struct PanelSpec {
-    Column column;
-    const char* label;           // the y axis label, saying what ±10000 means on this axis
-    Column overlay = nullptr;    // drawn dashed underneath when the trace has dynamics
+// A wall or barrier as a value on one device axis: an axis element, or an angle element
+// at an axis angle (u = ±x or ±y).
+struct AxisSurface {
+    int axis = -1;            // -1: at another angle, not drawn against time
+    double at = 0;            // the wall's surface or the barrier's center, on that axis
+    bool solid_above = true;  // a wall's solid side is at larger values of the axis
 };
 
-void set_color(cairo_t* cr, Rgb c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
-
-enum class Align { start, center, end };
-
-// Draws `text` with its horizontal anchor at x and its vertical center at y.
-void draw_text(cairo_t* cr, const std::string& text, double x, double y, Align align) {
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr, text.c_str(), &ext);
-    double left = x - ext.x_bearing;
-    if (align == Align::center) left -= ext.width / 2;
-    if (align == Align::end) left -= ext.width;
-    cairo_move_to(cr, left, y - (ext.y_bearing + ext.height / 2));
-    cairo_show_text(cr, text.c_str());
+AxisSurface axis_surface(const SurfaceMark& m, int32_t axis_count) {
+    if (m.axis >= 0) return m.axis < axis_count ? AxisSurface{m.axis, m.at, m.solid_above} : AxisSurface{};
+    if (m.angle % 9000 != 0 || axis_count < 2) return {};
+    double ux = 0, uy = 0;
+    compass_direction(m.angle, ux, uy);
+    const double sign = ux + uy;  // ±1: u is ±x or ±y
+    return {ux != 0 ? 0 : 1, sign * m.at, sign > 0 ? m.solid_above : !m.solid_above};
 }
 
-void set_font(cairo_t* cr, double size, bool bold = false) {
-    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
-                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
+std::string position_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return v < 0 ? "\u2212" + std::string(buf + 1) : std::string(buf);
 }
 
-// The value range of one column over the device's axes, with 0 always in view. Data
-// within the normalized limits is never padded past them, so a force that touches the
-// motor limit gives an axis that ends at ±10000 rather than at the next step beyond.
-Scale value_scale(const Trace& trace, Column column, Column overlay = nullptr) {
+bool has_clipping_wall(const Trace& trace) {
+    for (const SurfaceMark& m : trace.surfaces) {
+        if (!m.barrier && m.clipping) return true;
+    }
+    return false;
+}
+
+// The value range of some columns over the device's axes (and of `extra` values), with 0
+// always in view. Data within the normalized limits is never padded past them, so a
+// force that touches the motor limit gives an axis that ends at ±10000 rather than at the
+// next step beyond.
+Scale value_scale(const Trace& trace, const std::vector<Column>& columns, bool with_mass,
+                  const std::vector<double>& extra = {}) {
     double lo = 0, hi = 0;
     for (const TraceRow& row : trace.rows) {
         for (int a = 0; a < trace.axis_count; ++a) {
-            lo = std::min<double>(lo, (row.*column)[a]);
-            hi = std::max<double>(hi, (row.*column)[a]);
-            if (overlay != nullptr && row.has_mass) {
-                lo = std::min<double>(lo, (row.*overlay)[a]);
-                hi = std::max<double>(hi, (row.*overlay)[a]);
+            for (Column c : columns) {
+                lo = std::min<double>(lo, (row.*c)[a]);
+                hi = std::max<double>(hi, (row.*c)[a]);
+            }
+            if (with_mass && row.has_mass) {
+                lo = std::min<double>(lo, row.mass_absolute[a]);
+                hi = std::max<double>(hi, row.mass_absolute[a]);
             }
         }
     }
+    for (double v : extra) lo = std::min(lo, v), hi = std::max(hi, v);
     if (hi - lo < 1e-3) {  // a flat zero line: show a small symmetric range around it
         lo = -1;
         hi = 1;
@@ -105,25 +104,11 @@ Scale value_scale(const Trace& trace, Column column, Column overlay = nullptr) {
     const double pad = 0.04 * (hi - lo);
     if (lo < 0) lo = lo >= -limit ? std::max(lo - pad, -limit) : lo - pad;
     if (hi > 0) hi = hi <= limit ? std::min(hi + pad, limit) : hi + pad;
-    return detail::nice_scale(lo, hi, 4, 7);
+    return nice_scale(lo, hi, 4, 7);
 }
 
-// Data to device coordinates. The value range sits a few units inside the frame, so a
-// force held at the motor limit draws as a visible line, not as part of the frame.
-constexpr double kValueInset = 7;
-
-struct Mapping {
-    Rect area;
-    Scale xs, ys;
-    double px(double x) const { return area.x + (x - xs.lo) / (xs.hi - xs.lo) * area.w; }
-    double py(double y) const {
-        const double h = area.h - 2 * kValueInset;
-        return area.y + kValueInset + h - (y - ys.lo) / (ys.hi - ys.lo) * h;
-    }
-};
-
 void draw_series(cairo_t* cr, const Trace& trace, const Mapping& m, Column column, int axis,
-                 double time_scale) {
+                 double time_scale, double width = 1.6) {
     const size_t n = trace.rows.size();
     const auto t_of = [&](size_t i) { return static_cast<double>(trace.rows[i].t_us) * time_scale; };
     const auto v_of = [&](size_t i) { return static_cast<double>((trace.rows[i].*column)[axis]); };
@@ -158,50 +143,56 @@ void draw_series(cairo_t* cr, const Trace& trace, const Mapping& m, Column colum
         }
     }
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_set_line_width(cr, 1.6);
+    cairo_set_line_width(cr, width);
     cairo_stroke(cr);
 }
 
-void draw_legend(cairo_t* cr, const Rect& area, int axis_count) {
-    set_font(cr, 13);
-    constexpr double kSwatch = 22, kGap = 6, kSpacing = 16, kPad = 8, kRowH = 22;
-    double width = kPad;
-    for (int a = 0; a < axis_count; ++a) {
-        cairo_text_extents_t ext;
-        cairo_text_extents(cr, std::string(axis_name(static_cast<Axis>(a))).c_str(), &ext);
-        width += kSwatch + kGap + ext.x_advance + (a + 1 < axis_count ? kSpacing : 0);
-    }
-    width += kPad;
-    const double x0 = area.x + area.w - width - 10;
-    const double y0 = area.y + 10;
-    cairo_rectangle(cr, x0, y0, width, kRowH);
-    cairo_set_source_rgba(cr, 1, 1, 1, 0.88);
-    cairo_fill_preserve(cr);
-    set_color(cr, kGrid);
-    cairo_set_line_width(cr, 1);
-    cairo_stroke(cr);
-
-    double x = x0 + kPad;
-    const double y = y0 + kRowH / 2;
-    for (int a = 0; a < axis_count; ++a) {
-        const std::string name(axis_name(static_cast<Axis>(a)));
-        set_color(cr, kAxisColors[a]);
-        cairo_set_line_width(cr, 2.5);
-        cairo_move_to(cr, x, y);
-        cairo_line_to(cr, x + kSwatch, y);
-        cairo_stroke(cr);
-        set_color(cr, kInk);
-        cairo_text_extents_t ext;
-        cairo_text_extents(cr, name.c_str(), &ext);
-        draw_text(cr, name, x + kSwatch + kGap, y, Align::start);
-        x += kSwatch + kGap + ext.x_advance + kSpacing;
-    }
-}
-
-void draw_panel(cairo_t* cr, const Trace& trace, const Mapping& m, const PanelSpec& spec,
-                double time_scale, bool x_labels) {
+// Each wall as a line at its surface with the solid side shaded, each barrier as a band
+// between its faces, labelled with its axis and place. Clipped to the panel by the caller.
+void draw_surfaces(cairo_t* cr, const Trace& trace, const Mapping& m) {
     const Rect& r = m.area;
-    // Background and grid.
+    set_font(cr, 12);
+    for (const SurfaceMark& mark : trace.surfaces) {
+        const AxisSurface s = axis_surface(mark, trace.axis_count);
+        if (s.axis < 0) continue;
+        const std::string axis(axis_name(static_cast<Axis>(s.axis)));
+        std::string label;
+        double label_y = 0;
+        if (mark.barrier) {
+            const double top = m.py(s.at + mark.thickness / 2), bottom = m.py(s.at - mark.thickness / 2);
+            set_color(cr, kBarrierColor, 0.16);
+            cairo_rectangle(cr, r.x, top, r.w, std::max(bottom - top, 1.0));
+            cairo_fill(cr);
+            set_color(cr, kBarrierColor, 0.9);
+            cairo_set_line_width(cr, 1.2);
+            for (double y : {top, bottom}) {
+                cairo_move_to(cr, r.x, y);
+                cairo_line_to(cr, r.x + r.w, y);
+            }
+            cairo_stroke(cr);
+            label = axis + " barrier " + position_text(s.at) + " \u00b1 " + position_text(mark.thickness / 2);
+            label_y = top - 9;
+        } else {
+            const double y = m.py(s.at);
+            set_color(cr, kWallColor, 0.07);  // the solid side
+            cairo_rectangle(cr, r.x, s.solid_above ? r.y : y, r.w, s.solid_above ? y - r.y : r.y + r.h - y);
+            cairo_fill(cr);
+            set_color(cr, kWallColor);
+            cairo_set_line_width(cr, 2);
+            cairo_move_to(cr, r.x, y);
+            cairo_line_to(cr, r.x + r.w, y);
+            cairo_stroke(cr);
+            label = axis + " wall " + position_text(s.at) + (s.solid_above ? ", solid above" : ", solid below") +
+                    (mark.clipping ? ", clipping" : "") + (mark.relative ? " (relative)" : "");
+            label_y = s.solid_above ? y - 10 : y + 10;
+        }
+        set_color(cr, mark.barrier ? kBarrierColor : kWallColor);
+        draw_text(cr, label, r.x + 8, label_y, Align::start);
+    }
+}
+
+void draw_frame_and_grid(cairo_t* cr, const Mapping& m) {
+    const Rect& r = m.area;
     cairo_rectangle(cr, r.x, r.y, r.w, r.h);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_fill(cr);
@@ -218,13 +209,53 @@ void draw_panel(cairo_t* cr, const Trace& trace, const Mapping& m, const PanelSp
         cairo_line_to(cr, r.x + r.w, y);
     }
     cairo_stroke(cr);
+}
 
-    // Zero line, and the ±10000 limits (dashed) when they are in view: the axis label says
-    // what they mean.
+void draw_ticks(cairo_t* cr, const Mapping& m, bool x_labels, const std::string& y_label) {
+    const Rect& r = m.area;
+    set_color(cr, kInk);
+    cairo_set_line_width(cr, 1.2);
+    cairo_rectangle(cr, std::round(r.x) + 0.5, std::round(r.y) + 0.5, std::round(r.w), std::round(r.h));
+    cairo_stroke(cr);
+    set_font(cr, 12.5);
+    cairo_set_line_width(cr, 1);
+    for (double v : m.ys.ticks()) {
+        const double y = std::round(m.py(v)) + 0.5;
+        cairo_move_to(cr, r.x - 5, y);
+        cairo_line_to(cr, r.x, y);
+        cairo_stroke(cr);
+        draw_text(cr, tick_label(v, m.ys.step), r.x - 9, y, Align::end);
+    }
+    for (double t : m.xs.ticks()) {
+        const double x = std::round(m.px(t)) + 0.5;
+        cairo_move_to(cr, x, r.y + r.h);
+        cairo_line_to(cr, x, r.y + r.h + 5);
+        cairo_stroke(cr);
+        if (x_labels) draw_text(cr, tick_label(t, m.xs.step), x, r.y + r.h + 17, Align::center);
+    }
+    // The y axis label, rotated, centered on the panel.
+    set_font(cr, 14);
     cairo_save(cr);
-    cairo_rectangle(cr, r.x, r.y, r.w, r.h);
-    cairo_clip(cr);
+    cairo_translate(cr, 24, r.y + r.h / 2);
+    cairo_rotate(cr, -std::numbers::pi / 2);
+    draw_text(cr, y_label, 0, 0, Align::center);
+    cairo_restore(cr);
+}
+
+std::vector<LegendEntry> axis_entries(int32_t axis_count) {
+    std::vector<LegendEntry> entries;
+    for (int a = 0; a < axis_count; ++a) {
+        entries.push_back({std::string(axis_name(static_cast<Axis>(a))), kAxisColors[a]});
+    }
+    return entries;
+}
+
+// The zero line, and the ±10000 limits (dashed) when they are in view: the axis label
+// says what they mean.
+void draw_reference_lines(cairo_t* cr, const Mapping& m) {
+    const Rect& r = m.area;
     set_color(cr, kMuted, 0.8);
+    cairo_set_line_width(cr, 1);
     cairo_move_to(cr, r.x, std::round(m.py(0)) + 0.5);
     cairo_line_to(cr, r.x + r.w, std::round(m.py(0)) + 0.5);
     cairo_stroke(cr);
@@ -239,58 +270,71 @@ void draw_panel(cairo_t* cr, const Trace& trace, const Mapping& m, const PanelSp
         cairo_stroke(cr);
     }
     cairo_set_dash(cr, nullptr, 0, 0);
+}
 
-    // The data, clipped to the panel. A dynamic's simulated mass draws dashed over the
-    // handle's position, in the same axis colors, where the mass exists.
-    if (spec.overlay != nullptr && trace.has_dynamics) {
-        const double mass_dashes[] = {4, 3};
-        cairo_set_dash(cr, mass_dashes, 2, 0);
-        for (int a = trace.axis_count - 1; a >= 0; --a) {
-            set_color(cr, kAxisColors[a], 0.75);
-            draw_series(cr, trace, m, spec.overlay, a, time_scale);
-        }
-        cairo_set_dash(cr, nullptr, 0, 0);
-    }
+void draw_force_panel(cairo_t* cr, const Trace& trace, const Mapping& m, double time_scale) {
+    draw_frame_and_grid(cr, m);
+    cairo_save(cr);
+    cairo_rectangle(cr, m.area.x, m.area.y, m.area.w, m.area.h);
+    cairo_clip(cr);
+    draw_reference_lines(cr, m);
     for (int a = trace.axis_count - 1; a >= 0; --a) {  // x on top
         set_color(cr, kAxisColors[a]);
-        draw_series(cr, trace, m, spec.column, a, time_scale);
+        draw_series(cr, trace, m, &TraceRow::force, a, time_scale);
     }
     cairo_restore(cr);
+    draw_ticks(cr, m, false, "force (\u00b110000 = motor limit)");
+    draw_legend(cr, m.area.x + m.area.w - 10, m.area.y + 10, m.area.w * 0.7, axis_entries(trace.axis_count));
+}
 
-    // Frame.
-    set_color(cr, kInk);
-    cairo_set_line_width(cr, 1.2);
-    cairo_rectangle(cr, std::round(r.x) + 0.5, std::round(r.y) + 0.5, std::round(r.w), std::round(r.h));
-    cairo_stroke(cr);
-
-    // Tick marks and labels.
-    set_font(cr, 12.5);
-    cairo_set_line_width(cr, 1);
-    for (double v : m.ys.ticks()) {
-        const double y = std::round(m.py(v)) + 0.5;
-        cairo_move_to(cr, r.x - 5, y);
-        cairo_line_to(cr, r.x, y);
-        cairo_stroke(cr);
-        draw_text(cr, detail::tick_label(v, m.ys.step), r.x - 9, y, Align::end);
-    }
-    for (double t : m.xs.ticks()) {
-        const double x = std::round(m.px(t)) + 0.5;
-        cairo_move_to(cr, x, r.y + r.h);
-        cairo_line_to(cr, x, r.y + r.h + 5);
-        cairo_stroke(cr);
-        if (x_labels) draw_text(cr, detail::tick_label(t, m.xs.step), x, r.y + r.h + 17, Align::center);
-    }
-
-    // The y axis label, rotated, centered on the panel.
-    set_font(cr, 14);
-    set_color(cr, kInk);
+void draw_position_panel(cairo_t* cr, const Trace& trace, const Mapping& m, double time_scale) {
+    const bool reported = has_clipping_wall(trace);
+    draw_frame_and_grid(cr, m);
     cairo_save(cr);
-    cairo_translate(cr, 24, r.y + r.h / 2);
-    cairo_rotate(cr, -std::numbers::pi / 2);
-    draw_text(cr, spec.label, 0, 0, Align::center);
+    cairo_rectangle(cr, m.area.x, m.area.y, m.area.w, m.area.h);
+    cairo_clip(cr);
+    draw_surfaces(cr, trace, m);
+    draw_reference_lines(cr, m);
+    const auto dashed = [&](Column column, const double* dashes, int count, double alpha, double width) {
+        cairo_set_dash(cr, dashes, count, 0);
+        for (int a = trace.axis_count - 1; a >= 0; --a) {
+            set_color(cr, kAxisColors[a], alpha);
+            draw_series(cr, trace, m, column, a, time_scale, width);
+        }
+        cairo_set_dash(cr, nullptr, 0, 0);
+    };
+    if (trace.has_hand) dashed(&TraceRow::target, kTargetDash, 2, 0.6, 1.3);
+    if (trace.has_dynamics) dashed(&TraceRow::mass_absolute, kMassDash, 4, 0.75, 1.6);
+    for (int a = trace.axis_count - 1; a >= 0; --a) {  // x on top
+        set_color(cr, kAxisColors[a]);
+        draw_series(cr, trace, m, &TraceRow::position, a, time_scale);
+    }
+    if (reported) {
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        for (int a = trace.axis_count - 1; a >= 0; --a) {
+            set_color(cr, {kAxisColors[a].r * 0.45, kAxisColors[a].g * 0.45, kAxisColors[a].b * 0.45});
+            cairo_set_dash(cr, kReportedDash, 2, 0);
+            draw_series(cr, trace, m, &TraceRow::reported, a, time_scale, 2.2);
+        }
+        cairo_set_dash(cr, nullptr, 0, 0);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    }
     cairo_restore(cr);
+    draw_ticks(cr, m, true, "position (\u00b110000 = end of travel)");
 
-    draw_legend(cr, r, trace.axis_count);
+    std::vector<LegendEntry> entries = axis_entries(trace.axis_count);
+    entries.push_back({"handle", kInk});
+    if (trace.has_hand) entries.push_back({"hand target", kInk, LegendEntry::Mark::dashed, 0.6});
+    if (reported) entries.push_back({"reported", kInk, LegendEntry::Mark::dotted});
+    if (trace.has_dynamics) entries.push_back({"simulated mass", kInk, LegendEntry::Mark::dash_dot, 0.75});
+    bool walls = false, barriers = false;
+    for (const SurfaceMark& s : trace.surfaces) {
+        if (axis_surface(s, trace.axis_count).axis < 0) continue;
+        (s.barrier ? barriers : walls) = true;
+    }
+    if (walls) entries.push_back({"wall (solid side shaded)", kWallColor});
+    if (barriers) entries.push_back({"barrier", kBarrierColor, LegendEntry::Mark::band, 0.35});
+    draw_legend(cr, m.area.x + m.area.w - 10, m.area.y + 10, m.area.w * 0.7, entries);
 }
 
 void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
@@ -300,19 +344,23 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     const double t_end_s = static_cast<double>(trace.rows.back().t_us) * 1e-6;
     const bool in_ms = t_end_s < 2.0;
     const double time_scale = in_ms ? 1e-3 : 1e-6;  // µs -> display unit
-    const Scale xs = detail::exact_scale(static_cast<double>(trace.rows.front().t_us) * time_scale,
-                                         static_cast<double>(trace.rows.back().t_us) * time_scale, 10);
+    const Scale xs = exact_scale(static_cast<double>(trace.rows.front().t_us) * time_scale,
+                                 static_cast<double>(trace.rows.back().t_us) * time_scale, 10);
 
     const double panel_h = (kHeight - kTop - kBottom - kPanelGap) / 2;
     const double panel_w = kWidth - kLeft - kRight;
-    const PanelSpec force{&TraceRow::force, "force (\u00b110000 = motor limit)"};
-    const PanelSpec position{&TraceRow::position,
-                             trace.has_dynamics ? "position; dashed: the simulated mass"
-                                                : "position (\u00b110000 = end of travel)",
-                             &TraceRow::mass_absolute};
-    const Mapping top{{kLeft, kTop, panel_w, panel_h}, xs, value_scale(trace, force.column)};
+    std::vector<double> surfaces;  // the walls and barriers drawn stay in view
+    for (const SurfaceMark& s : trace.surfaces) {
+        const AxisSurface a = axis_surface(s, trace.axis_count);
+        if (a.axis < 0) continue;
+        surfaces.push_back(a.at - s.thickness / 2);
+        surfaces.push_back(a.at + s.thickness / 2);
+    }
+    std::vector<Column> positions{&TraceRow::position};
+    if (trace.has_hand) positions.push_back(&TraceRow::target);
+    const Mapping top{{kLeft, kTop, panel_w, panel_h}, xs, value_scale(trace, {&TraceRow::force}, false), kValueInset};
     const Mapping bottom{{kLeft, kTop + panel_h + kPanelGap, panel_w, panel_h}, xs,
-                         value_scale(trace, position.column, position.overlay)};
+                         value_scale(trace, positions, trace.has_dynamics, surfaces), kValueInset};
 
     set_font(cr, 19, true);
     set_color(cr, kInk);
@@ -323,63 +371,22 @@ void draw(cairo_t* cr, const Trace& trace, const std::string& title) {
     std::snprintf(rate, sizeof rate, "%zu ticks at %g Hz", trace.rows.size(), trace.rate_hz);
     draw_text(cr, rate, kWidth - kRight, kTop / 2 - 2, Align::end);
 
-    draw_panel(cr, trace, top, force, time_scale, false);
-    draw_panel(cr, trace, bottom, position, time_scale, true);
+    draw_force_panel(cr, trace, top, time_scale);
+    draw_position_panel(cr, trace, bottom, time_scale);
 
     set_font(cr, 14);
     set_color(cr, kInk);
     draw_text(cr, in_ms ? "time (ms)" : "time (s)", kLeft + panel_w / 2, kHeight - 18, Align::center);
 }
 
-std::string lowercase_extension(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-struct SurfaceDeleter {
-    void operator()(cairo_surface_t* s) const noexcept { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-    void operator()(cairo_t* c) const noexcept { cairo_destroy(c); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using Context = std::unique_ptr<cairo_t, ContextDeleter>;
-
-void check(cairo_status_t status, const std::string& path) {
-    if (status != CAIRO_STATUS_SUCCESS) {
-        throw std::runtime_error("cannot write plot " + path + ": " + cairo_status_to_string(status));
-    }
-}
-
 }  // namespace
 
 void write_plot(const Trace& trace, const std::string& title, const std::string& path) {
-    const std::string ext = lowercase_extension(path);
-    if (ext != ".svg" && ext != ".png") {
-        throw std::invalid_argument("--plot " + path +
-                                    ": unknown plot format (allowed extensions .svg, .png)");
-    }
+    const std::string ext = plot_extension(path, "--plot");
     if (trace.rows.empty() || trace.axis_count < 1 || trace.axis_count > kMaxAxes) {
         throw std::invalid_argument("cannot plot " + path + ": the trace has no rows or no axes");
     }
-
-    Surface surface(ext == ".svg"
-                        ? cairo_svg_surface_create(path.c_str(), kWidth, kHeight)
-                        : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(kWidth),
-                                                     static_cast<int>(kHeight)));
-    check(cairo_surface_status(surface.get()), path);
-    {
-        Context cr(cairo_create(surface.get()));
-        draw(cr.get(), trace, title);
-        check(cairo_status(cr.get()), path);
-    }
-    if (ext == ".png") check(cairo_surface_write_to_png(surface.get(), path.c_str()), path);
-    cairo_surface_finish(surface.get());
-    check(cairo_surface_status(surface.get()), path);
+    write_plot_file(path, ext, kWidth, kHeight, [&](cairo_t* cr) { draw(cr, trace, title); });
 }
 
 }  // namespace feel::render

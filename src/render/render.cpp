@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -114,6 +115,45 @@ sim::TargetMotion parse_motion(const std::string& spec, double duration_s, int32
     }
 }
 
+bool is_surface(EffectType type) noexcept {
+    return type == EffectType::axis_wall || type == EffectType::angle_wall || type == EffectType::axis_barrier ||
+           type == EffectType::angle_barrier;
+}
+
+// The mark of a wall or barrier effect, its `at` the block's offset (a relative wall adds
+// the handle's position along u when it begins playing: place_relative()).
+SurfaceMark surface_mark(const format::Sensation& sensation, size_t index) {
+    const EffectParams& p = sensation.effects[index].params;
+    SurfaceMark m;
+    m.effect = sensation.compound ? sensation.name + " effect " + std::to_string(index) : sensation.name;
+    m.barrier = p.type == EffectType::axis_barrier || p.type == EffectType::angle_barrier;
+    const bool angled = p.type == EffectType::angle_wall || p.type == EffectType::angle_barrier;
+    m.axis = angled ? -1 : axis_index(p.axes[0]);
+    if (m.barrier) {
+        m.angle = angled ? p.barrier.angle : 0;
+        m.at = p.barrier.offset;
+        m.thickness = p.barrier.thickness;
+    } else {
+        m.angle = angled ? p.wall.angle : 0;
+        m.at = p.wall.offset;
+        m.solid_above = p.wall.sense == WallSense::positive;
+        m.clipping = p.wall.clipping;
+        m.relative = p.wall.offset_mode == OffsetMode::relative;
+    }
+    return m;
+}
+
+// A relative wall's surface: offset + start·u, start the sensed position the engine saw
+// on the effect's first playing tick.
+void place_relative(SurfaceMark& m, const float start[kMaxAxes]) {
+    if (m.axis >= 0) {
+        m.at += start[m.axis];
+        return;
+    }
+    const double a = m.angle * std::numbers::pi / 18000.0;
+    m.at += std::sin(a) * start[0] + std::cos(a) * start[1];
+}
+
 }  // namespace
 
 sim::InputSchedule input_schedule(const std::vector<Press>& presses, const sim::DeviceProfile& profile) {
@@ -180,8 +220,21 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
     trace.axis_count = profile.axis_count;
     trace.rate_hz = static_cast<double>(rate);
     trace.rows.resize(static_cast<size_t>(ticks));
+    trace.has_hand = options.grip != sim::Grip::none;
     for (const format::EffectSpec& e : sensation.effects) {
         if (effect_class(e.params.type) == EffectClass::dynamic) trace.has_dynamics = true;
+    }
+    // Relative walls wait for their first playing tick to know where they are.
+    struct Unplaced {
+        SurfaceMark mark;
+        EffectId id;
+    };
+    std::vector<Unplaced> unplaced;
+    for (size_t i = 0; i < sensation.effects.size(); ++i) {
+        if (!is_surface(sensation.effects[i].params.type)) continue;
+        SurfaceMark mark = surface_mark(sensation, i);
+        if (mark.relative) unplaced.push_back({std::move(mark), ids[i]});
+        else trace.surfaces.push_back(std::move(mark));
     }
     for (int64_t n = 0; n < ticks; ++n) {
         TickInput in;
@@ -193,6 +246,16 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
         for (uint64_t k = fired_before; k < reflexes.fired(); ++k) trace.reflex_starts_us.push_back(in.t_us);
         TickOutput out;
         engine.tick(in, out);
+        for (auto u = unplaced.begin(); u != unplaced.end();) {
+            if (engine.status(u->id).state != EffectState::playing) {
+                ++u;
+                continue;
+            }
+            place_relative(u->mark, in.position);
+            trace.surfaces.push_back(std::move(u->mark));
+            u = unplaced.erase(u);
+        }
+        const sim::TargetMotion::Sample target = device.motion().at(static_cast<double>(in.t_us) * 1e-6);
 
         TraceRow& row = trace.rows[static_cast<size_t>(n)];
         row.t_us = in.t_us;
@@ -202,6 +265,7 @@ Trace render(const format::Sensation& sensation, const RenderOptions& options) {
             row.velocity[a] = static_cast<float>(device.velocity(a));
             row.force[a] = out.force[a];
             row.reported[a] = out.reported_position[a];
+            row.target[a] = static_cast<float>(target.position[a]);
             row.mass_relative[a] = out.mass_position[a];
             row.mass_velocity[a] = out.mass_velocity[a];
             row.mass_absolute[a] = out.has_mass ? in.position[a] + out.mass_position[a] : 0.0f;

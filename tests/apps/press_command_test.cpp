@@ -214,6 +214,42 @@ TEST_F(Press, PlayPressesTheSimulatedHandsButtons) {
     EXPECT_NE(lacking.err.find("wheel"), std::string::npos) << lacking.err;
 }
 
+// Without --seconds, play runs until the last reflex's effect has ended: button 1 held
+// from 0.1 s to 0.75 s starts the gun at 0.1, 0.4 and 0.7 s (repeat 300 ms), and the last
+// 100 ms tap ends at 0.8 s. Nothing plays before the first press (the reflex waits for it,
+// as in render), so the peak is at a press.
+TEST_F(Press, PlayWithoutSecondsEndsWhenTheLastReflexHasEnded) {
+    const Result r = run_cli({"play", file_, "--sensation", "gun", "--device", "sim:wheel", "--press", "1@0.1:0.75"});
+    ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+    EXPECT_NE(r.out.find("until      every effect has stopped after the last release at 0.750 s"), std::string::npos)
+        << r.out;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(ended      after ([0-9.]+) s)"))) << r.out;
+    const double last_end_s = 0.7 + static_cast<double>(kTapUs) * 1e-6;
+    EXPECT_GE(std::stod(m[1].str()), last_end_s - 0.01) << r.out;
+    EXPECT_LT(std::stod(m[1].str()), last_end_s + 0.4) << r.out;  // the host's clock and queues, under load
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(\nx +[-+][0-9]+\.[0-9] +([0-9.]+) s)"))) << r.out;
+    EXPECT_GE(std::stod(m[1].str()), 0.1 - 0.01) << r.out;
+}
+
+// A sensation that never ends is stopped 10 s (kPlayDefaultCapS) after the last release,
+// not 10 s after the start: a schedule is never cut short.
+TEST_F(Press, PlayStopsAnEndlessSensationTenSecondsAfterTheLastRelease) {
+    format::SensationFile file = trigger_file();
+    file.sensations.resize(1);
+    file.sensations[0].effects[0].params.duration_us = kInfiniteUs;
+    file.sensations[0].effects[0].params.trigger_repeat_interval_us = 0;
+    const std::string endless = path("endless.feel.json");
+    write(endless, format::write_sensation_file(file));
+    const Result r = run_cli({"play", endless, "--device", "sim:wheel", "--press", "1@0.05:0.3"});
+    ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+    EXPECT_NE(r.out.find("limit      10.300 s"), std::string::npos) << r.out;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(stopped    after ([0-9.]+) s)"))) << r.out;
+    EXPECT_GE(std::stod(m[1].str()), 0.3 + kPlayDefaultCapS) << r.out;
+    EXPECT_LT(std::stod(m[1].str()), 0.3 + kPlayDefaultCapS + 0.4) << r.out;
+}
+
 // The summary's peak is at least every force a live line showed (the first report too).
 TEST_F(Press, PlaysPeakIsAtLeastEveryForceTheLiveLinesShowed) {
     format::SensationFile one = trigger_file();

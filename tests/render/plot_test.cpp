@@ -112,5 +112,21 @@ TEST_F(Plot, AnUnwritablePathIsARuntimeErrorNamingIt) {
     }
 }
 
+// The x-y view needs an x and a y: a 1-axis trace is refused naming the flag.
+TEST_F(Plot, TheXyViewOfAOneAxisTraceIsRefused) {
+    Trace one = sample_trace(10);
+    one.axis_count = 1;
+    const fs::path path = dir_ / "one.svg";
+    try {
+        write_xy_plot(one, "one", path.string());
+        FAIL() << "a 1-axis x-y plot was drawn";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("--plot-xy needs a 2-axis device"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path));
+    write_xy_plot(sample_trace(500), "two", path.string());
+    EXPECT_NE(read(path).find("</svg>"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace feel::render

@@ -304,3 +304,60 @@ TEST(SensationLength, IsTheLatestEndOverEffectsOrEndless) {
 
 }  // namespace
 }  // namespace feel::render
+
+namespace feel::render {
+namespace {
+
+// The trace's walls for plots (docs/conditions.md, "Geometry"): an absolute wall at its
+// offset; a relative one at offset + the handle's position along u where it began playing
+// (§3.7's Offset-Flag), here an angle wall at compass 9000 (u = +x) with the hand holding
+// the handle at x = 3000: its surface is at x = 4500, to within one sensor step.
+TEST(RenderSurfaces, AWallIsMarkedAtItsOffsetARelativeOneFromWhereTheHandleWas) {
+    EffectParams wall;
+    wall.type = EffectType::angle_wall;
+    wall.duration_us = 100'000;
+    wall.axis_count = 2;
+    wall.axes[0] = Axis::x;
+    wall.axes[1] = Axis::y;
+    wall.wall.hardness = 5000;
+    wall.wall.angle = 9000;
+    wall.wall.offset = 1500;
+    wall.wall.offset_mode = OffsetMode::relative;
+    EffectParams floor = wall;
+    floor.type = EffectType::axis_barrier;
+    floor.axis_count = 1;
+    floor.axes[0] = Axis::y;
+    floor.barrier.pos_hardness = floor.barrier.neg_hardness = 4000;
+    floor.barrier.thickness = 300;
+    floor.barrier.offset = -2500;
+    format::Sensation s{"pair", std::nullopt, true, {{wall, {}, {}}, {floor, {}, {}}}};
+    RenderOptions o;
+    o.profile = &testing::profile("joystick");
+    o.grip = sim::Grip::kinematic;
+    o.motion = "hold:3000,0";
+    o.duration_s = 0.05;
+    const Trace trace = render(s, o);
+    ASSERT_EQ(trace.surfaces.size(), 2u);
+    const SurfaceMark& barrier = trace.surfaces[0];  // absolute: known before the first tick
+    EXPECT_TRUE(barrier.barrier);
+    EXPECT_EQ(barrier.axis, 1);
+    EXPECT_EQ(barrier.at, -2500);
+    EXPECT_EQ(barrier.thickness, 300);
+    EXPECT_EQ(barrier.effect, "pair effect 1");
+    const SurfaceMark& relative = trace.surfaces[1];
+    EXPECT_FALSE(relative.barrier);
+    EXPECT_TRUE(relative.relative);
+    EXPECT_EQ(relative.axis, -1);
+    EXPECT_EQ(relative.angle, 9000);
+    const double step = 20000.0 / o.profile->axes[0].sensor_counts;
+    EXPECT_NEAR(relative.at, 3000 + 1500, step);
+    // The hand's target is the motion: held at (3000, 0) on every tick.
+    EXPECT_TRUE(trace.has_hand);
+    for (const TraceRow& row : trace.rows) {
+        EXPECT_EQ(row.target[0], 3000.0f);
+        EXPECT_EQ(row.target[1], 0.0f);
+    }
+}
+
+}  // namespace
+}  // namespace feel::render

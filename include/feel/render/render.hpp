@@ -25,7 +25,7 @@ namespace feel::render {
 inline constexpr double kMinRateHz = 100;
 inline constexpr double kMaxRateHz = 10000;
 inline constexpr double kMaxDurationS = 600;
-inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (88 B a row: ~180 MB)
+inline constexpr int64_t kMaxTicks = 2'000'000;  // bounds a trace's memory (208 B a row: ~420 MB)
 
 // A button or hat switch held down from press_us to release_us (`feel render --press`).
 struct Press {
@@ -64,6 +64,7 @@ struct TraceRow {
     float velocity[kMaxAxes] = {};  // true handle velocity, normalized units/s
     float force[kMaxAxes] = {};     // force the engine commands, normalized, physical sign
     float reported[kMaxAxes] = {};  // position the device reports (clipped at clipping walls)
+    float target[kMaxAxes] = {};    // where the hand wants the handle (the --motion), normalized
     // The first playing dynamic's simulated mass (TickOutput::mass_*): relative to the
     // handle, and absolute (handle + relative) for plots. Zero while no dynamic plays.
     bool has_mass = false;
@@ -73,10 +74,28 @@ struct TraceRow {
     bool saturated = false;         // the engine clamped the summed force on some axis
 };
 
+// Where a wall or barrier of the sensation lies (docs/conditions.md, "Geometry"), for plots:
+// its surface is the set of positions p with p·u = at, u the direction across it (the
+// effect's axis, or (sin a, cos a) on x, y for compass angle a).
+struct SurfaceMark {
+    std::string effect;          // "NAME" or "NAME effect I" in a compound
+    bool barrier = false;        // false: a wall
+    int32_t axis = -1;           // an axis element's device axis (0 = x); -1: an angle element
+    int32_t angle = 0;           // an angle element's compass angle, 1/100 degree, on x, y
+    double at = 0;               // the wall's surface, or the barrier's center: p·u, position units
+    double thickness = 0;        // a barrier's, position units: its faces are at ± thickness/2
+    bool solid_above = true;     // a wall: the solid is p·u > at (positive sense), else below
+    bool clipping = false;       // a wall: the reported position stops at its surface
+    bool relative = false;       // offset_mode relative: placed from the handle where it began playing
+};
+
 struct Trace {
     int32_t axis_count = 0;  // the device's axes, x, y, z, rx, ry, rz in that order
     double rate_hz = 0;
     std::vector<TraceRow> rows;
+    bool has_hand = false;                     // a hand holds the handle: TraceRow::target means something
+    // Every wall and barrier the sensation has; a relative wall only once it began playing.
+    std::vector<SurfaceMark> surfaces;
     bool has_dynamics = false;                 // the sensation has a dynamic: mass columns
     std::vector<DynamicReport> final_reports;  // dynamics that ended by themselves (§5.2)
     std::vector<int64_t> reflex_starts_us;     // when a reflex started its effect, µs (every effect)
@@ -103,8 +122,17 @@ struct Trace {
 void write_csv(const Trace& trace, std::ostream& out);
 
 // Draws force and position against time; the format follows the extension (.svg, .png).
+// The position panel also shows the hand's target, the reported position and the walls
+// and barriers of axis elements (and of angle elements at an axis angle).
 // Throws std::invalid_argument for another extension or an empty trace, and
 // std::runtime_error when the file cannot be written.
 void write_plot(const Trace& trace, const std::string& title, const std::string& path);
+
+// Draws the x-y plane (`feel render --plot-xy`): the handle's path, the hand's target and
+// the reported position, the walls and barriers as lines across the plane, and the force
+// as sparse arrows, at one scale on both axes. Throws std::invalid_argument for another
+// extension, an empty trace or a trace of fewer than 2 axes (naming --plot-xy), and
+// std::runtime_error when the file cannot be written.
+void write_xy_plot(const Trace& trace, const std::string& title, const std::string& path);
 
 }  // namespace feel::render
