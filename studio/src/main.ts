@@ -70,7 +70,7 @@ live.on((m) => {
     case 'state': {
       ++frames;
       plot.push(m.samples as number[][]);
-      pad.update(m.position as number[], m.force as number[]);
+      pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
       if ((m.effects as EffectLive[]).length || liveStates.length) {
         // redraw the views only when a state, a start count or an arming changed
         const key = (l: EffectLive[]) => JSON.stringify(l.map((e) => [e.state, e.starts, e.armed]));
