@@ -164,6 +164,8 @@ Response api(Shared& shared, const Request& req) {
             }
             return json_reply(req, http::status::ok, {{"text", ws.combine(sources, string_field(body, "to"))}});
         }
+    } catch (const WorkspaceFileMissing& e) {
+        return error_reply(req, http::status::not_found, e.what());
     } catch (const WorkspaceError& e) {
         return error_reply(req, http::status::forbidden, e.what());
     } catch (const format::FormatError& e) {

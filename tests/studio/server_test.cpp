@@ -142,6 +142,26 @@ TEST_F(ServerTest, RefusesPathsOutsideTheWorkspace) {
     EXPECT_EQ(api("save", {{"path", "out/x.feel.json"}, {"text", "{}"}}).status, 403u);
 }
 
+// A file that is not there is not a refusal: 404 with a sentence naming it (the favorites
+// file before the first favorite is saved), while a path that leads out stays 403.
+TEST_F(ServerTest, AMissingFileIsNotFoundNotForbidden) {
+    const Reply favorites = api("read", {{"path", "favorites.feel.json"}});
+    EXPECT_EQ(favorites.status, 404u) << favorites.body;
+    EXPECT_EQ(json::parse(favorites.body)["error"], "path \"favorites.feel.json\": no such file in the workspace");
+    EXPECT_EQ(api("read", {{"path", "no/such/folder.feel.json"}}).status, 404u);
+    EXPECT_EQ(api("copy", {{"from", "gone.feel.json"}, {"to", "copy.feel.json"}}).status, 404u);
+    EXPECT_EQ(api("rename", {{"from", "gone.feel.json"}, {"to", "moved.feel.json"}}).status, 404u);
+    fs::create_directory_symlink(fs::temp_directory_path(), root_ / "out");
+    const Reply out = api("read", {{"path", "out/favorites.feel.json"}});
+    EXPECT_EQ(out.status, 403u) << out.body;
+    EXPECT_NE(out.body.find("leads out"), std::string::npos) << out.body;
+    // Once saved, it reads.
+    const std::string text = R"({"format": "feel/1", "sensations": {"My_Favorites.soft": {"type": "spring",
+      "duration_us": "infinite", "axes": ["x"], "conditions": [{"pos_coefficient": 2000, "neg_coefficient": 2000}]}}})";
+    ASSERT_EQ(api("save", {{"path", "favorites.feel.json"}, {"text", text}}).status, 200u);
+    EXPECT_EQ(api("read", {{"path", "favorites.feel.json"}}).status, 200u);
+}
+
 TEST_F(ServerTest, BoundsBodiesAndAnswersMalformedRequests) {
     EXPECT_EQ(request(http::verb::post, "/api/read", "not json").status, 400u);
     EXPECT_EQ(request(http::verb::post, "/api/list", "[1]").status, 400u);
