@@ -54,9 +54,13 @@ json describe(const FieldSpec& f, std::string_view path, const EffectParams* val
         d["shown_unit"] = "°";
     }
     switch (f.kind) {
-        case ValueKind::boolean: d["kind"] = "boolean"; break;
+        case ValueKind::boolean:
+            d["kind"] = "boolean";
+            d["unit"] = "";  // a yes or no has no unit
+            break;
         case ValueKind::choice: {
             d["kind"] = "choice";
+            d["unit"] = "";  // one of the named choices
             json c = json::array();
             for (std::string_view s : f.choices) c.push_back(s);
             d["choices"] = c;
@@ -101,13 +105,15 @@ struct CommonField {
     bool required;
     bool infinite;  // may be "infinite"
     void (*set)(EffectParams&, int, int64_t);
+    int64_t huge = int64_t{1} << 40;  // far out of range, and what the field can hold
 };
+constexpr int64_t kHugeI32 = std::numeric_limits<int32_t>::max();
 constexpr CommonField kCommon[] = {
     {"duration_us", true, true, [](EffectParams& p, int, int64_t v) { p.duration_us = v; }},
     {"start_delay_us", false, false, [](EffectParams& p, int, int64_t v) { p.start_delay_us = v; }},
     {"iterations", false, true,
-     [](EffectParams& p, int, int64_t v) { p.iterations = static_cast<int32_t>(v); }},
-    {"gain", false, false, [](EffectParams& p, int, int64_t v) { p.gain = static_cast<int32_t>(v); }},
+     [](EffectParams& p, int, int64_t v) { p.iterations = static_cast<int32_t>(v); }, kHugeI32},
+    {"gain", false, false, [](EffectParams& p, int, int64_t v) { p.gain = static_cast<int32_t>(v); }, kHugeI32},
     {"trigger_repeat_interval_us", false, false,
      [](EffectParams& p, int, int64_t v) {
          p.trigger = {TriggerKind::button, 1};
@@ -228,7 +234,7 @@ json describe_fields(const format::SensationFile& starters) {
     for (const CommonField& c : kCommon) {
         json d = {{"name", c.name}, {"kind", "integer"}, {"required", c.required},
                   {"infinite", c.infinite}, {"unit", unit_of(c.name)}};
-        if (any_valid != nullptr) probe_range(d, c.name, *any_valid, c.set, 0, int64_t{1} << 40);
+        if (any_valid != nullptr) probe_range(d, c.name, *any_valid, c.set, 0, c.huge);
         common.push_back(d);
     }
     return {{"types", types}, {"common", common}, {"direction", direction}};

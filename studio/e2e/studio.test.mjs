@@ -121,7 +121,8 @@ async function setField(page, path, value) {
 async function dragTo(page, x, y, from = [0, 0], steps = 20) {
   const box = await page.locator('#pad-canvas').boundingBox();
   const m = 14 * box.width / 320, s = (box.width - 2 * m) / 20000;
-  const at = (px, py) => [box.x + m + (px + 10000) * s, box.y + m + (10000 - py) * s];
+  const slider = box.height < box.width / 2; // a 1-axis device's pad: only x counts
+  const at = (px, py) => [box.x + m + (px + 10000) * s, slider ? box.y + box.height / 2 : box.y + m + (10000 - py) * s];
   await page.mouse.move(...at(...from));
   await page.mouse.down();
   for (let i = 1; i <= steps; ++i) {

@@ -57,6 +57,14 @@ TEST(FieldSchema, RangesAreThePrimers) {
         }
     }
     EXPECT_TRUE(duration);
+    // §6.3: an effect's gain 0..10000; a choice has no unit
+    for (const json& c : d["common"]) {
+        if (c["name"] == "gain") {
+            EXPECT_EQ(c["min"], 0);
+            EXPECT_EQ(c["max"], 10000);
+        }
+    }
+    EXPECT_EQ(field(d, "axis_wall", "sense")["unit"], "");
 }
 
 // §6.5: polar 0..35999 and spherical azimuth 0..35999, elevation 0..18000 hundredths of a

@@ -36,6 +36,7 @@ interface Probe {
 }
 
 const kSize = 320;
+const kSliderHeight = 72; // a 1-axis device's pad: a slider, as wide as the square
 const kMargin = 14;
 
 export class Pad {
@@ -80,14 +81,14 @@ export class Pad {
   private toScreen(x: number, y: number): [number, number] {
     const s = (kSize - 2 * kMargin) / 20000;
     const oneAxis = this.axes() === 1;
-    return [kMargin + (x + 10000) * s, oneAxis ? kSize / 2 : kMargin + (10000 - y) * s];
+    return [kMargin + (x + 10000) * s, oneAxis ? this.canvas.height / 2 : kMargin + (10000 - y) * s];
   }
 
   private move(e: PointerEvent): void {
     const r = this.canvas.getBoundingClientRect();
     const s = (kSize - 2 * kMargin) / 20000;
     const px = ((e.clientX - r.left) * kSize) / r.width;
-    const py = ((e.clientY - r.top) * kSize) / r.height;
+    const py = ((e.clientY - r.top) * this.canvas.height) / r.height;
     const clamp = (v: number) => Math.max(-10000, Math.min(10000, Math.round(v)));
     const x = clamp((px - kMargin) / s - 10000);
     const y = this.axes() === 1 ? 0 : clamp(10000 - (py - kMargin) / s);
@@ -142,6 +143,11 @@ export class Pad {
     if (readout) readout.textContent = `position ${fmt(this.state.position)} · force ${fmt(this.state.force)}`;
     const c = this.canvas.getContext('2d')!;
     const oneAxis = this.axes() === 1;
+    const height = oneAxis ? kSliderHeight : kSize;
+    if (this.canvas.height !== height) {
+      this.canvas.height = height;
+      this.canvas.style.height = `${height}px`;
+    }
     c.clearRect(0, 0, kSize, kSize);
     c.fillStyle = '#f7f8fa';
     c.fillRect(0, 0, kSize, kSize);
@@ -209,7 +215,7 @@ export class Pad {
     const alongAxis = (axis: string, offset: number) => (axis === 'x' ? across(9000, offset) : axis === 'y' ? across(0, offset) : undefined);
     c.save();
     c.beginPath();
-    c.rect(kMargin, kMargin, kSize - 2 * kMargin, kSize - 2 * kMargin);
+    c.rect(kMargin, kMargin, kSize - 2 * kMargin, this.canvas.height - 2 * kMargin);
     c.clip();
     switch (fx.type) {
       case 'spring': case 'damper': case 'inertia': case 'friction': case 'angle_spring': {
