@@ -264,9 +264,10 @@ test('5. editing a magnitude while it plays changes the plot within 100 ms, with
   assert.equal(startsBefore, 1);
   const input = page.locator('#editor .field[data-path="periodic.magnitude"] input[type=number]');
   await input.fill('7000');
-  const tEdit = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
   await input.press('Enter');
   await synced(page);
+  // the device time the page had shown when the edit left it
+  const tEdit = await page.evaluate(() => window.__studio.editSentAt());
   await deviceAfter(page, tEdit, 300);
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const firstBig = rows.find((r) => r[0] > tEdit && Math.abs(r[1]) > 2500);

@@ -84,7 +84,12 @@ store.onDocChange = (s) => {
   if (!sens) return;
   sent.set(++seq, performance.now());
   live.send({ type: 'set_sensation', seq, name: sens.name, file: s.doc.file ?? undefined, effects: sens.effects });
+  const w = plot.window();
+  editSentAtDeviceMs = w.length ? w[w.length - 1][0] : 0;
 };
+// The device time of the newest sample shown when the last edit left: the tests measure
+// edit -> plot change from it, in the device's own time.
+let editSentAtDeviceMs = 0;
 
 let frames = 0;
 live.on((m) => {
@@ -201,6 +206,7 @@ document.addEventListener('keydown', (e) => {
   frames: () => frames,
   // the server has answered the newest edit (the tests wait on this, not on a time)
   synced: () => validatedSeq === seq,
+  editSentAt: () => editSentAtDeviceMs,
   liveStates: () => liveStates,
   saveFavorite,
 };
