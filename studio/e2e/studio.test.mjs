@@ -66,13 +66,15 @@ afterEach(async () => {
   for (const p of pages.splice(0)) if (!p.isClosed()) await p.close();
 });
 const kTimeout = 90000; // ms: a loaded 2-core machine can stall a step for seconds
+// Until the page has the server's hello and a few state frames.
+const ready = (page) => page.waitForFunction(() => Boolean(window.__studio?.store.state.hello) && window.__studio.frames() > 2);
 async function open(url = studio.url) {
   const page = await browser.newPage();
   pages.push(page);
   page.setDefaultTimeout(kTimeout);
   page.on('dialog', (d) => d.accept(page.nextAnswer ?? ''));
   await page.goto(url);
-  await page.waitForFunction(() => window.__studio?.store.state.hello !== null && window.__studio?.frames() > 2);
+  await ready(page);
   return page;
 }
 const state = (page) => page.evaluate(() => {
@@ -228,7 +230,7 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await page.keyboard.down('2');
   await deviceAfter(page, t0, 2000); // held for 2 s of the device's time
   await page.keyboard.up('2');
-  await deviceAfter(page, await deviceNow(page), 1000);
+  await deviceAfter(page, await deviceNow(page), 1500);
   await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: kTimeout });
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0);
@@ -314,7 +316,7 @@ test('6. save, reload, open: identical, and it plays through SensationLibrary', 
   const saved = readFileSync(join(workspace, 'designed.feel.json'), 'utf8');
   const docBefore = await page.evaluate(() => JSON.stringify(window.__studio.store.state.doc.sensations));
   await page.reload();
-  await page.waitForFunction(() => window.__studio?.store.state.hello !== null);
+  await ready(page); // the reloaded page, not the old one
   page.nextAnswer = 'designed.feel.json';
   await page.click('#open');
   await page.waitForFunction(() => window.__studio.store.state.doc.file === 'designed.feel.json');
