@@ -234,16 +234,27 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: kTimeout });
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0);
-  // onsets (device time): |force| above half the magnitude after at least 100 ms of quiet
+  // onsets (device time): the first sample with |force| above half the magnitude after at
+  // least 100 ms of quiet; the reflex started after the sample before it (`lo`). The
+  // plot has every report (2 ms apart) unless the Studio's sampler, which takes the
+  // device's newest report, fell behind on a loaded machine: then the onset is only known
+  // to lie in (lo, t], and the interval is checked over that window.
   const onsets = [];
   let last = -1e9;
+  let before = null;
   for (const r of held) {
-    if (Math.abs(r[1]) > 2500) { if (r[0] - last > 100) onsets.push(r[0]); last = r[0]; }
+    if (Math.abs(r[1]) > 2500) {
+      if (r[0] - last > 100) onsets.push({ lo: before ? before[0] : r[0], t: r[0] });
+      last = r[0];
+    }
+    before = r;
   }
   const why = await page.evaluate(() => JSON.stringify([window.__studio.liveStates(), document.querySelector('#status').textContent]));
-  assert.ok(onsets.length >= 3, `the reflex repeated while held: onsets at ${onsets.map((t) => (t - t0).toFixed(0))} (${held.length} samples; ${why})`);
+  assert.ok(onsets.length >= 3, `the reflex repeated while held: onsets at ${onsets.map((o) => (o.t - t0).toFixed(0))} (${held.length} samples; ${why})`);
   for (let i = 1; i < onsets.length; ++i) {
-    assert.ok(Math.abs(onsets[i] - onsets[i - 1] - 400) < 40, `repeat interval ${onsets[i] - onsets[i - 1]} ms vs 400`);
+    const shortest = onsets[i].lo - onsets[i - 1].t;
+    const longest = onsets[i].t - onsets[i - 1].lo;
+    assert.ok(longest > 360 && shortest < 440, `repeat interval ${shortest.toFixed(0)}..${longest.toFixed(0)} ms vs 400 ± 40`);
   }
   // released: the repeats stop (the newest 600 ms of the plot are quiet)
   const newest = rows[rows.length - 1][0];
