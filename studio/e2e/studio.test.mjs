@@ -254,7 +254,8 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   for (let i = 1; i < onsets.length; ++i) {
     const shortest = onsets[i].lo - onsets[i - 1].t;
     const longest = onsets[i].t - onsets[i - 1].lo;
-    assert.ok(longest > 360 && shortest < 440, `repeat interval ${shortest.toFixed(0)}..${longest.toFixed(0)} ms vs 400 ± 40`);
+    assert.ok(longest > 360 && shortest < 440,
+      `repeat interval ${shortest.toFixed(0)}..${longest.toFixed(0)} ms vs 400 ± 40 (onsets ${JSON.stringify(onsets)})`);
   }
   // released: the repeats stop (the newest 600 ms of the plot are quiet)
   const newest = rows[rows.length - 1][0];
