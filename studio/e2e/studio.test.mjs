@@ -187,7 +187,7 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
   }
   await page.mouse.up();
   const plotDraws = await page.evaluate(() => window.__studio.plot.drawTimes.slice());
-  if (process.env.FEEL_STUDIO_LATENCY_DEBUG) console.log(JSON.stringify([...lat].sort((a, b) => b.total - a.total).slice(0, 8)));
+  if (process.env.FEEL_STUDIO_LATENCY_DEBUG) console.log(JSON.stringify(lat.map((l, i) => ({ i, ...l })).sort((a, b) => b.server - a.server).slice(0, 6)));
   const stage = (k) => `p50=${quantile(lat.map((l) => l[k]), 0.5).toFixed(1)} p99=${quantile(lat.map((l) => l[k]), 0.99).toFixed(1)}`;
   console.log(`LATENCY pointer->force shown: p50=${quantile(lat.map((l) => l.total), 0.5).toFixed(1)} ms ` +
     `p99=${quantile(lat.map((l) => l.total), 0.99).toFixed(1)} ms (n=${lat.length}); stages (ms): ` +
