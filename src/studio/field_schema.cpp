@@ -3,6 +3,7 @@
 #include "field_schema.hpp"
 
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <string>
 
@@ -48,10 +49,18 @@ void probe_range(json& out, std::string_view path, const EffectParams& valid,
 json describe(const FieldSpec& f, std::string_view path, const EffectParams* valid, int slot,
               std::span<const int16_t> samples) {
     json d = {{"name", f.name}, {"required", f.required}, {"unit", unit_of(f.name)}};
+    if (d["unit"] == "0.01°") {  // the form shows angles in degrees; the file keeps 0.01°
+        d["scale"] = 0.01;
+        d["shown_unit"] = "°";
+    }
     switch (f.kind) {
-        case ValueKind::boolean: d["kind"] = "boolean"; break;
+        case ValueKind::boolean:
+            d["kind"] = "boolean";
+            d["unit"] = "";  // a yes or no has no unit
+            break;
         case ValueKind::choice: {
             d["kind"] = "choice";
+            d["unit"] = "";  // one of the named choices
             json c = json::array();
             for (std::string_view s : f.choices) c.push_back(s);
             d["choices"] = c;
@@ -96,19 +105,78 @@ struct CommonField {
     bool required;
     bool infinite;  // may be "infinite"
     void (*set)(EffectParams&, int, int64_t);
+    int64_t huge = int64_t{1} << 40;  // far out of range, and what the field can hold
 };
+constexpr int64_t kHugeI32 = std::numeric_limits<int32_t>::max();
 constexpr CommonField kCommon[] = {
     {"duration_us", true, true, [](EffectParams& p, int, int64_t v) { p.duration_us = v; }},
     {"start_delay_us", false, false, [](EffectParams& p, int, int64_t v) { p.start_delay_us = v; }},
     {"iterations", false, true,
-     [](EffectParams& p, int, int64_t v) { p.iterations = static_cast<int32_t>(v); }},
-    {"gain", false, false, [](EffectParams& p, int, int64_t v) { p.gain = static_cast<int32_t>(v); }},
+     [](EffectParams& p, int, int64_t v) { p.iterations = static_cast<int32_t>(v); }, kHugeI32},
+    {"gain", false, false, [](EffectParams& p, int, int64_t v) { p.gain = static_cast<int32_t>(v); }, kHugeI32},
     {"trigger_repeat_interval_us", false, false,
      [](EffectParams& p, int, int64_t v) {
          p.trigger = {TriggerKind::button, 1};
          p.trigger_repeat_interval_us = v;
      }},
 };
+
+// The direction (§6.5): one of four forms, each for the axes it fits, with its components.
+// The components' ranges are probed like every other field's, from a sine on those axes
+// given a valid direction of that form (its `default`, which the form starts with).
+struct DirectionForm {
+    const char* form;
+    DirectionKind kind;
+    std::initializer_list<Axis> axes;  // the axes the probe plays on
+    bool exact;                        // the effect's axes must be exactly these (else a subset)
+    bool per_axis;                     // one component per axis of the effect
+    std::initializer_list<const char*> components;  // names, when not per axis
+    int32_t defaults[3];
+};
+const DirectionForm kDirectionForms[] = {
+    {"polar", DirectionKind::polar, {Axis::x, Axis::y}, true, false, {"angle"}, {9000, 0, 0}},
+    {"spherical", DirectionKind::spherical, {Axis::x, Axis::y, Axis::z}, true, false, {"azimuth", "elevation"},
+     {0, 9000, 0}},
+    {"cartesian", DirectionKind::cartesian, {Axis::x, Axis::y, Axis::z}, false, true, {}, {10000, 0, 0}},
+    {"moments", DirectionKind::moments, {Axis::rx, Axis::ry, Axis::rz}, false, true, {}, {10000, 0, 0}},
+};
+
+json describe_direction(const EffectParams& sine) {
+    json forms = json::array();
+    for (const DirectionForm& f : kDirectionForms) {
+        EffectParams p = sine;
+        p.axis_count = 0;
+        json axes = json::array();
+        for (Axis a : f.axes) {
+            p.axes[p.axis_count++] = a;
+            axes.push_back(axis_name(a));
+        }
+        p.direction.kind = f.kind;
+        for (int i = 0; i < 3; ++i) p.direction.value[i] = f.defaults[i];
+        json components = json::array();
+        const size_t count = f.per_axis ? 1 : f.components.size();
+        for (size_t i = 0; i < count; ++i) {
+            const std::string name = f.per_axis ? "component" : f.components.begin()[i];
+            json c = {{"name", name}, {"kind", "integer"}, {"required", true},
+                      {"unit", f.per_axis ? "1/10000 of full scale" : "0.01°"}};
+            if (!f.per_axis) {
+                c["scale"] = 0.01;  // shown in degrees
+                c["shown_unit"] = "°";
+            }
+            const std::string path = std::string("direction.") + f.form +
+                                     (f.per_axis || f.components.size() > 1 ? "[" + std::to_string(i) + "]" : "");
+            probe_range(c, path, p, [](EffectParams& q, int slot, int64_t v) {
+                q.direction.value[slot] = static_cast<int32_t>(v);
+            }, static_cast<int>(i), std::numeric_limits<int32_t>::max());
+            components.push_back(c);
+        }
+        json defaults = json::array();
+        for (size_t i = 0; i < (f.per_axis ? 3 : f.components.size()); ++i) defaults.push_back(f.defaults[i]);
+        forms.push_back({{"form", f.form}, {"axes", axes}, {"exact_axes", f.exact}, {"per_axis", f.per_axis},
+                         {"components", components}, {"default", defaults}});
+    }
+    return {{"forms", forms}};
+}
 
 }  // namespace
 
@@ -156,14 +224,20 @@ json describe_fields(const format::SensationFile& starters) {
         }
         types.push_back(t);
     }
+    json direction = json::object();
+    for (const format::Sensation& s : starters.sensations) {
+        if (!s.effects.empty() && s.effects.front().params.type == EffectType::sine) {
+            direction = describe_direction(s.effects.front().params);
+        }
+    }
     json common = json::array();
     for (const CommonField& c : kCommon) {
         json d = {{"name", c.name}, {"kind", "integer"}, {"required", c.required},
                   {"infinite", c.infinite}, {"unit", unit_of(c.name)}};
-        if (any_valid != nullptr) probe_range(d, c.name, *any_valid, c.set, 0, int64_t{1} << 40);
+        if (any_valid != nullptr) probe_range(d, c.name, *any_valid, c.set, 0, c.huge);
         common.push_back(d);
     }
-    return {{"types", types}, {"common", common}};
+    return {{"types", types}, {"common", common}, {"direction", direction}};
 }
 
 }  // namespace feel::studio

@@ -21,8 +21,13 @@ namespace feel::studio {
 //             "control_law": [...]?}, ...],
 //  "common": [...], "envelope": [...]}
 // where each field is {"name", "kind" ("integer", "boolean", "choice"), "required",
-// "choices"?, "min"?, "max"?, "infinite"?, "unit"}. `starters` gives a valid effect of
-// every type (the Studio's palette presets); a type it lacks is left out.
+// "choices"?, "min"?, "max"?, "infinite"?, "unit", "scale"?, "shown_unit"?} (an angle,
+// kept in 0.01° in the file, is shown in degrees: shown = value × scale), and
+// "direction": {"forms": [{"form", "axes", "exact_axes", "per_axis", "components": [fields],
+// "default"}]}: the four forms of §6.5, the axes each fits (exactly, or any of them), and
+// their components (one per axis of the effect for cartesian and moments). `starters`
+// gives a valid effect of every type (the Studio's palette presets); a type it lacks is
+// left out.
 [[nodiscard]] nlohmann::json describe_fields(const format::SensationFile& starters);
 
 }  // namespace feel::studio

@@ -119,6 +119,7 @@ std::vector<json> LiveSession::handle(std::string_view text) {
         if (type == "set_sensation") return {set_sensation(m)};
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
+            pointer_received_ = std::chrono::steady_clock::now();
             if (!device_->set_hand_target(m["x"].get<int32_t>(), m["y"].get<int32_t>())) {
                 return {error_reply("the hand of a device in another process is a person's: the pad only shows it",
                                     type)};
@@ -303,11 +304,19 @@ json LiveSession::state_frame() {
         buttons = s.buttons;
         t_us = static_cast<double>(s.t_us);
     }
-    // Effect states cost a round trip each: every sixth frame (10 Hz).
-    if (frames_++ % 6 == 0) last_effect_states_ = effect_states();
+    // Effect states cost a round trip each to the device: 10 times a second.
+    if (const auto now = std::chrono::steady_clock::now(); now - effect_states_at_ >= std::chrono::milliseconds(100)) {
+        last_effect_states_ = effect_states();
+        effect_states_at_ = now;
+    }
+    const double pointer_age_us =
+        pointer_seq_ == 0 ? 0.0
+                          : std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() -
+                                                                      pointer_received_).count();
     return {{"type", "state"},       {"t_us", t_us},       {"samples", rows},
             {"position", position},  {"force", force},     {"buttons", buttons},
-            {"pointer_seq", pointer_seq_}, {"effects", last_effect_states_}};
+            {"pointer_seq", pointer_seq_}, {"pointer_age_us", pointer_age_us},
+            {"effects", last_effect_states_}};
 }
 
 }  // namespace feel::studio

@@ -15,6 +15,7 @@
 // destroyed, and with it the effects (RAII unload: they stop) and its pressed buttons.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -43,6 +44,8 @@ public:
     std::vector<nlohmann::json> handle(std::string_view text);
     // The next state frame: the device's reports since the last frame.
     nlohmann::json state_frame();
+    // Whether the device has reported since the last frame.
+    [[nodiscard]] bool has_news() const { return device_->newest_seq() > last_sample_; }
 
     // For tests: the effects the session holds on the device, by index.
     [[nodiscard]] size_t effect_count() const noexcept { return slots_.size(); }
@@ -69,7 +72,10 @@ private:
     uint32_t buttons_ = 0;
     uint32_t hats_ = 0;
     int64_t pointer_seq_ = 0;
-    uint64_t frames_ = 0;
+    // When the newest pointer message arrived: each state frame says how long ago, so the
+    // latency bench can tell the server's share from the browser's and the socket's.
+    std::chrono::steady_clock::time_point pointer_received_{};
+    std::chrono::steady_clock::time_point effect_states_at_{};  // when last_effect_states_ was read
     nlohmann::json last_effect_states_ = nlohmann::json::array();
 };
 

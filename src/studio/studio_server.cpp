@@ -4,9 +4,12 @@
 // request (header and body bounded), checks Host and Origin (RequestGuard) before it looks
 // at anything else, then either answers it (static asset or /api file call) or, for an
 // upgrade to /live, hands the socket and the request to a LiveConnection. A
-// LiveConnection owns one LiveSession: it answers each message, and a 60 Hz timer queues
-// a state frame whenever fewer than four frames wait to be written, so a slow browser
-// sees fewer frames rather than a growing queue. When the socket closes for any reason,
+// LiveConnection owns one LiveSession: it answers each message, and its frame timer
+// queues a state frame whenever fewer than four frames wait to be written, so a slow
+// browser sees fewer frames rather than a growing queue. The timer wakes at 60 Hz at
+// rest; for a moment after each browser message it polls the device every millisecond
+// and sends a frame as soon as there is a new report (at most kLiveFrameHz): a pointer
+// move then shows its force a tick and a report later, not a frame period later. When the socket closes for any reason,
 // the connection and its session are destroyed, which stops the browser's effects.
 #include "studio_server.hpp"
 
@@ -17,6 +20,7 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <deque>
@@ -160,6 +164,8 @@ Response api(Shared& shared, const Request& req) {
             }
             return json_reply(req, http::status::ok, {{"text", ws.combine(sources, string_field(body, "to"))}});
         }
+    } catch (const WorkspaceFileMissing& e) {
+        return error_reply(req, http::status::not_found, e.what());
     } catch (const WorkspaceError& e) {
         return error_reply(req, http::status::forbidden, e.what());
     } catch (const format::FormatError& e) {
@@ -195,6 +201,10 @@ public:
 
     void start(Request req) {
         request_ = std::move(req);
+        // Small frames both ways: Nagle's algorithm would hold a state frame back until the
+        // browser acknowledged the last one (up to a delayed ACK, 40 ms on Linux).
+        beast::error_code ignored;
+        ws_.next_layer().socket().set_option(tcp::no_delay(true), ignored);
         ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
         ws_.read_message_max(kMaxWebSocketMessageBytes);
         ws_.async_accept(request_, [self = shared_from_this()](beast::error_code ec) {
@@ -206,7 +216,7 @@ public:
             hello["gain"] = self->shared_.device->device().input().gain;
             self->send(hello.dump());
             self->read();
-            self->tick();
+            self->wait();
         });
     }
 
@@ -226,17 +236,48 @@ private:
                 for (const json& r : self->session_->handle(text)) self->send(r.dump());
             }
             self->buffer_.consume(self->buffer_.size());
+            const auto now = Clock::now();
+            // At rest the timer may be a frame period away: bring it forward.
+            if (!self->interacting(now)) self->timer_.expires_after(kLivePoll);
+            self->last_message_ = now;
             self->read();
         });
     }
 
-    void tick() {
-        timer_.expires_after(std::chrono::microseconds(1'000'000 / kStateFrameHz));
+    using Clock = std::chrono::steady_clock;
+    static constexpr auto kRestInterval = std::chrono::microseconds(1'000'000 / kStateFrameHz);
+    static constexpr auto kLiveInterval = std::chrono::microseconds(1'000'000 / kLiveFrameHz);
+
+    [[nodiscard]] bool interacting(Clock::time_point now) const { return now - last_message_ < kInteractiveWindow; }
+
+    // One wait at a time on the frame timer. A wait cancelled because read() moved the
+    // timer forward waits again for the new expiry.
+    void wait() {
+        if (waiting_ || closed_) return;
+        waiting_ = true;
         timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
-            if (ec || self->closed_) return;
-            if (self->queue_.size() < 4) self->send(self->session_->state_frame().dump());
+            self->waiting_ = false;
+            if (self->closed_) return;
+            if (ec == asio::error::operation_aborted) {
+                self->wait();
+                return;
+            }
             self->tick();
         });
+    }
+
+    void tick() {
+        const auto now = Clock::now();
+        const bool live = interacting(now);
+        const auto since = now - last_frame_;
+        const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->has_news());
+        if (due && queue_.size() < 4) {
+            send(session_->state_frame().dump());
+            last_frame_ = now;
+        }
+        const auto rest = last_frame_ + kRestInterval - now;
+        timer_.expires_after(live ? kLivePoll : std::max<Clock::duration>(rest, kLivePoll));
+        wait();
     }
 
     void send(std::string text) {
@@ -278,6 +319,9 @@ private:
     std::deque<std::string> queue_;
     std::optional<LiveSession> session_;
     bool closed_ = false;
+    bool waiting_ = false;                  // a wait on timer_ is outstanding
+    Clock::time_point last_frame_{};        // when the last state frame was queued
+    Clock::time_point last_message_{};      // when the browser last sent a message
 };
 
 class HttpConnection : public std::enable_shared_from_this<HttpConnection> {

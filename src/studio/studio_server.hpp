@@ -7,6 +7,7 @@
 // and workspace.hpp enforce them.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -26,7 +27,14 @@ struct StudioOptions {
 inline constexpr size_t kMaxHttpBodyBytes = 3u << 20;     // a JSON request with a 1 MiB file in it
 inline constexpr size_t kMaxWebSocketMessageBytes = 256u << 10;
 inline constexpr size_t kMaxQueuedFrames = 64;             // per browser; state frames are skipped past 4
+// State frames: 60 a second at rest; while the browser interacts (any message in the last
+// kInteractiveWindow) a frame goes as soon as the device has reported something new, at
+// most kLiveFrameHz a second, so a pointer move's force is not held back by a frame timer
+// (docs/studio.md, "Latency").
 inline constexpr int kStateFrameHz = 60;
+inline constexpr int kLiveFrameHz = 250;
+inline constexpr std::chrono::milliseconds kInteractiveWindow{500};
+inline constexpr std::chrono::milliseconds kLivePoll{1};  // the device reports every 2 ms (500 Hz)
 
 class StudioServer {
 public:

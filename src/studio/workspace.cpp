@@ -100,10 +100,17 @@ fs::path Workspace::resolve(std::string_view relative, bool must_exist) const {
         if (!fs::is_regular_file(real)) refuse(relative, "is not a regular file");
         return real;
     }
-    if (must_exist) refuse(relative, "no such file in the workspace");
+    const auto missing = [&] {
+        throw WorkspaceFileMissing("path " + shown_path(relative) + ": no such file in the workspace");
+    };
     const fs::path folder = fs::canonical(joined.parent_path(), ec);
-    if (ec) refuse(relative, "its folder does not exist in the workspace");
+    if (ec) {
+        if (must_exist) missing();
+        refuse(relative, "its folder does not exist in the workspace");
+    }
+    // A folder that leads out is refused before anything is said about what is in it.
     if (!inside(root_, folder)) refuse(relative, "its folder is a symbolic link that leads out of the workspace");
+    if (must_exist) missing();
     return folder / joined.filename();
 }
 

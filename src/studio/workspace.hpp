@@ -11,7 +11,8 @@
 //   * files are at most kMaxFileBytes; what is saved must be a valid feel/1 file (the
 //     format's reader checks it) and is written in the format's canonical form, through a
 //     temporary file and a rename so a crash never leaves half a file.
-// Refusals throw WorkspaceError with a sentence naming the path and the rule.
+// Refusals throw WorkspaceError with a sentence naming the path and the rule; a file that
+// is not there, WorkspaceFileMissing.
 #pragma once
 
 #include <cstddef>
@@ -26,6 +27,13 @@ namespace feel::studio {
 class WorkspaceError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+// A well-formed path inside the workspace that names no file (the server answers 404, not
+// 403: nothing was refused, e.g. favorites.feel.json before the first favorite is saved).
+class WorkspaceFileMissing : public WorkspaceError {
+public:
+    using WorkspaceError::WorkspaceError;
 };
 
 inline constexpr size_t kMaxPathLength = 200;

@@ -1,9 +1,14 @@
 // End to end: the real `feel studio` in Debian's Chromium, driven by playwright-core.
-// The seven scenarios of issue 10 §7, screenshots to out/studio/, and the latency figures
-// (pointer -> force shown, edit -> device applied) printed for the README.
+// The seven scenarios of issue 10 §7 and a few more (favorites, the direction's fields,
+// the wheel's slider), screenshots to out/studio/, and the latency figures (pointer ->
+// force shown, split into its stages; edit -> device applied) printed for the README.
+//
+// The machine may be loaded (2 cores shared with compilers): every step waits on a
+// condition (the server answered the edit, the handle settled, the device's own clock
+// passed), never on a fixed sleep, with generous timeouts. What is checked is unchanged.
 //
 //   FEEL=build/apps/feel/feel node --test studio/e2e/   (make test-studio)
-import { test, before, after } from 'node:test';
+import { test, before, after, afterEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, execFileSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, writeFileSync, readFileSync, symlinkSync, rmSync } from 'node:fs';
@@ -54,32 +59,72 @@ after(async () => {
   rmSync(workspace, { recursive: true, force: true });
 });
 
+// A test that fails leaves no page behind: its session's effects would play on into the
+// next test (the server stops a page's effects when its socket closes).
+const pages = [];
+afterEach(async () => {
+  for (const p of pages.splice(0)) if (!p.isClosed()) await p.close();
+});
+const kTimeout = 90000; // ms: a loaded 2-core machine can stall a step for seconds
+// Until the page has the server's hello and a few state frames.
+const ready = (page) => page.waitForFunction(() => Boolean(window.__studio?.store.state.hello) && window.__studio.frames() > 2);
 async function open(url = studio.url) {
   const page = await browser.newPage();
+  pages.push(page);
+  page.setDefaultTimeout(kTimeout);
   page.on('dialog', (d) => d.accept(page.nextAnswer ?? ''));
   await page.goto(url);
-  await page.waitForFunction(() => window.__studio?.store.state.hello !== null && window.__studio?.frames() > 2);
+  await ready(page);
   return page;
 }
 const state = (page) => page.evaluate(() => {
   const s = window.__studio;
   return { ...s.pad.state, errors: s.store.state.errors, effects: s.store.effects() };
 });
+// Until the server has answered the newest edit (validated or refused at its field).
+const synced = (page) => page.waitForFunction(() => window.__studio.synced());
+// The device time (ms) of the newest sample in the plot.
+const deviceNow = (page) => page.evaluate(() => { const w = window.__studio.plot.window(); return w.length ? w[w.length - 1][0] : 0; });
+// Until the device's own clock has passed `ms` beyond `from` (device time, not wall time).
+const deviceAfter = (page, from, ms) => page.waitForFunction(([t, d]) => {
+  const w = window.__studio.plot.window();
+  return w.length > 0 && w[w.length - 1][0] >= t + d;
+}, [from, ms]);
+// Until the handle has settled: over the newest 200 ms of device time, every position
+// within 30 (0.3% of the travel) of the newest.
+const settled = (page) => page.waitForFunction(() => {
+  const w = window.__studio.plot.window();
+  if (w.length < 2) return false;
+  const n = (w[0].length - 1) / 2;
+  const newest = w[w.length - 1];
+  if (newest[0] - w[0][0] < 250) return false;
+  const recent = w.filter((r) => r[0] >= newest[0] - 200);
+  return recent.every((r) => [...Array(n).keys()].every((a) => Math.abs(r[1 + n + a] - newest[1 + n + a]) <= 30));
+});
+// Until the effect plays on the device (as the session last read its state, 10 times a
+// second), for at least `elapsedUs` of its own time.
+const playing = (page, i, elapsedUs = 0) => page.waitForFunction(([i, e]) => {
+  const st = window.__studio.liveStates()[i];
+  return st !== undefined && st.state === 'playing' && st.elapsed_us >= e;
+}, [i, elapsedUs]);
 async function addType(page, type) {
   await page.click(`#palette li[data-type="${type}"]`);
-  await page.waitForFunction(() => window.__studio.store.state.errors.length === 0);
+  await synced(page);
+  assert.deepEqual(await page.evaluate(() => window.__studio.store.state.errors), [], `a ${type} from the palette is valid`);
 }
 async function setField(page, path, value) {
   const input = page.locator(`#editor .field[data-path="${path}"] input[type=number]`);
   await input.fill(String(value));
   await input.press('Enter');
   await input.blur();
+  await synced(page);
 }
 // Drags the pad's pointer to a device position (normalized), in steps.
 async function dragTo(page, x, y, from = [0, 0], steps = 20) {
   const box = await page.locator('#pad-canvas').boundingBox();
   const m = 14 * box.width / 320, s = (box.width - 2 * m) / 20000;
-  const at = (px, py) => [box.x + m + (px + 10000) * s, box.y + m + (10000 - py) * s];
+  const slider = box.height < box.width / 2; // a 1-axis device's pad: only x counts
+  const at = (px, py) => [box.x + m + (px + 10000) * s, slider ? box.y + box.height / 2 : box.y + m + (10000 - py) * s];
   await page.mouse.move(...at(...from));
   await page.mouse.down();
   for (let i = 1; i <= steps; ++i) {
@@ -87,14 +132,19 @@ async function dragTo(page, x, y, from = [0, 0], steps = 20) {
     await page.waitForTimeout(10);
   }
 }
-const settle = (page, ms = 600) => page.waitForTimeout(ms);
+// The p-quantile of a list (nearest rank).
+const quantile = (list, p) => {
+  const l = [...list].sort((a, b) => a - b);
+  return l[Math.min(l.length - 1, Math.floor(p * l.length))];
+};
+const kLatencyMoves = Number(process.env.FEEL_STUDIO_LATENCY_MOVES ?? 200);
 
 test('1. the palette lists every type on iforce2 and no Dynamics on iforce1', async () => {
   const page = await open();
   const types = await page.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.equal(types.length, 33, `iforce2 palette: ${types}`);
   assert.ok(types.includes('dynamic_paddle') && types.includes('spring') && types.includes('sweep_saw_down'));
-  await page.screenshot({ path: join(shots, 'palette-iforce2.png'), timeout: 90000 });
+  await page.screenshot({ path: join(shots, 'palette-iforce2.png'), timeout: kTimeout });
   const p1 = await open(iforce1.url);
   const types1 = await p1.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.ok(types1.length > 0);
@@ -112,32 +162,37 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
     await setField(page, `conditions[${a}].neg_coefficient`, 5000);
   }
   await page.click('#design .icon[data-effect="0"] button.play');
+  await playing(page, 0);
   await dragTo(page, 4000, 0);
-  await settle(page, 800);
+  await settled(page);
   const s = await state(page);
   // The spring law (§3.1): F = -coefficient/10000 · (x - offset), offset 0.
   const expected = -0.5 * s.position[0];
   assert.ok(s.position[0] > 2500, `the handle moved toward +4000: ${s.position[0]}`);
   assert.ok(Math.abs(s.force[0] - expected) <= 200, `force ${s.force[0]} vs spring law ${expected} (2% of full scale)`);
   assert.ok(s.force[0] < 0, 'the arrow points back to the centre (force toward -x)');
-  await page.screenshot({ path: join(shots, 'spring.png'), timeout: 90000 });
+  await page.screenshot({ path: join(shots, 'spring.png'), timeout: kTimeout });
   // the pointer -> force-shown latency: back and forth across the spring, with the stiff
   // hand (the handle follows the pointer within a few ms), a change of 0.2% of full scale
   await page.selectOption('#grip', 'stiff');
-  await settle(page, 300);
+  await settled(page);
   const lat = [];
-  for (let i = 0; i < 40; ++i) {
+  const box = await page.locator('#pad-canvas').boundingBox();
+  for (let i = 0; i < kLatencyMoves; ++i) {
     await page.evaluate(() => { window.__studio.pad.latencies.length = 0; });
     const x = i % 2 ? 6000 : -6000;
-    const box = await page.locator('#pad-canvas').boundingBox();
     await page.mouse.move(box.x + box.width / 2 + (x / 20000) * (box.width - 28), box.y + box.height / 2);
-    await page.waitForFunction(() => window.__studio.pad.latencies.length > 0, null, { timeout: 2000 });
+    await page.waitForFunction(() => window.__studio.pad.latencies.length > 0, null, { timeout: 30000 });
     lat.push(await page.evaluate(() => window.__studio.pad.latencies[0]));
   }
   await page.mouse.up();
-  lat.sort((a, b) => a - b);
-  const q = (p) => lat[Math.min(lat.length - 1, Math.floor(p * lat.length))];
-  console.log(`LATENCY pointer->force shown: p50=${q(0.5).toFixed(1)} ms p99=${q(0.99).toFixed(1)} ms (n=${lat.length})`);
+  const plotDraws = await page.evaluate(() => window.__studio.plot.drawTimes.slice());
+  if (process.env.FEEL_STUDIO_LATENCY_DEBUG) console.log(JSON.stringify(lat.map((l, i) => ({ i, ...l })).sort((a, b) => b.server - a.server).slice(0, 6)));
+  const stage = (k) => `p50=${quantile(lat.map((l) => l[k]), 0.5).toFixed(1)} p99=${quantile(lat.map((l) => l[k]), 0.99).toFixed(1)}`;
+  console.log(`LATENCY pointer->force shown: p50=${quantile(lat.map((l) => l.total), 0.5).toFixed(1)} ms ` +
+    `p99=${quantile(lat.map((l) => l.total), 0.99).toFixed(1)} ms (n=${lat.length}); stages (ms): ` +
+    `input ${stage('input')}, server ${stage('server')}, transport ${stage('transport')}, paint ${stage('paint')}; ` +
+    `plot redraw p50=${quantile(plotDraws, 0.5).toFixed(1)} p99=${quantile(plotDraws, 0.99).toFixed(1)} (n=${plotDraws.length})`);
   await page.close();
 });
 
@@ -145,14 +200,15 @@ test('3. dragging into a wall: the handle stops at the wall, the pointer goes on
   const page = await open();
   await addType(page, 'axis_wall'); // x, offset 5000, positive sense, clipping
   await page.click('#design .icon[data-effect="0"] button.play');
+  await playing(page, 0);
   await dragTo(page, 9500, 0);
-  await settle(page, 800);
+  await settled(page);
   const s = await state(page);
   assert.equal(s.target[0], 9500);
   assert.ok(s.position[0] < 6000, `the handle stays near the wall at 5000: ${s.position[0]}`);
   assert.ok(s.position[0] > 3500, `the handle reached the wall: ${s.position[0]}`);
   assert.ok(s.force[0] < -500, `the wall pushes back: ${s.force[0]}`);
-  await page.screenshot({ path: join(shots, 'wall.png'), timeout: 90000 });
+  await page.screenshot({ path: join(shots, 'wall.png'), timeout: kTimeout });
   await page.mouse.up();
   await page.close();
 });
@@ -167,26 +223,39 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await page.waitForSelector('#triggers .button[data-button="2"] .reflex');
   await page.fill('#triggers .button[data-button="2"] input.repeat', '400000');
   await page.press('#triggers .button[data-button="2"] input.repeat', 'Enter');
+  await synced(page);
+  assert.match(await page.evaluate(() => JSON.stringify(window.__studio.store.effects()[0])), /"trigger_repeat_interval_us":400000/);
   await page.locator('#pad-canvas').click({ position: { x: 160, y: 160 } }); // focus away from inputs
-  await settle(page, 300);
-  const t0 = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
+  const t0 = await deviceNow(page);
   await page.keyboard.down('2');
-  await settle(page, 2000);
+  await deviceAfter(page, t0, 2000); // held for 2 s of the device's time
   await page.keyboard.up('2');
-  await settle(page, 1500);
-  await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: 90000 });
+  await deviceAfter(page, await deviceNow(page), 1500);
+  await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: kTimeout });
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0);
-  // onsets (device time): |force| above half the magnitude after at least 100 ms of quiet
+  // onsets (device time): the first sample with |force| above half the magnitude after at
+  // least 100 ms of quiet; the reflex started after the sample before it (`lo`). The
+  // plot has every report (2 ms apart) unless the Studio's sampler, which takes the
+  // device's newest report, fell behind on a loaded machine: then the onset is only known
+  // to lie in (lo, t], and the interval is checked over that window.
   const onsets = [];
   let last = -1e9;
+  let before = null;
   for (const r of held) {
-    if (Math.abs(r[1]) > 2500) { if (r[0] - last > 100) onsets.push(r[0]); last = r[0]; }
+    if (Math.abs(r[1]) > 2500) {
+      if (r[0] - last > 100) onsets.push({ lo: before ? before[0] : r[0], t: r[0] });
+      last = r[0];
+    }
+    before = r;
   }
   const why = await page.evaluate(() => JSON.stringify([window.__studio.liveStates(), document.querySelector('#status').textContent]));
-  assert.ok(onsets.length >= 3, `the reflex repeated while held: onsets at ${onsets.map((t) => (t - t0).toFixed(0))} (${held.length} samples; ${why})`);
+  assert.ok(onsets.length >= 3, `the reflex repeated while held: onsets at ${onsets.map((o) => (o.t - t0).toFixed(0))} (${held.length} samples; ${why})`);
   for (let i = 1; i < onsets.length; ++i) {
-    assert.ok(Math.abs(onsets[i] - onsets[i - 1] - 400) < 40, `repeat interval ${onsets[i] - onsets[i - 1]} ms vs 400`);
+    const shortest = onsets[i].lo - onsets[i - 1].t;
+    const longest = onsets[i].t - onsets[i - 1].lo;
+    assert.ok(longest > 360 && shortest < 440,
+      `repeat interval ${shortest.toFixed(0)}..${longest.toFixed(0)} ms vs 400 ± 40 (onsets ${JSON.stringify(onsets)})`);
   }
   // released: the repeats stop (the newest 600 ms of the plot are quiet)
   const newest = rows[rows.length - 1][0];
@@ -204,34 +273,43 @@ test('5. editing a magnitude while it plays changes the plot within 100 ms, with
   await setField(page, 'periodic.magnitude', 2000);
   await setField(page, 'periodic.period_us', 20000);
   await page.click('#design .icon[data-effect="0"] button.play');
-  await settle(page, 500);
+  await playing(page, 0, 300000);
   const startsBefore = await page.evaluate(() => window.__studio.liveStates()[0]?.starts);
   assert.equal(startsBefore, 1);
   const input = page.locator('#editor .field[data-path="periodic.magnitude"] input[type=number]');
   await input.fill('7000');
-  const tEdit = await page.evaluate(() => { const w = window.__studio.plot.window(); return w[w.length - 1][0]; });
   await input.press('Enter');
-  await settle(page, 500);
+  await synced(page);
+  // the device time the page had shown when the edit left it
+  const tEdit = await page.evaluate(() => window.__studio.editSentAt());
+  await deviceAfter(page, tEdit, 300);
   const rows = await page.evaluate(() => window.__studio.plot.window());
   const firstBig = rows.find((r) => r[0] > tEdit && Math.abs(r[1]) > 2500);
   assert.ok(firstBig, 'the larger sine shows in the plot');
   assert.ok(firstBig[0] - tEdit < 100, `changed ${(firstBig[0] - tEdit).toFixed(1)} ms after the edit (device time)`);
-  await settle(page, 300);
+  // until the session has read the effect's state again, well after the edit (a restart
+  // would show as a second start and an elapsed time near 0)
+  await page.waitForFunction(() => {
+    const st = window.__studio.liveStates()[0];
+    return st.starts !== 1 || st.elapsed_us > 700000;
+  });
   const after = await page.evaluate(() => window.__studio.liveStates()[0]);
   assert.equal(after.starts, 1, 'not restarted: started once');
   assert.equal(after.state, 'playing');
   assert.ok(after.elapsed_us > 700000, `elapsed time went on: ${after.elapsed_us} us`);
+  await page.waitForFunction(() => document.querySelector('#design .icon-meta')?.textContent.includes('playing'));
   const liveStates = await page.evaluate(() => [...document.querySelectorAll('#design .icon-meta')].map((e) => e.textContent));
   assert.match(liveStates[0], /playing/);
-  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: 90000 });
+  await page.screenshot({ path: join(shots, 'edit-live.png'), timeout: kTimeout });
   // edit -> device: 40 more edits while it plays
   await page.evaluate(() => { window.__studio.editTimes.length = 0; window.__studio.applyTimes.length = 0; });
   for (let i = 0; i < 40; ++i) {
     await input.fill(String(3000 + 100 * i));
     await input.press('Enter');
+    await synced(page);
     await page.waitForFunction((n) => window.__studio.applyTimes.length >= n, i + 1);
   }
-  const q = (list, p) => { const l = [...list].sort((a, b) => a - b); return l[Math.min(l.length - 1, Math.floor(p * l.length))]; };
+  const q = quantile;
   const edit = await page.evaluate(() => window.__studio.editTimes.slice());
   const apply = await page.evaluate(() => window.__studio.applyTimes.slice());
   console.log(`LATENCY edit->device applied (server: set_parameters acked after the tick took it): p50=${q(apply, 0.5).toFixed(2)} ms p99=${q(apply, 0.99).toFixed(2)} ms; browser edit->validated: p50=${q(edit, 0.5).toFixed(1)} ms p99=${q(edit, 0.99).toFixed(1)} ms (n=${apply.length})`);
@@ -243,14 +321,14 @@ test('6. save, reload, open: identical, and it plays through SensationLibrary', 
   await addType(page, 'spring');
   await addType(page, 'sine');
   await page.selectOption('#editor .field[data-path="trigger_button"] select', '3');
-  await settle(page, 200);
+  await synced(page);
   page.nextAnswer = 'designed.feel.json';
   await page.click('#save');
   await page.waitForFunction(() => window.__studio.store.state.doc.file === 'designed.feel.json');
   const saved = readFileSync(join(workspace, 'designed.feel.json'), 'utf8');
   const docBefore = await page.evaluate(() => JSON.stringify(window.__studio.store.state.doc.sensations));
   await page.reload();
-  await page.waitForFunction(() => window.__studio?.store.state.hello !== null);
+  await ready(page); // the reloaded page, not the old one
   page.nextAnswer = 'designed.feel.json';
   await page.click('#open');
   await page.waitForFunction(() => window.__studio.store.state.doc.file === 'designed.feel.json');
@@ -260,7 +338,7 @@ test('6. save, reload, open: identical, and it plays through SensationLibrary', 
   // the two calls of §9.5, through feel play (SensationLibrary::load + play)
   const out = execFileSync(feel, ['play', join(workspace, 'designed.feel.json'), '--sensation', 'untitled', '--seconds', '0.3']).toString();
   assert.match(out, /untitled/);
-  await page.screenshot({ path: join(shots, 'saved.png'), timeout: 90000 });
+  await page.screenshot({ path: join(shots, 'saved.png'), timeout: kTimeout });
   await page.close();
 });
 
@@ -308,4 +386,94 @@ test('7. a path outside the workspace and a wrong Origin are refused', async () 
   });
   assert.equal(ws.status, 403);
   await page.close();
+});
+
+test('8. save as favorite: the sensation becomes a preset under its heading, and adds back', async () => {
+  const page = await open();
+  await addType(page, 'damper');
+  await setField(page, 'conditions[0].pos_coefficient', 3210);
+  page.nextAnswer = 'soft brake';
+  await page.click('#save-favorite');
+  await page.waitForSelector('#palette details.presets li.preset');
+  const file = JSON.parse(readFileSync(join(workspace, 'favorites.feel.json'), 'utf8'));
+  const saved = file.sensations['My_Favorites.soft_brake'];
+  assert.ok(saved, `favorites.feel.json has the preset: ${Object.keys(file.sensations)}`);
+  assert.equal(saved.type, 'damper');
+  assert.equal(saved.conditions[0].pos_coefficient, 3210);
+  const heading = await page.textContent('#palette details.presets summary');
+  assert.equal(heading, 'My Favorites');
+  // a fresh page lists it too, and a click adds it as it was saved
+  const other = await open();
+  await other.waitForSelector('#palette li.preset');
+  await other.click('#palette li.preset:text("soft_brake")');
+  await synced(other);
+  const fx = await other.evaluate(() => window.__studio.store.effects());
+  assert.equal(fx.length, 1);
+  assert.equal(fx[0].conditions[0].pos_coefficient, 3210);
+  await page.screenshot({ path: join(shots, 'favorites.png'), timeout: kTimeout });
+  await other.close();
+  await page.close();
+});
+
+test('9. the direction is a field: polar in degrees, the validator\'s message at it', async () => {
+  const page = await open();
+  await addType(page, 'sine');
+  // a wave on two axes needs a direction: the format's message, at the direction field
+  await page.check('#editor .field[data-path="axes"] input[data-axis="y"]');
+  await synced(page);
+  const missing = await page.textContent('#editor .field[data-path="direction"] .error');
+  assert.match(missing, /needs a direction/);
+  // polar offered (the axes are x and y), spherical not (it needs z)
+  const forms = await page.$$eval('#editor select.direction-form option', (o) => o.map((e) => e.value));
+  assert.deepEqual(forms, ['', 'polar', 'cartesian']);
+  await page.selectOption('#editor select.direction-form', 'polar');
+  await synced(page);
+  const range = await page.textContent('#editor .field[data-path="direction.polar"] .range');
+  assert.match(range, /0\.\.359\.99 ° \(0\.01° in the file\)/);
+  await setField(page, 'direction.polar', 90);
+  let fx = await page.evaluate(() => window.__studio.store.effects()[0]);
+  assert.deepEqual(fx.direction, { polar: 9000 }, '90° is 9000 hundredths of a degree in the file');
+  assert.deepEqual(await page.evaluate(() => window.__studio.store.state.errors), []);
+  await setField(page, 'direction.polar', 400);
+  const refused = await page.textContent('#editor .field[data-path="direction.polar"] .error');
+  assert.match(refused, /direction\.polar = 40000 is out of range \(allowed 0\.\.35999\)/);
+  // cartesian: one numeric field per axis
+  await page.selectOption('#editor select.direction-form', 'cartesian');
+  await synced(page);
+  await setField(page, 'direction.cartesian[1]', -5000);
+  fx = await page.evaluate(() => window.__studio.store.effects()[0]);
+  assert.deepEqual(fx.direction, { cartesian: [10000, -5000] });
+  assert.deepEqual(await page.evaluate(() => window.__studio.store.state.errors), []);
+  await page.screenshot({ path: join(shots, 'direction.png'), timeout: kTimeout });
+  await page.close();
+});
+
+test('10. the wheel: a slider; a spring dragged to +4000 follows the spring law', async () => {
+  const wheel = await startStudio(workspace, 'sim:wheel');
+  try {
+    const page = await open(wheel.url);
+    const axes = await page.evaluate(() => window.__studio.store.state.hello.device.axes.map((a) => a.name));
+    assert.equal(axes.length, 1, `the wheel has one axis: ${axes}`);
+    await addType(page, 'spring'); // the starter's x and y, fitted to the wheel's one axis
+    const fx = await page.evaluate(() => window.__studio.store.effects()[0]);
+    assert.deepEqual(fx.axes, axes);
+    await setField(page, 'conditions[0].pos_coefficient', 5000);
+    await setField(page, 'conditions[0].neg_coefficient', 5000);
+    await page.click('#design .icon[data-effect="0"] button.play');
+    await playing(page, 0);
+    await dragTo(page, 4000, 0);
+    await settled(page);
+    const s = await state(page);
+    assert.equal(s.position.length, 1);
+    // The spring law (§3.1): F = -coefficient/10000 · x, within 2% of full scale.
+    const expected = -0.5 * s.position[0];
+    assert.ok(s.position[0] > 2500, `the wheel turned toward +4000: ${s.position[0]}`);
+    assert.ok(Math.abs(s.force[0] - expected) <= 200, `force ${s.force[0]} vs spring law ${expected} (2% of full scale)`);
+    assert.ok(s.force[0] < 0, 'the force turns the wheel back to the centre');
+    await page.screenshot({ path: join(shots, 'wheel.png'), timeout: kTimeout });
+    await page.mouse.up();
+    await page.close();
+  } finally {
+    wheel.proc.kill('SIGTERM');
+  }
 });

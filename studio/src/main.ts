@@ -2,9 +2,10 @@
 // Every editor family gets its module under editors/ (editors/registry.ts); today every
 // family uses the generated form, the graphical editors come next.
 import './style.css';
-import { type EffectJson, parseFile, fileText } from './document';
+import { type Doc, type EffectJson, parseFile, fileText } from './document';
+import type { FieldsDescription } from './editors/form';
 import { editorFor } from './editors/registry';
-import { api } from './files';
+import { ApiError, api } from './files';
 import { Live } from './live';
 import { type FieldError, Store } from './store';
 import { designView, type EffectLive } from './views/design';
@@ -25,11 +26,42 @@ let presets: Preset[] = [];
 const kFavorites = 'favorites.feel.json';
 
 const addEffects = (effects: EffectJson[]) =>
-  store.update((d) => d.sensations[d.current].effects.push(...effects), store.effects().length + effects.length - 1);
+  store.update(
+    (d) => d.sensations[d.current].effects.push(...effects.map((e) => fitToDevice(e))),
+    store.effects().length + effects.length - 1,
+  );
 const addType = (t: string) => {
   const starters = store.state.hello?.starters as Record<string, EffectJson> | undefined;
   if (starters?.[t]) addEffects([structuredClone(starters[t])]);
 };
+
+// A starter (or a preset) on the device's axes: the axes it lacks are left out, with their
+// per-axis blocks, and a direction that no longer fits them (a one-axis wave needs none).
+// On the wheel, the spring of x and y becomes a spring of x. What cannot be fitted stays
+// as it is, and the validator says why.
+function fitToDevice(fx: EffectJson): EffectJson {
+  const hello = store.state.hello;
+  const desc = hello?.fields as unknown as FieldsDescription | undefined;
+  const deviceAxes = ((hello?.device.axes as { name: string }[]) ?? []).map((a) => a.name);
+  const axes = (fx.axes as string[] | undefined) ?? [];
+  const kept = axes.map((a, i) => [a, i] as const).filter(([a]) => deviceAxes.includes(a));
+  if (!desc || kept.length === axes.length || kept.length === 0) return fx;
+  const info = desc.types.find((t) => t.type === fx.type);
+  fx.axes = kept.map(([a]) => a);
+  const pick = (list: unknown) => (Array.isArray(list) ? kept.map(([, i]) => list[i]).filter((b) => b !== undefined) : list);
+  if (info?.shape === 'per_axis') fx[info.block] = pick(fx[info.block]);
+  if (info?.control_law) {
+    const block = fx[info.block] as Record<string, unknown> | undefined;
+    if (block) block.control_law = pick(block.control_law);
+  }
+  const kind = Object.keys((fx.direction as object | undefined) ?? {})[0];
+  const form = desc.direction?.forms.find((f) => f.form === kind);
+  const now = fx.axes as string[];
+  if (form && !(now.every((a) => form.axes.includes(a)) && (!form.exact_axes || now.length === form.axes.length))) {
+    delete fx.direction;
+  }
+  return fx;
+}
 
 const pad = new Pad(el('pad'), store, live, () => ((store.state.hello?.device.axes as unknown[]) ?? []).length);
 const plot = new Plot(el('plot'));
@@ -43,6 +75,7 @@ store.subscribe(() => pad.draw());
 // Every change of the document sends the current sensation; the server answers with the
 // errors at their fields (the device keeps the last valid parameters) or applies it.
 let seq = 0;
+let validatedSeq = 0; // the newest set_sensation the server answered
 const sent = new Map<number, number>();
 export const editTimes: number[] = [];
 const applyTimes: number[] = [];
@@ -51,7 +84,12 @@ store.onDocChange = (s) => {
   if (!sens) return;
   sent.set(++seq, performance.now());
   live.send({ type: 'set_sensation', seq, name: sens.name, file: s.doc.file ?? undefined, effects: sens.effects });
+  const w = plot.window();
+  editSentAtDeviceMs = w.length ? w[w.length - 1][0] : 0;
 };
+// The device time of the newest sample shown when the last edit left: the tests measure
+// edit -> plot change from it, in the device's own time.
+let editSentAtDeviceMs = 0;
 
 let frames = 0;
 live.on((m) => {
@@ -70,7 +108,7 @@ live.on((m) => {
     case 'state': {
       ++frames;
       plot.push(m.samples as number[][]);
-      pad.update(m.position as number[], m.force as number[]);
+      pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
       if ((m.effects as EffectLive[]).length || liveStates.length) {
         // redraw the views only when a state, a start count or an arming changed
         const key = (l: EffectLive[]) => JSON.stringify(l.map((e) => [e.state, e.starts, e.armed]));
@@ -85,6 +123,7 @@ live.on((m) => {
       if (t0 !== undefined) editTimes.push(performance.now() - t0);
       if (m.ok) applyTimes.push(m.apply_us / 1000);
       sent.delete(m.seq);
+      validatedSeq = Math.max(validatedSeq, m.seq);
       if (m.seq === seq) store.setErrors(m.errors as FieldError[]);
       break;
     }
@@ -96,10 +135,23 @@ live.on((m) => {
 // The plot is redrawn at most 30 times a second, when new samples came.
 window.setInterval(() => plot.draw(), 33);
 
-async function loadPresets() {
+// The user's presets (§9.3): the sensations of favorites.feel.json, under the heading
+// before the first '.' of their name. No file yet (404) is no presets; any other problem
+// (a file that is not valid feel/1) is shown, and the file is left as it is.
+async function readFavorites(): Promise<Doc | null> {
   try {
     const r = await api<{ text: string }>('read', { path: kFavorites });
-    presets = parseFile(r.text, kFavorites, false).sensations.map((s) => {
+    return parseFile(r.text, kFavorites, false);
+  } catch (e) {
+    if (e instanceof ApiError && e.status === 404) return null;
+    throw e;
+  }
+}
+
+async function loadPresets() {
+  try {
+    const doc = await readFavorites();
+    presets = (doc?.sensations ?? []).map((s) => {
       const dot = s.name.indexOf('.');
       return {
         heading: dot > 0 ? s.name.slice(0, dot).replace(/_/g, ' ') : 'My Favorites',
@@ -107,15 +159,33 @@ async function loadPresets() {
         effects: s.effects,
       };
     });
-  } catch {
+  } catch (e) {
     presets = [];
+    status(`favorites: ${(e as Error).message}`);
   }
   store.render();
 }
 
-// "Save as favorite": the selected effect becomes a preset in favorites.feel.json.
+// "Save as favorite": the current sensation (all its effects, as they are now) becomes a
+// preset in favorites.feel.json. `name` is "Heading.name", or a name for "My Favorites".
+export async function saveFavorite(name: string) {
+  const effects = store.effects();
+  if (effects.length === 0) throw new Error('save as favorite: the sensation has no effects yet');
+  const full = name.includes('.') ? name.replace(/ /g, '_') : `My_Favorites.${name.replace(/ /g, '_')}`;
+  const doc = (await readFavorites()) ?? { file: kFavorites, readOnly: false, sensations: [], current: 0 };
+  doc.sensations = doc.sensations.filter((s) => s.name !== full);
+  doc.sensations.push({ name: full, effects: structuredClone(effects) });
+  await api('save', { path: kFavorites, text: fileText(doc), overwrite: true });
+  await loadPresets();
+  status(`saved "${full}" in ${kFavorites}`);
+}
+
 el('palette').addEventListener('click', (e) => {
   if (!(e.target as HTMLElement).matches('#save-favorite')) return;
+  const sens = store.state.doc.sensations[store.state.doc.current];
+  const name = window.prompt('Save the sensation as a favorite. Name (Heading.name, or a name under My Favorites):', sens?.name ?? '');
+  if (name === null || name.trim() === '') return;
+  saveFavorite(name.trim()).catch((err: Error) => status(err.message));
 });
 document.addEventListener('keydown', (e) => {
   if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z') {
@@ -126,22 +196,6 @@ document.addEventListener('keydown', (e) => {
   }
 });
 
-export async function saveFavorite(name: string) {
-  const fx = store.effects()[store.state.selected];
-  if (!fx) throw new Error('select an effect first');
-  let text: string | null = null;
-  try {
-    text = (await api<{ text: string }>('read', { path: kFavorites })).text;
-  } catch {
-    text = null;
-  }
-  const doc = text ? parseFile(text, kFavorites, false) : { file: kFavorites, readOnly: false, sensations: [], current: 0 };
-  doc.sensations = doc.sensations.filter((s) => s.name !== name);
-  doc.sensations.push({ name, effects: [structuredClone(fx)] });
-  await api('save', { path: kFavorites, text: fileText(doc), overwrite: true });
-  await loadPresets();
-}
-
 // For the end-to-end tests and the latency figures (docs/studio.md).
 (window as unknown as Record<string, unknown>).__studio = {
   store,
@@ -150,6 +204,9 @@ export async function saveFavorite(name: string) {
   editTimes,
   applyTimes,
   frames: () => frames,
+  // the server has answered the newest edit (the tests wait on this, not on a time)
+  synced: () => validatedSeq === seq,
+  editSentAt: () => editSentAtDeviceMs,
   liveStates: () => liveStates,
   saveFavorite,
 };

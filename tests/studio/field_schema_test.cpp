@@ -2,6 +2,9 @@
 // validator enforces them (checked against the primer's ranges, §6.3, §6.6).
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 #include "feel/effect_type.hpp"
 #include "field_schema.hpp"
 #include "studio_assets.hpp"
@@ -54,6 +57,45 @@ TEST(FieldSchema, RangesAreThePrimers) {
         }
     }
     EXPECT_TRUE(duration);
+    // §6.3: an effect's gain 0..10000; a choice has no unit
+    for (const json& c : d["common"]) {
+        if (c["name"] == "gain") {
+            EXPECT_EQ(c["min"], 0);
+            EXPECT_EQ(c["max"], 10000);
+        }
+    }
+    EXPECT_EQ(field(d, "axis_wall", "sense")["unit"], "");
+}
+
+// §6.5: polar 0..35999 and spherical azimuth 0..35999, elevation 0..18000 hundredths of a
+// degree (shown in degrees); cartesian and moments components ±10000, one per axis.
+TEST(FieldSchema, DirectionFormsAreThePrimers) {
+    const json d = describe();
+    std::map<std::string, json> forms;
+    for (const json& f : d["direction"]["forms"]) forms[f["form"].get<std::string>()] = f;
+    ASSERT_EQ(forms.size(), 4u);
+    const json& polar = forms["polar"]["components"][0];
+    EXPECT_EQ(polar["min"], 0);
+    EXPECT_EQ(polar["max"], 35999);
+    EXPECT_EQ(polar["unit"], "0.01°");
+    EXPECT_EQ(polar["shown_unit"], "°");
+    EXPECT_DOUBLE_EQ(polar["scale"].get<double>(), 0.01);
+    EXPECT_EQ(forms["polar"]["axes"], json({"x", "y"}));
+    EXPECT_TRUE(forms["polar"]["exact_axes"].get<bool>());
+    EXPECT_EQ(forms["spherical"]["components"][0]["max"], 35999);
+    EXPECT_EQ(forms["spherical"]["components"][1]["min"], 0);
+    EXPECT_EQ(forms["spherical"]["components"][1]["max"], 18000);
+    EXPECT_EQ(forms["spherical"]["axes"], json({"x", "y", "z"}));
+    for (const char* vector : {"cartesian", "moments"}) {
+        EXPECT_TRUE(forms[vector]["per_axis"].get<bool>());
+        EXPECT_FALSE(forms[vector]["exact_axes"].get<bool>());
+        EXPECT_EQ(forms[vector]["components"][0]["min"], -10000) << vector;
+        EXPECT_EQ(forms[vector]["components"][0]["max"], 10000) << vector;
+    }
+    EXPECT_EQ(forms["moments"]["axes"], json({"rx", "ry", "rz"}));
+    // every angle field is shown in degrees
+    EXPECT_DOUBLE_EQ(field(d, "sine", "phase")["scale"].get<double>(), 0.01);
+    EXPECT_FALSE(field(d, "sine", "magnitude").contains("scale"));
 }
 
 }  // namespace

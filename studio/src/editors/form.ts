@@ -15,6 +15,16 @@ export interface FieldInfo {
   max?: number;
   infinite?: boolean;
   unit: string;
+  scale?: number; // shown = value × scale (angles: 0.01° in the file, degrees in the form)
+  shown_unit?: string;
+}
+export interface DirectionForm {
+  form: string; // polar, spherical, cartesian, moments (§6.5)
+  axes: string[]; // the axes it fits: exactly these (exact_axes), or any of them
+  exact_axes: boolean;
+  per_axis: boolean; // one component per axis of the effect
+  components: FieldInfo[];
+  default: number[];
 }
 export interface TypeInfo {
   type: string;
@@ -30,17 +40,28 @@ export interface TypeInfo {
 export interface FieldsDescription {
   types: TypeInfo[];
   common: FieldInfo[];
+  direction: { forms: DirectionForm[] };
 }
 
 type Get = () => unknown;
 type Set = (v: unknown) => void;
 
+// A value as the form shows it (degrees for an angle), and back, exactly, to the file's
+// integer unit.
+const shown = (f: FieldInfo, v: number) => (f.scale ? Number((v * f.scale).toFixed(6)) : v);
+const stored = (f: FieldInfo, v: number) => (f.scale ? Math.round(v / f.scale) : v);
+
 function range(f: FieldInfo): string {
-  const r = f.min !== undefined ? `${f.min}..${f.max}` : '';
-  return [r, f.infinite ? 'or infinite' : '', f.unit].filter(Boolean).join(' ');
+  const r = f.min !== undefined && f.max !== undefined ? `${shown(f, f.min)}..${shown(f, f.max)}` : '';
+  const unit = f.shown_unit ? `${f.shown_unit} (${f.unit} in the file)` : f.unit;
+  return [r, f.infinite ? 'or infinite' : '', unit].filter(Boolean).join(' ');
 }
 
-function fieldRow(path: string, f: FieldInfo, get: Get, set: Set, errors: FieldError[]): HTMLElement {
+// The errors that belong to a field: its own path, or a part of it.
+const errorsAt = (errors: FieldError[], path: string) =>
+  errors.filter((e) => e.field === path || e.field.startsWith(path + '[') || e.field.startsWith(path + '.'));
+
+function fieldRow(path: string, f: FieldInfo, get: Get, set: Set, errors: FieldError[], label = f.name): HTMLElement {
   const value = get();
   let input: HTMLElement;
   if (f.kind === 'boolean') {
@@ -59,13 +80,13 @@ function fieldRow(path: string, f: FieldInfo, get: Get, set: Set, errors: FieldE
       { class: 'number' },
       h('input', {
         type: 'number',
-        step: 1,
-        value: infinite || value === undefined ? '' : String(value),
+        step: f.scale ?? 1,
+        value: infinite || typeof value !== 'number' ? '' : String(shown(f, value)),
         placeholder: f.required ? '' : 'default',
         disabled: infinite,
         onchange: (e: Event) => {
           const t = (e.target as HTMLInputElement).value.trim();
-          set(t === '' ? undefined : Number(t));
+          set(t === '' ? undefined : stored(f, Number(t)));
         },
       }),
       f.infinite
@@ -73,15 +94,85 @@ function fieldRow(path: string, f: FieldInfo, get: Get, set: Set, errors: FieldE
         : null,
     );
   }
-  const mine = errors.filter((e) => e.field === path || e.field.startsWith(path + '[') || e.field.startsWith(path + '.'));
+  const mine = errorsAt(errors, path);
   return h(
     'div',
     { class: `field ${mine.length ? 'has-error' : ''}`, 'data-path': path },
-    h('label', { class: 'name', title: path }, f.name, f.required ? h('span', { class: 'req' }, '*') : null),
+    h('label', { class: 'name', title: path }, label, f.required ? h('span', { class: 'req' }, '*') : null),
     input,
     h('span', { class: 'range' }, range(f)),
     ...mine.map((e) => h('div', { class: 'error', 'data-error-for': path }, e.message)),
   );
+}
+
+// The direction (§6.5): a choice of the forms that fit the effect's axes (and the one it
+// has, fitting or not, so that the validator's error shows where it is), then a numeric
+// field per component, all from the description's forms.
+function directionRows(
+  forms: DirectionForm[],
+  fx: EffectJson,
+  axes: string[],
+  edit: (change: (e: EffectJson) => void) => void,
+  errors: FieldError[],
+): HTMLElement[] {
+  const current = (fx.direction ?? {}) as Record<string, number | number[]>;
+  const kind = Object.keys(current)[0] ?? '';
+  const fits = (f: DirectionForm) =>
+    axes.length > 0 && axes.every((a) => f.axes.includes(a)) && (!f.exact_axes || axes.length === f.axes.length);
+  const offered = forms.filter((f) => fits(f) || f.form === kind);
+  const form = forms.find((f) => f.form === kind);
+  const scalar = form !== undefined && !form.per_axis && form.components.length === 1;
+  // the form's own errors ("needs a direction", "polar needs the axes x and y"); a scalar
+  // form's path is its component's too, and shows there
+  const own = errors.filter((e) => e.field === 'direction' || (!scalar && e.field === `direction.${kind}`));
+  const rows: HTMLElement[] = [
+    h(
+      'div',
+      { class: `field ${own.length ? 'has-error' : ''}`, 'data-path': 'direction' },
+      h('label', { class: 'name' }, 'direction'),
+      h(
+        'select',
+        {
+          class: 'direction-form',
+          onchange: (e: Event) => {
+            const form = forms.find((f) => f.form === (e.target as HTMLSelectElement).value);
+            edit((x) => {
+              if (!form) delete x.direction;
+              else if (form.per_axis) x.direction = { [form.form]: axes.map((_, i) => form.default[i] ?? 0) };
+              else x.direction = { [form.form]: form.components.length === 1 ? form.default[0] : form.default.slice() };
+            });
+          },
+        },
+        h('option', { value: '', selected: kind === '' }, '(none)'),
+        ...offered.map((f) => h('option', { value: f.form, selected: f.form === kind }, f.form)),
+      ),
+      h('span', { class: 'range' }, 'where the force comes from (§6.5); the forms that fit the axes'),
+      ...own.map((e) => h('div', { class: 'error', 'data-error-for': 'direction' }, e.message)),
+    ),
+  ];
+  if (!form) return rows;
+  const value = current[kind];
+  const list = Array.isArray(value) ? value : [value];
+  const count = form.per_axis ? Math.max(axes.length, list.length) : form.components.length;
+  for (let i = 0; i < count; ++i) {
+    const c = form.per_axis ? form.components[0] : form.components[i];
+    const path = scalar ? `direction.${kind}` : `direction.${kind}[${i}]`;
+    const label = form.per_axis ? `${kind}[${i}] (${axes[i] ?? '?'})` : `${kind} ${c.name}`;
+    const get = () => list[i];
+    const set: Set = (v) =>
+      edit((x) => {
+        const d = x.direction as Record<string, number | number[]>;
+        if (scalar) d[kind] = (v as number) ?? form.default[0];
+        else {
+          const next = Array.isArray(d[kind]) ? [...(d[kind] as number[])] : [];
+          next[i] = (v as number) ?? 0;
+          d[kind] = next;
+        }
+      });
+    // a component's own errors only; the form's are on the choice above
+    rows.push(fieldRow(path, c, get, set, errors.filter((e) => e.field === path), label));
+  }
+  return rows;
 }
 
 function obj(parent: Record<string, unknown>, key: string): Record<string, unknown> {
@@ -154,24 +245,7 @@ export function formEditor(root: HTMLElement, store: Store) {
         ...errors.filter((e) => e.field === 'trigger_button').map((e) => h('div', { class: 'error' }, e.message)),
       ),
     );
-    // direction: any of the format's forms, as JSON
-    rows.push(
-      h(
-        'div',
-        { class: `field ${errors.some((e) => e.field.startsWith('direction')) ? 'has-error' : ''}`, 'data-path': 'direction' },
-        h('label', { class: 'name' }, 'direction'),
-        h('input', { type: 'text', class: 'json', value: fx.direction ? JSON.stringify(fx.direction) : '', placeholder: '{"polar": 9000}', onchange: (e: Event) => {
-          const t = (e.target as HTMLInputElement).value.trim();
-          try {
-            setIn((x) => x, 'direction')(t === '' ? undefined : JSON.parse(t));
-          } catch {
-            (e.target as HTMLInputElement).setCustomValidity('not JSON');
-          }
-        } }),
-        h('span', { class: 'range' }, 'polar/spherical 0.01°, cartesian/moments ±10000'),
-        ...errors.filter((e) => e.field.startsWith('direction')).map((e) => h('div', { class: 'error' }, e.message)),
-      ),
-    );
+    rows.push(...directionRows(desc.direction?.forms ?? [], fx, axes, edit, errors));
     if (info?.envelope) {
       const has = typeof fx.envelope === 'object';
       rows.push(h('h4', {}, h('label', {}, h('input', { type: 'checkbox', class: 'envelope-on', checked: has, onchange: (e: Event) => edit((x) => {

@@ -54,6 +54,9 @@ export const schema = {
       force: { type: 'array', maxItems: 6 },
       buttons: { type: 'integer', min: 0, max: 4294967295 },
       pointer_seq: { type: 'integer', min: 0, max: 2147483647 },
+      // how long ago (server clock) the pointer message pointer_seq arrived: the server's
+      // share of the pointer -> force shown latency
+      pointer_age_us: { type: 'number' },
       effects: { type: 'array', maxItems: 32 },
     },
     // the answer to set_sensation: errors at their fields, or how long the device took

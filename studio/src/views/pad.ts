@@ -14,7 +14,29 @@ export interface PadState {
   target: [number, number] | null;
 }
 
+// One pointer move's way to the screen, in ms (docs/studio.md, "Latency"): the pointer
+// event's timestamp -> its message sent (input), -> the server's share (pointer message
+// received -> the state frame that shows the new force built: the device's loop, its
+// report, the frame's pacing), -> that frame received (transport: the sockets, both
+// ends' queues), -> the canvas drawn with it in the next animation frame (paint).
+export interface LatencySample {
+  total: number;
+  input: number;
+  server: number;
+  transport: number;
+  paint: number;
+}
+interface Probe {
+  seq: number;
+  event: number; // PointerEvent.timeStamp (performance.now()'s clock)
+  sent: number;
+  force: number[];
+  arrived?: number;
+  server?: number;
+}
+
 const kSize = 320;
+const kSliderHeight = 72; // a 1-axis device's pad: a slider, as wide as the square
 const kMargin = 14;
 
 export class Pad {
@@ -22,9 +44,10 @@ export class Pad {
   private seq = 0;
   private dragging = false;
   state: PadState = { position: [0, 0], force: [0, 0], target: null };
-  // pointer -> force shown, for the latency figure (docs/studio.md)
-  probe: { t0: number; force: number[] } | null = null;
-  latencies: number[] = [];
+  // pointer -> force shown, for the latency figures (docs/studio.md)
+  private probe: Probe | null = null;
+  latencies: LatencySample[] = [];
+  private drawPending = false;
 
   constructor(
     root: HTMLElement,
@@ -44,7 +67,10 @@ export class Pad {
       this.canvas.setPointerCapture(e.pointerId);
       this.move(e);
     });
-    this.canvas.addEventListener('pointermove', (e) => this.dragging && this.move(e));
+    // pointerrawupdate (where the browser has it) comes as the pointer moves; pointermove
+    // is held back to the next animation frame, up to 16 ms later.
+    const moveEvent = 'onpointerrawupdate' in window ? 'pointerrawupdate' : 'pointermove';
+    this.canvas.addEventListener(moveEvent, (e) => this.dragging && this.move(e as PointerEvent));
     this.canvas.addEventListener('pointerup', () => (this.dragging = false));
   }
 
@@ -55,43 +81,73 @@ export class Pad {
   private toScreen(x: number, y: number): [number, number] {
     const s = (kSize - 2 * kMargin) / 20000;
     const oneAxis = this.axes() === 1;
-    return [kMargin + (x + 10000) * s, oneAxis ? kSize / 2 : kMargin + (10000 - y) * s];
+    return [kMargin + (x + 10000) * s, oneAxis ? this.canvas.height / 2 : kMargin + (10000 - y) * s];
   }
 
   private move(e: PointerEvent): void {
     const r = this.canvas.getBoundingClientRect();
     const s = (kSize - 2 * kMargin) / 20000;
     const px = ((e.clientX - r.left) * kSize) / r.width;
-    const py = ((e.clientY - r.top) * kSize) / r.height;
+    const py = ((e.clientY - r.top) * this.canvas.height) / r.height;
     const clamp = (v: number) => Math.max(-10000, Math.min(10000, Math.round(v)));
     const x = clamp((px - kMargin) / s - 10000);
     const y = this.axes() === 1 ? 0 : clamp(10000 - (py - kMargin) / s);
     this.state.target = [x, y];
-    this.probe = { t0: performance.now(), force: [...this.state.force] };
     this.live.send({ type: 'pointer', seq: ++this.seq, x, y });
+    this.probe = { seq: this.seq, event: e.timeStamp, sent: performance.now(), force: [...this.state.force] };
     this.draw();
   }
 
-  update(position: number[], force: number[]): void {
+  // A state frame: the device's newest position and force. The first frame that answers
+  // the newest pointer message with a changed force ends its probe once it is drawn.
+  update(position: number[], force: number[], pointerSeq: number, pointerAgeUs: number): void {
     this.state.position = position;
     this.state.force = force;
-    if (this.probe) {
-      const moved = force.some((f, a) => Math.abs(f - (this.probe!.force[a] ?? 0)) > 20);
-      if (moved) {
-        this.latencies.push(performance.now() - this.probe.t0);
-        if (this.latencies.length > 5000) this.latencies.shift();
-        this.probe = null;
+    const p = this.probe;
+    if (p && p.arrived === undefined && pointerSeq >= p.seq) {
+      if (force.some((f, a) => Math.abs(f - (p.force[a] ?? 0)) > 20)) {
+        p.arrived = performance.now();
+        p.server = pointerAgeUs / 1000;
       }
     }
     this.draw();
-    const fmt = (v: number[]) => v.map((n) => Math.round(n)).join(', ');
-    const readout = document.getElementById('readout');
-    if (readout) readout.textContent = `position ${fmt(position)} · force ${fmt(force)}`;
   }
 
+  // Draws in the next animation frame, once however many frames arrived before it.
   draw(): void {
+    if (this.drawPending) return;
+    this.drawPending = true;
+    requestAnimationFrame(() => {
+      this.drawPending = false;
+      this.paint();
+      const p = this.probe;
+      if (p?.arrived !== undefined) {
+        const painted = performance.now();
+        const server = Math.min(p.server ?? 0, p.arrived - p.sent);
+        this.latencies.push({
+          total: painted - p.event,
+          input: p.sent - p.event,
+          server,
+          transport: p.arrived - p.sent - server,
+          paint: painted - p.arrived,
+        });
+        if (this.latencies.length > 5000) this.latencies.shift();
+        this.probe = null;
+      }
+    });
+  }
+
+  private paint(): void {
+    const fmt = (v: number[]) => v.map((n) => Math.round(n)).join(', ');
+    const readout = document.getElementById('readout');
+    if (readout) readout.textContent = `position ${fmt(this.state.position)} · force ${fmt(this.state.force)}`;
     const c = this.canvas.getContext('2d')!;
     const oneAxis = this.axes() === 1;
+    const height = oneAxis ? kSliderHeight : kSize;
+    if (this.canvas.height !== height) {
+      this.canvas.height = height;
+      this.canvas.style.height = `${height}px`;
+    }
     c.clearRect(0, 0, kSize, kSize);
     c.fillStyle = '#f7f8fa';
     c.fillRect(0, 0, kSize, kSize);
@@ -159,7 +215,7 @@ export class Pad {
     const alongAxis = (axis: string, offset: number) => (axis === 'x' ? across(9000, offset) : axis === 'y' ? across(0, offset) : undefined);
     c.save();
     c.beginPath();
-    c.rect(kMargin, kMargin, kSize - 2 * kMargin, kSize - 2 * kMargin);
+    c.rect(kMargin, kMargin, kSize - 2 * kMargin, this.canvas.height - 2 * kMargin);
     c.clip();
     switch (fx.type) {
       case 'spring': case 'damper': case 'inertia': case 'friction': case 'angle_spring': {

@@ -60,6 +60,9 @@ export function paletteView(root: HTMLElement, store: Store, presets: () => Pres
     }
     const headings = new Map<string, Preset[]>();
     for (const preset of p) headings.set(preset.heading, [...(headings.get(preset.heading) ?? []), preset]);
+    root.append(
+      h('button', { id: 'save-favorite', title: 'keep the current sensation as a preset (favorites.feel.json)' }, '★ Save as favorite…'),
+    );
     for (const [heading, items] of headings) {
       root.append(
         h(

@@ -44,15 +44,22 @@ export class Plot {
 
   private drawn = -1;
 
+  // How long each redraw took (ms), for the latency figures: the redraw holds the page's
+  // one thread, and a state frame that arrives meanwhile waits.
+  drawTimes: number[] = [];
+
   draw(): void {
     if (!this.plot || this.rows.length === 0) return;
     const newest = this.rows[this.rows.length - 1][0];
     if (newest === this.drawn) return;
+    const t0 = performance.now();
     this.drawn = newest;
     const n = this.axisNames.length;
     const cols: number[][] = [this.rows.map((r) => r[0] / 1000)];
     for (let c = 1; c <= 2 * n; ++c) cols.push(this.rows.map((r) => r[c] ?? 0));
     this.plot.setData(cols as uPlot.AlignedData);
+    this.drawTimes.push(performance.now() - t0);
+    if (this.drawTimes.length > 5000) this.drawTimes.shift();
   }
 
   // For tests and the latency probe: the samples in the window.

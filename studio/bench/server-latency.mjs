@@ -1,0 +1,73 @@
+// The server's share of pointer -> force, without a browser: `feel studio` on the in-process
+// simulated stick, a WebSocket client (Node's) that plays a spring of coefficient 5000,
+// moves the stiff hand's target between -6000 and +6000 every 30 ms, and times each move
+// to the first state frame whose force changed (total: the client's clock; server: the
+// frame's pointer_age_us, the server's clock). Prints p50/p99/max (docs/studio.md,
+// "Latency").
+//
+//   node --experimental-websocket studio/bench/server-latency.mjs build/apps/feel/feel [moves]
+import { spawn } from 'node:child_process';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const feel = process.argv[2] ?? 'build/apps/feel/feel';
+const moves = Number(process.argv[3] ?? 300);
+const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
+const proc = spawn(feel, ['studio', '--workspace', workspace, '--port', '0', '--hand', 'stiff'], {
+  stdio: ['ignore', 'pipe', 'inherit'],
+});
+const host = await new Promise((ok, fail) => {
+  let out = '';
+  proc.stdout.on('data', (d) => {
+    out += d;
+    const m = out.match(/open http:\/\/(\S+)\//);
+    if (m) ok(m[1]);
+  });
+  proc.on('exit', (code) => fail(new Error(`feel studio exited ${code}: ${out}`)));
+});
+const ws = new WebSocket(`ws://${host}/live`);
+let last = null;
+let waiter = null;
+ws.onmessage = (e) => {
+  const m = JSON.parse(e.data);
+  if (m.type !== 'state') return;
+  last = m;
+  waiter?.(m);
+};
+await new Promise((ok) => (ws.onopen = ok));
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+const condition = { pos_coefficient: 5000, neg_coefficient: 5000 };
+const spring = { type: 'spring', duration_us: 'infinite', axes: ['x', 'y'], conditions: [condition, condition] };
+ws.send(JSON.stringify({ type: 'set_sensation', seq: 1, name: 'spring', effects: [spring] }));
+await sleep(300);
+ws.send(JSON.stringify({ type: 'play', effect: 0 }));
+await sleep(300);
+
+const total = [];
+const server = [];
+for (let i = 1; i <= moves; ++i) {
+  const before = last.force[0];
+  const t0 = performance.now();
+  ws.send(JSON.stringify({ type: 'pointer', seq: i, x: i % 2 ? 6000 : -6000, y: 0 }));
+  for (;;) {
+    const m = await new Promise((ok) => (waiter = ok));
+    if (m.pointer_seq >= i && Math.abs(m.force[0] - before) > 20) {
+      total.push(performance.now() - t0);
+      server.push(m.pointer_age_us / 1000);
+      break;
+    }
+  }
+  await sleep(30);
+}
+const q = (list, p) => {
+  const s = [...list].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.floor(p * s.length))].toFixed(1);
+};
+console.log(`pointer message -> frame with the new force (n=${moves}): client p50=${q(total, 0.5)} ms ` +
+  `p99=${q(total, 0.99)} ms max=${q(total, 1)} ms; server p50=${q(server, 0.5)} ms p99=${q(server, 0.99)} ms ` +
+  `max=${q(server, 1)} ms`);
+ws.close();
+proc.kill('SIGTERM');
+rmSync(workspace, { recursive: true, force: true });
+process.exit(0);
