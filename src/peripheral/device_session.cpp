@@ -856,6 +856,9 @@ struct DeviceSession::Impl {
         if (!b->is_committed) {
             if (auto why = detail::check_blocks_complete(*b, next, r.block)) return refuse_commit(*why);
         }
+        if (auto why = detail::check_conditions_within_axes(r, b->type, b->arrived.conditions, next)) {
+            return refuse_commit(*why);
+        }
         uint32_t mask = b->is_committed ? detail::changed_fields(b->committed, next) : effect_field::kAll;
         bool takes_stage = false;
         if (b->type == EffectType::force_profile) {

@@ -295,6 +295,19 @@ void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions
     p.direction = Direction{};
 }
 
+std::optional<Refusal> check_conditions_within_axes(const protocol::SetEffectReport& r, EffectType type,
+                                                    uint8_t conditions_arrived, const EffectParams& next) {
+    if (r.axis_count == 0 || !is_condition_with_blocks(type)) return std::nullopt;  // a standard host's: ignored
+    const int axes = next.axis_count >= 1 && next.axis_count <= kMaxAxes ? next.axis_count : 1;
+    for (int i = axes; i < kMaxAxes; ++i) {
+        if ((conditions_arrived & (1u << i)) == 0) continue;
+        Refusal why = Refusal::out_of_range("set_condition.axis_index", i, {0, axes - 1});
+        why.rule = "a Set Condition came for an axis the effect does not have (one per axis of the effect)";
+        return why;
+    }
+    return std::nullopt;
+}
+
 std::optional<Refusal> check_blocks_complete(const Block& block, const EffectParams& next, uint16_t index) {
     const EffectType t = block.type;
     const Arrivals& a = block.arrived;

@@ -72,6 +72,17 @@ void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& par
 void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived,
                                              EffectParams& params) noexcept;
 
+// Set Condition blocks for axes the effect does not have (bit i of `conditions_arrived` for
+// axis i >= the effect's axis count). hid-pidff sends two, for axes 0 and 1, whatever the
+// device has: a one-axis wheel gets an axis-1 block it cannot use. A standard host says so
+// by naming no axes in Set Effect (axis_count 0), and for it such blocks are accepted and
+// ignored (docs/protocol.md, "Standard hosts"). feel's own host names the effect's axes and
+// sends one block per axis; from it such a block is a mistake, refused at the commit naming
+// `set_condition.axis_index` and the effect's axes as the allowed range.
+[[nodiscard]] std::optional<Refusal> check_conditions_within_axes(const protocol::SetEffectReport& report,
+                                                                  EffectType type, uint8_t conditions_arrived,
+                                                                  const EffectParams& next);
+
 // For a block's first commit: std::nullopt when every type block the effect needs has
 // arrived, else a Refusal naming the first one missing.
 [[nodiscard]] std::optional<Refusal> check_blocks_complete(const Block& block, const EffectParams& next,

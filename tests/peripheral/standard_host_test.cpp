@@ -112,5 +112,42 @@ TEST(StandardHost, NegativeSawMagnitudeIsRefused) {
     }
 }
 
+
+// hid-pidff sends Set Condition for axes 0 and 1 whatever the device has. On the one-axis
+// wheel the axis-1 block is accepted and ignored (docs/protocol.md, "Standard hosts"): the
+// spring holds axis 0 with axis 0's stiffness, -k·x/10000 (§3.3), and nothing is refused.
+TEST(StandardHost, OneAxisDeviceAcceptsAndIgnoresTheSecondConditionBlock) {
+    SessionRig rig("wheel", "hold:5000", sim::Grip::kinematic);
+    ASSERT_EQ(rig.caps().axis_count, 1);
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    constexpr int16_t k0 = 1000;
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, k0));
+    rig.ok(spring_axis(rig.next_sequence(), block, 1, 4000));  // the axis the wheel lacks
+    rig.ok(pidff_set_effect(rig.next_sequence(), block, EffectType::spring, 9000));
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 1));
+    rig.run(20);
+    const double x = rig.pipeline().last_input().position[0];
+    EXPECT_NEAR(x, 5000, 20000.0 / 4096);
+    EXPECT_NEAR(rig.pipeline().motor_force()[0], -k0 * x / 10000.0, 1e-3);
+}
+
+// feel's own host names the effect's axes (Set Effect's axis_count) and sends one block per
+// axis: a block for an axis the effect lacks is its mistake, refused at the commit.
+TEST(StandardHost, OwnHostConditionBlockForAnAxisTheEffectLacksIsRefused) {
+    SessionRig rig("wheel");
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
+    rig.ok(spring_axis(rig.next_sequence(), block, 1, 4000));
+    const protocol::CommandStatusReport s = rig.command(set_effect(rig.next_sequence(), block, EffectType::spring, 1));
+    EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
+    EXPECT_STREQ(s.field, "set_condition.axis_index");
+    EXPECT_TRUE(s.has_range);
+    EXPECT_EQ(s.value, 1);
+    EXPECT_EQ(s.allowed_min, 0);
+    EXPECT_EQ(s.allowed_max, 0);
+}
+
 }  // namespace
 }  // namespace feel::peripheral::test
