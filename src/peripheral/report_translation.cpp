@@ -127,6 +127,8 @@ std::string_view report_key(ReportId id) noexcept {
         case ReportId::command_status: return "command_status";
         case ReportId::device_status: return "device_status";
         case ReportId::dynamic_report: return "dynamic_report";
+        case ReportId::command_error_text: return "command_error_text";
+        case ReportId::effect_states: return "effect_states";
     }
     return "report";
 }

@@ -56,7 +56,7 @@ TEST(StandardHost, ConditionWithOneBlockForTwoAxesIsRefusedNamingTheMissingBlock
     const uint16_t block = rig.create(EffectType::damper);
     ASSERT_NE(block, 0);
     rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
-    const protocol::CommandStatusReport s =
+    const protocol::CommandAnswer s =
         rig.command(pidff_set_effect(rig.next_sequence(), block, EffectType::damper, 9000));
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(s.field, "set_condition");
@@ -100,7 +100,7 @@ TEST(StandardHost, NegativeSawMagnitudeIsRefused) {
         SessionRig rig("iforce2");
         const uint16_t block = rig.create(type);
         ASSERT_NE(block, 0);
-        const protocol::CommandStatusReport s = rig.command(periodic(rig.next_sequence(), block, -2500, 100'000));
+        const protocol::CommandAnswer s = rig.command(periodic(rig.next_sequence(), block, -2500, 100'000));
         EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
         EXPECT_EQ(s.command, ReportId::set_periodic);
         EXPECT_STREQ(s.field, "set_periodic.magnitude");
@@ -140,7 +140,7 @@ TEST(StandardHost, OwnHostConditionBlockForAnAxisTheEffectLacksIsRefused) {
     ASSERT_NE(block, 0);
     rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
     rig.ok(spring_axis(rig.next_sequence(), block, 1, 4000));
-    const protocol::CommandStatusReport s = rig.command(set_effect(rig.next_sequence(), block, EffectType::spring, 1));
+    const protocol::CommandAnswer s = rig.command(set_effect(rig.next_sequence(), block, EffectType::spring, 1));
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(s.field, "set_condition.axis_index");
     EXPECT_TRUE(s.has_range);

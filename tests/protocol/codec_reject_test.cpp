@@ -202,7 +202,7 @@ TEST(DecodeRejects, InvalidEnumValues) {
     EXPECT_STREQ(decode_with(valid_effect(), 41, 6).field, "set_effect.axes[1]");
     // A bool that is neither 0 nor 1.
     EXPECT_STREQ(decode_with(ReflexReport{}, 7, 2).field, "reflex.assign");
-    // Command Status naming a report id that does not exist: inside 0x01..0x44 but a hole.
+    // Command Status naming a report id that does not exist: inside 0x01..0x46 but a hole.
     CommandStatusReport status;
     e = decode_with(status, 5, 0x0E);
     EXPECT_STREQ(e.field, "command_status.command");
