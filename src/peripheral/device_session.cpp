@@ -860,6 +860,7 @@ struct DeviceSession::Impl {
                 "block " + std::to_string(r.block) + " holds a " + std::string(effect_type_name(b->type)) +
                     " effect, and an effect's type never changes: free the block and create a new effect"));
         }
+        if (auto why = detail::check_axes_enable(r, caps)) return refuse_commit(*why);
         EffectParams next = b->shadow;
         detail::apply_set_effect(r, next, caps);
         detail::ignore_direction_of_per_axis_conditions(b->type, b->arrived.conditions, next);

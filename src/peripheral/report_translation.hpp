@@ -58,10 +58,19 @@ void apply_type_block(const protocol::AnyReport& report, Block& block);
 
 // Writes Set Effect's Effect Structure into `params` (the type blocks stay). A report
 // without axes (axis_count 0: a standard PID host, which never writes feel's vendor
-// fields) plays on the device's first two axes, or its one: PID's direction is a 2D angle
-// and hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
+// fields) plays on the axes its Axes Enable names that the device has, or without Axes
+// Enable on the device's first two axes, or its one: PID's direction is a 2D angle and
+// hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
 void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params,
                       const runtime::Capabilities& device);
+
+// PID's Axes Enable against the effect's axes. From feel's own host (axis_count >= 1) it is
+// 0 or exactly the bits of axes[0..axis_count). From a standard host (axis_count 0) it
+// names the effect's axes: those the device has play, in the device's order, and those it
+// lacks are ignored (hid-pidff enables the first axes it finds in the list, whatever the
+// device has), but at least one must be the device's. std::nullopt when it fits.
+[[nodiscard]] std::optional<Refusal> check_axes_enable(const protocol::SetEffectReport& report,
+                                                       const runtime::Capabilities& device);
 
 // DirectInput's rule for conditions (spring, damper, inertia, friction): given one Set
 // Condition per axis, the effect ignores its direction, which applies only to one block

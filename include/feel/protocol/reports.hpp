@@ -114,6 +114,9 @@ struct SetEffectReport {
     uint8_t trigger_index = 0;                 // PID Trigger Button: 0 none, button 1..32, hat 1..4
     uint8_t axis_count = 1;                    // vendor: 1..6, in feel's order; 0 not given (standard host)
     Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};  // 0..5
+    // PID Axes Enable: bit a for feel::Axis a (Generic Desktop X, Y, Z, Rx, Ry, Rz), the
+    // axes the effect acts on; 0 not given. feel's host sets the bits of `axes`.
+    uint8_t axes_enable = 0;
     DirectionKind direction_kind = DirectionKind::none;  // PID Direction Enable + vendor form
     // Polar and spherical: PID Direction's Ordinals, 0..35999; cartesian and moments: a
     // vendor vector, ±10000 per component (see feel::Direction). Slots a form does not
