@@ -61,6 +61,9 @@ public:
         return n;
     }
 
+    // Sends an input report as the device would, unasked (after host_end()).
+    void push(const protocol::AnyReport& report) { send(transport::FrameKind::input_report, report); }
+
     // A DeviceInfo within every wire range: a 2-axis stick of 4 effect slots.
     static protocol::DeviceInfoReport info() {
         protocol::DeviceInfoReport d;
