@@ -130,7 +130,11 @@ std::string usage_text(uint32_t u) {
 }
 
 std::string field_usage_text(const FieldSpec& f) {
+    if (f.padding) return "(constant padding)";
     if (f.named_array != 0) return usage_text(f.named_array) + " (named array)";
+    if (f.wrap != 0 && !f.usage_list.empty() && f.usage_list.front() == usage::gd::kX) {
+        return usage_text(f.wrap) + " (collection of GD X, Y, Z, Rx, Ry, Rz)";
+    }
     if (f.wrap != 0) return usage_text(f.wrap) + " (collection of Ordinals 1, 2)";
     if (f.usage_list.empty()) return usage_text(f.usage);
     if (usage::page_of(f.usage_list.front()) == usage::kPageButton) return "Button 1..32";
