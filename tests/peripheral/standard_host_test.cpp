@@ -219,6 +219,8 @@ TEST(StandardHost, OwnHostAxesEnableMustMatchItsAxes) {
     const protocol::CommandAnswer s = rig.command(e);
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(s.field, "set_effect.axes_enable");
+    // The refused first commit rolled the block back: its Set Condition comes again.
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
     e.sequence = rig.next_sequence();
     e.axes_enable = 1u << static_cast<int>(Axis::x);
     rig.ok(e);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,7 @@ TEST(ReportFit, EveryInputAndOutputReportFitsOneInterruptPacketAtBothSpeeds) {
 
     // The full joystick layout (six axes, 32 buttons, four hats) is the largest any profile
     // declares, and the rest of the descriptor is every device's.
-    const std::vector<uint8_t> descriptor = protocol::report_descriptor();
+    const std::span<const uint8_t> descriptor = protocol::report_descriptor();
     const protocol::hid::DescriptorParse parse = protocol::hid::parse_report_descriptor(descriptor);
     ASSERT_TRUE(parse.ok()) << parse.error;
     ASSERT_TRUE(parse.descriptor.uses_report_ids);
