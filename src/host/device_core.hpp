@@ -181,15 +181,17 @@ struct DeviceCore {
     uint64_t next_key = 1;
     std::optional<Status> stream_error;  // a refused force sample, for the next call
     uint64_t unexpected_frames = 0;      // frames that were not the protocol (ignored)
-    // The I/O thread's alone: a refusal's text until its CommandStatus, and a dynamic's
-    // report arriving in several DynamicReports (more than four axes) until its last part.
-    protocol::CommandAnswerJoiner error_text;
-    std::optional<protocol::DynamicReportReport> dynamic_first_part;
     std::string last_protocol_problem;
 
     // Guarded by dispatch_mu.
     std::map<uint64_t, Subscriber> subscribers;
     uint64_t next_subscriber = 1;
+
+    // The I/O thread's alone (no lock): a refusal's text until its CommandStatus, and a
+    // dynamic's report arriving in several DynamicReports (more than four axes) until its
+    // last part.
+    protocol::CommandAnswerJoiner error_text;
+    std::optional<protocol::DynamicReportReport> dynamic_first_part;
 
 private:
     void run() noexcept;                        // the I/O thread
