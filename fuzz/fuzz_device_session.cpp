@@ -30,6 +30,7 @@
 
 #include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/host_link.hpp"
 #include "feel/runtime/runtime_backend.hpp"
@@ -131,10 +132,13 @@ private:
             ++answers_;
             return;
         }
-        if (const auto* s = std::get_if<protocol::CommandStatusReport>(&r)) {
+        if (const auto* t = std::get_if<protocol::CommandErrorTextReport>(&r)) error_text_.add(*t);
+        if (const auto* status = std::get_if<protocol::CommandStatusReport>(&r)) {
+            const protocol::CommandAnswer answer = error_text_.finish(*status);
+            const protocol::CommandAnswer* s = &answer;
             // Refusals of a streamed sample come from the runtime and name its "stream." fields.
             const bool force_refusal = s->command == protocol::ReportId::download_force_sample &&
-                                       std::string_view(s->field).substr(0, 7) == "stream.";
+                                       answer.field_text().substr(0, 7) == "stream.";
             (force_refusal ? force_answers_ : answers_)++;
         }
     }
@@ -171,6 +175,7 @@ private:
     std::vector<Frame> out_;
     int64_t next_tick_ = 0;
     int64_t frames_ = 0, force_samples_ = 0, answers_ = 0, force_answers_ = 0;
+    protocol::CommandAnswerJoiner error_text_;
 };
 
 }  // namespace

@@ -97,7 +97,7 @@ Status DeviceCore::send_frame(Frame frame) {
     }
 }
 
-Result<CommandStatusReport> DeviceCore::transact(AnyReport report, FrameKind kind) {
+Result<protocol::CommandAnswer> DeviceCore::transact(AnyReport report, FrameKind kind) {
     const std::string name(protocol::report_name(protocol::report_id_of(report)));
     const uint32_t sequence = next_sequence();
     protocol::set_sequence(report, sequence);
@@ -108,7 +108,7 @@ Result<CommandStatusReport> DeviceCore::transact(AnyReport report, FrameKind kin
         // The host's checks should have caught it; say so rather than send garbage.
         return Status::failure(ErrorKind::invalid_parameter, name + ": " + e.what());
     }
-    std::optional<CommandStatusReport> answer;
+    std::optional<protocol::CommandAnswer> answer;
     bool registered = false;
     {
         std::lock_guard lock(mu);
@@ -136,7 +136,7 @@ Result<CommandStatusReport> DeviceCore::transact(AnyReport report, FrameKind kin
 }
 
 Status DeviceCore::command(AnyReport report, const std::string& what, FrameKind kind) {
-    Result<CommandStatusReport> r = transact(std::move(report), kind);
+    Result<protocol::CommandAnswer> r = transact(std::move(report), kind);
     if (!r) {
         Status s = r.status();
         s.message = what + ": " + s.message;
@@ -163,7 +163,7 @@ Result<AnyReport> DeviceCore::get_feature(ReportId id) {
                 [&] { return feature_reply.has_value() || feature_refusal.has_value() || !connected; });
     expected_feature = -1;
     if (feature_refusal) {
-        const CommandStatusReport refusal = *feature_refusal;
+        const protocol::CommandAnswer refusal = *feature_refusal;
         feature_refusal.reset();
         return status_from_command(refusal, "get " + name);
     }
@@ -419,6 +419,8 @@ void DeviceCore::handle(const Frame& frame) {
                 [this](const auto& r) {
                     using R = std::decay_t<decltype(r)>;
                     if constexpr (std::is_same_v<R, protocol::CommandStatusReport>) on_command_status(r);
+                    else if constexpr (std::is_same_v<R, protocol::CommandErrorTextReport>) error_text.add(r);
+                    else if constexpr (std::is_same_v<R, protocol::EffectStatesReport>) on_effect_states(r);
                     else if constexpr (std::is_same_v<R, protocol::JoystickInputReport>) on_joystick(r);
                     else if constexpr (std::is_same_v<R, protocol::DeviceStatusReport>) on_device_status(r);
                     else if constexpr (std::is_same_v<R, protocol::PidStateReport>) on_pid_state(r);
@@ -462,7 +464,8 @@ void DeviceCore::handle(const Frame& frame) {
     }
 }
 
-void DeviceCore::on_command_status(const CommandStatusReport& status) {
+void DeviceCore::on_command_status(const CommandStatusReport& report) {
+    const protocol::CommandAnswer status = error_text.finish(report);
     std::lock_guard lock(mu);
     auto it = waiting.find(status.sequence);
     if (it != waiting.end()) {
@@ -547,25 +550,30 @@ void DeviceCore::send_emulated_starts(const std::vector<uint16_t>& blocks) {
 void DeviceCore::on_device_status(const protocol::DeviceStatusReport& r) {
     std::lock_guard lock(mu);
     ++input.reports_received;
+    input.t_us = static_cast<int64_t>(r.t_us);
+    input.axis_count = caps.axis_count;
+    for (int i = 0; i < kMaxAxes; ++i) {
+        input.force[i] = r.force[i];
+        input.velocity[i] = static_cast<float>(r.velocity[i]);
+    }
+    input.fade_level = static_cast<float>(r.fade_level) / 10000.0f;
+    input.handle_held = (r.safety_flags & 1u) != 0;
+    input.hands_off = (r.safety_flags & 2u) != 0;
+    input.host_lost = (r.safety_flags & 4u) != 0;
+    input.paused = (r.safety_flags & 8u) != 0;
+    input.actuators_enabled = (r.safety_flags & 16u) != 0;
+    input.gain = r.gain;
+    input.loop_rate_hz = r.loop_rate_hz;
+    input.measured_loop_hz = static_cast<double>(r.measured_rate_millihz) / 1000.0;
+    input.overruns = r.overruns;
+}
+
+void DeviceCore::on_effect_states(const protocol::EffectStatesReport& r) {
+    std::lock_guard lock(mu);
+    ++input.reports_received;
     if (r.page == 0) {
-        input.t_us = static_cast<int64_t>(r.t_us);
-        input.axis_count = caps.axis_count;
-        for (int i = 0; i < kMaxAxes; ++i) {
-            input.force[i] = r.force[i];
-            input.velocity[i] = static_cast<float>(r.velocity[i]);
-        }
-        input.fade_level = static_cast<float>(r.fade_level) / 10000.0f;
-        input.handle_held = (r.safety_flags & 1u) != 0;
-        input.hands_off = (r.safety_flags & 2u) != 0;
-        input.host_lost = (r.safety_flags & 4u) != 0;
-        input.paused = (r.safety_flags & 8u) != 0;
-        input.actuators_enabled = (r.safety_flags & 16u) != 0;
-        input.gain = r.gain;
         input.playing_effects = r.playing_effects;
         input.resident_effects = r.resident_effects;
-        input.loop_rate_hz = r.loop_rate_hz;
-        input.measured_loop_hz = static_cast<double>(r.measured_rate_millihz) / 1000.0;
-        input.overruns = r.overruns;
         input.dropped_reports = r.dropped_reports;
     }
     const int n = std::min<int>(r.effect_count, protocol::kEffectsPerStatusReport);
@@ -601,6 +609,22 @@ void DeviceCore::on_pid_state(const protocol::PidStateReport& r) {
 }
 
 void DeviceCore::on_dynamic(const protocol::DynamicReportReport& r) {
+    // A dynamic with more than kDynamicAxesPerReport axes comes in parts, first_axis 0
+    // first, all with one t_us: the event waits for its last part.
+    constexpr int kPerReport = protocol::kDynamicAxesPerReport;
+    const int axes = std::min<int>(r.axis_count, kMaxAxes);
+    if (r.first_axis == 0) {
+        dynamic_first_part.reset();
+        if (axes > kPerReport) {
+            dynamic_first_part = r;
+            return;
+        }
+    } else if (!dynamic_first_part || dynamic_first_part->block != r.block || dynamic_first_part->t_us != r.t_us ||
+               r.first_axis != kPerReport) {
+        dynamic_first_part.reset();
+        note_protocol_problem("a dynamic report's later part without its first");
+        return;
+    }
     DynamicEvent event;
     uint64_t key = 0;
     {
@@ -611,12 +635,17 @@ void DeviceCore::on_dynamic(const protocol::DynamicReportReport& r) {
     }
     event.kind = r.final_report ? DynamicReport::Kind::final : DynamicReport::Kind::interim;
     event.t_us = static_cast<int64_t>(r.t_us);
-    event.axis_count = std::min<int32_t>(r.axis_count, kMaxAxes);
+    event.axis_count = axes;
     for (int i = 0; i < event.axis_count; ++i) {
-        event.position[i] = static_cast<float>(r.position_centi[i]) / 100.0f;
-        event.velocity[i] = static_cast<float>(r.velocity_centi[i]) / 100.0f;
-        event.handle_velocity[i] = static_cast<float>(r.handle_velocity_centi[i]) / 100.0f;
+        const bool in_first = r.first_axis != 0 && i < kPerReport;
+        const protocol::DynamicReportReport& part = in_first ? *dynamic_first_part : r;
+        const int slot = in_first ? i : i - r.first_axis;
+        if (slot < 0 || slot >= kPerReport) continue;
+        event.position[i] = static_cast<float>(part.position_centi[slot]) / 100.0f;
+        event.velocity[i] = static_cast<float>(part.velocity_centi[slot]) / 100.0f;
+        event.handle_velocity[i] = static_cast<float>(part.handle_velocity_centi[slot]) / 100.0f;
     }
+    dynamic_first_part.reset();
     std::lock_guard lock(dispatch_mu);
     // Copy the ids first: a callback may unsubscribe (itself or another).
     std::vector<uint64_t> ids;

@@ -40,6 +40,7 @@
 
 #include "feel/host/device.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "feel/protocol/reports.hpp"
 #include "feel/transport/transport.hpp"
 
@@ -91,7 +92,7 @@ struct DeviceCore {
     // Sends an output report (or a feature report set) numbered with a fresh sequence and
     // waits for its CommandStatus. The Status is the transport's or the timeout's; the
     // device's own refusal is in the returned report (map it with command_status()).
-    Result<protocol::CommandStatusReport> transact(protocol::AnyReport report, transport::FrameKind kind);
+    Result<protocol::CommandAnswer> transact(protocol::AnyReport report, transport::FrameKind kind);
     // Like transact(), then maps the device's refusal to a Status prefixed with `what`.
     Status command(protocol::AnyReport report, const std::string& what,
                    transport::FrameKind kind = transport::FrameKind::output_report);
@@ -165,10 +166,10 @@ struct DeviceCore {
     bool closed = false;
     bool busy = false;               // the device said `busy` before it closed
     std::string disconnect_reason;
-    std::unordered_map<uint32_t, std::optional<protocol::CommandStatusReport>*> waiting;
+    std::unordered_map<uint32_t, std::optional<protocol::CommandAnswer>*> waiting;
     int expected_feature = -1;       // the report id a get_feature waits for, -1 none
     std::optional<std::vector<uint8_t>> feature_reply;
-    std::optional<protocol::CommandStatusReport> feature_refusal;  // a get the device refused
+    std::optional<protocol::CommandAnswer> feature_refusal;  // a get the device refused
     bool descriptor_wanted = false;
     std::optional<std::vector<uint8_t>> descriptor_reply;
     InputState input{};
@@ -186,12 +187,19 @@ struct DeviceCore {
     std::map<uint64_t, Subscriber> subscribers;
     uint64_t next_subscriber = 1;
 
+    // The I/O thread's alone (no lock): a refusal's text until its CommandStatus, and a
+    // dynamic's report arriving in several DynamicReports (more than four axes) until its
+    // last part.
+    protocol::CommandAnswerJoiner error_text;
+    std::optional<protocol::DynamicReportReport> dynamic_first_part;
+
 private:
     void run() noexcept;                        // the I/O thread
     void handle(const transport::Frame& frame);
     void on_command_status(const protocol::CommandStatusReport& status);
     void on_joystick(const protocol::JoystickInputReport& report);
     void on_device_status(const protocol::DeviceStatusReport& report);
+    void on_effect_states(const protocol::EffectStatesReport& report);
     void on_pid_state(const protocol::PidStateReport& report);
     void on_dynamic(const protocol::DynamicReportReport& report);
     // Emulated starts due now (press edges are found in on_joystick): held triggers whose

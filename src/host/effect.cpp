@@ -190,13 +190,13 @@ Result<EffectStatusInfo> Effect::status() {
     if (!live.status.ok()) return live.status;
     protocol::EffectStatusRequestReport q;
     q.block = live.block;
-    Result<protocol::CommandStatusReport> answer = core_->transact(q, FrameKind::output_report);
+    Result<protocol::CommandAnswer> answer = core_->transact(q, FrameKind::output_report);
     if (!answer) {
         Status s = answer.status();
         s.message = what + ": " + s.message;
         return s;
     }
-    const protocol::CommandStatusReport& r = answer.value();
+    const protocol::CommandAnswer& r = answer.value();
     if (Status s = status_from_command(r, what); !s.ok()) return s;
     if (r.effect_state > static_cast<uint8_t>(runtime::ReportedEffectState::emulated) ||
         r.last_end > static_cast<uint8_t>(PlayEnd::finished)) {

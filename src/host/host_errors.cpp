@@ -47,7 +47,7 @@ ErrorKind kind_of(ErrorCode code) noexcept {
     return ErrorKind::protocol;
 }
 
-Error error_from_status(const protocol::CommandStatusReport& status) {
+Error error_from_status(const protocol::CommandAnswer& status) {
     Error e;
     e.code = status.code;
     const std::size_t n = strnlen(status.field, sizeof status.field);
@@ -68,7 +68,7 @@ Status status_from_error(const Error& error, std::string_view what) {
     return Status::failure(kind_of(error.code), std::string(what) + ": " + error.message(), error);
 }
 
-Status status_from_command(const protocol::CommandStatusReport& status, std::string_view what) {
+Status status_from_command(const protocol::CommandAnswer& status, std::string_view what) {
     if (status.code == ErrorCode::ok) return Status::success();
     return status_from_error(error_from_status(status), what);
 }

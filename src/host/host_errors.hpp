@@ -5,16 +5,16 @@
 #include <string_view>
 
 #include "feel/host/result.hpp"
-#include "feel/protocol/reports.hpp"
+#include "feel/protocol/command_answer.hpp"
 
 namespace feel::host {
 
-// The engine's Error carried by a CommandStatus (field, value, range, rule).
-[[nodiscard]] Error error_from_status(const protocol::CommandStatusReport& status);
+// The engine's Error carried by a device's answer (field, value, range, rule).
+[[nodiscard]] Error error_from_status(const protocol::CommandAnswer& status);
 
 // ok for a CommandStatus without error; else the Status of its code, its message
 // "`what`: <field> = <value> is out of range (allowed ..)" and its Error as detail.
-[[nodiscard]] Status status_from_command(const protocol::CommandStatusReport& status, std::string_view what);
+[[nodiscard]] Status status_from_command(const protocol::CommandAnswer& status, std::string_view what);
 
 // The ErrorKind of an engine ErrorCode (ok -> ok).
 [[nodiscard]] ErrorKind kind_of(ErrorCode code) noexcept;

@@ -90,7 +90,7 @@ struct Pending {
     uint32_t runtime_sequence = 0;
     uint16_t block = 0;
     int32_t value = 0;           // report_rate: the rate asked for
-    protocol::CommandStatusReport status{};
+    protocol::CommandAnswer status{};
     protocol::BlockLoadReport block_load{};
 };
 
@@ -360,7 +360,8 @@ struct DeviceSession::Impl {
         LoopFigures f;
         if (figures) f = figures();
         if (f.loop_rate_hz == 0) f.loop_rate_hz = config.loop_rate_hz;
-        protocol::DeviceStatusReport status = detail::device_status(round, f);
+        out.push_back(input_frame(FrameKind::input_report, detail::device_status(round, f)));
+        protocol::EffectStatesReport status = detail::effect_states(round);
         constexpr std::size_t kPerPage = protocol::kEffectsPerStatusReport;
         constexpr std::size_t kMaxPages = 255;
         const std::size_t pages = std::clamp<std::size_t>((listed.size() + kPerPage - 1) / kPerPage, 1, kMaxPages);
@@ -404,7 +405,12 @@ struct DeviceSession::Impl {
     void on_dynamic(const DynamicReport& d, std::vector<Frame>& out) {
         const uint16_t block = blocks.block_of(d.effect);
         if (block == 0) return;  // an effect freed since: no block to name
-        out.push_back(input_frame(FrameKind::input_report, detail::dynamic_report(d, block)));
+        const int axes = std::clamp(d.axis_count, 0, kMaxAxes);
+        int first = 0;
+        do {
+            out.push_back(input_frame(FrameKind::input_report, detail::dynamic_report(d, block, first)));
+            first += protocol::kDynamicAxesPerReport;
+        } while (first < axes);
     }
 
     // ------------------------------------------------------------------------------------
@@ -425,8 +431,15 @@ struct DeviceSession::Impl {
                 if (p.status.code == ErrorCode::ok) return;
                 [[fallthrough]];
             case Answer::status:
-                if (p.status.code != ErrorCode::ok) ++counters.reports_refused;
-                out.push_back(input_frame(FrameKind::input_report, p.status));
+                if (p.status.code != ErrorCode::ok) {
+                    ++counters.reports_refused;
+                    const protocol::ErrorTextParts text = protocol::error_text_parts(p.status);
+                    for (std::size_t i = 0; i < text.count; ++i) {
+                        out.push_back(input_frame(FrameKind::input_report, text.parts[i]));
+                    }
+                }
+                out.push_back(input_frame(FrameKind::input_report,
+                                          static_cast<const protocol::CommandStatusReport&>(p.status)));
                 return;
             case Answer::block_load: {
                 protocol::BlockLoadReport r = p.block_load;
@@ -847,6 +860,7 @@ struct DeviceSession::Impl {
                 "block " + std::to_string(r.block) + " holds a " + std::string(effect_type_name(b->type)) +
                     " effect, and an effect's type never changes: free the block and create a new effect"));
         }
+        if (auto why = detail::check_axes_enable(r, caps)) return refuse_commit(*why);
         EffectParams next = b->shadow;
         detail::apply_set_effect(r, next, caps);
         detail::ignore_direction_of_per_axis_conditions(b->type, b->arrived.conditions, next);
@@ -855,6 +869,9 @@ struct DeviceSession::Impl {
         next.has_envelope = next.has_envelope && b->arrived.envelope;
         if (!b->is_committed) {
             if (auto why = detail::check_blocks_complete(*b, next, r.block)) return refuse_commit(*why);
+        }
+        if (auto why = detail::check_conditions_within_axes(r, b->type, b->arrived.conditions, next)) {
+            return refuse_commit(*why);
         }
         uint32_t mask = b->is_committed ? detail::changed_fields(b->committed, next) : effect_field::kAll;
         bool takes_stage = false;
@@ -1035,6 +1052,8 @@ struct DeviceSession::Impl {
     Step handle(const protocol::CommandStatusReport&) { return Step::done; }
     Step handle(const protocol::DeviceStatusReport&) { return Step::done; }
     Step handle(const protocol::DynamicReportReport&) { return Step::done; }
+    Step handle(const protocol::CommandErrorTextReport&) { return Step::done; }
+    Step handle(const protocol::EffectStatesReport&) { return Step::done; }
 
     // ------------------------------------------------------------------------------------
 

@@ -38,7 +38,7 @@ void copy_text(char* dst, std::size_t size, std::string_view text) noexcept {
     std::memcpy(dst, text.data(), n);
 }
 
-void fill_error(protocol::CommandStatusReport& status, const Error& error) noexcept {
+void fill_error(protocol::CommandAnswer& status, const Error& error) noexcept {
     status.code = error.code;
     copy_text(status.field, sizeof status.field, std::string_view(error.field, strnlen(error.field, sizeof error.field)));
     status.has_range = error.has_range;
@@ -48,7 +48,7 @@ void fill_error(protocol::CommandStatusReport& status, const Error& error) noexc
     copy_text(status.rule, sizeof status.rule, error.rule != nullptr ? std::string_view(error.rule) : std::string_view());
 }
 
-void fill_refusal(protocol::CommandStatusReport& status, const Refusal& refusal) noexcept {
+void fill_refusal(protocol::CommandAnswer& status, const Refusal& refusal) noexcept {
     status.code = refusal.code;
     copy_text(status.field, sizeof status.field, refusal.field);
     status.has_range = refusal.has_range;
@@ -112,12 +112,18 @@ protocol::DeviceStatusReport device_status(const runtime::StateReport& state, co
     if (state.actuators_enabled) flags |= 1u << 4;
     r.safety_flags = flags;
     r.gain = static_cast<uint16_t>(std::clamp(state.gain, 0, kFullScale));
-    r.playing_effects = static_cast<uint16_t>(std::clamp(state.playing_effects, 0, 65535));
-    r.resident_effects = static_cast<uint16_t>(std::clamp(state.resident_effects, 0, 65535));
     r.loop_rate_hz = static_cast<uint16_t>(std::clamp(figures.loop_rate_hz, 0, 65535));
     r.overruns = static_cast<uint32_t>(std::clamp<int64_t>(figures.overruns, 0, std::numeric_limits<uint32_t>::max()));
     r.measured_rate_millihz = static_cast<uint32_t>(
         std::clamp<int64_t>(figures.measured_rate_millihz, 0, std::numeric_limits<uint32_t>::max()));
+    return r;
+}
+
+protocol::EffectStatesReport effect_states(const runtime::StateReport& state) noexcept {
+    protocol::EffectStatesReport r;
+    r.report_number = state.report_number;
+    r.playing_effects = static_cast<uint16_t>(std::clamp(state.playing_effects, 0, 65535));
+    r.resident_effects = static_cast<uint16_t>(std::clamp(state.resident_effects, 0, 65535));
     r.dropped_reports = state.dropped_reports;
     return r;
 }
@@ -134,17 +140,20 @@ protocol::PidStateReport pid_state(const runtime::StateReport& state, uint16_t b
     return r;
 }
 
-protocol::DynamicReportReport dynamic_report(const DynamicReport& report, uint16_t block) noexcept {
+protocol::DynamicReportReport dynamic_report(const DynamicReport& report, uint16_t block, int first_axis) noexcept {
     protocol::DynamicReportReport r;
     r.block = block;
     r.final_report = report.kind == DynamicReport::Kind::final ? 1 : 0;
     r.t_us = static_cast<uint64_t>(std::max<int64_t>(report.t_us, 0));
     const int axes = std::clamp(report.axis_count, 0, kMaxAxes);
     r.axis_count = static_cast<uint8_t>(axes);
-    for (int a = 0; a < axes; ++a) {
-        r.position_centi[a] = centi(report.position[a]);
-        r.velocity_centi[a] = centi(report.velocity[a]);
-        r.handle_velocity_centi[a] = centi(report.handle_velocity[a]);
+    first_axis = std::clamp(first_axis, 0, kMaxAxes - 1);
+    r.first_axis = static_cast<uint8_t>(first_axis);
+    for (int slot = 0; slot < protocol::kDynamicAxesPerReport && first_axis + slot < axes; ++slot) {
+        const int a = first_axis + slot;
+        r.position_centi[slot] = centi(report.position[a]);
+        r.velocity_centi[slot] = centi(report.velocity[a]);
+        r.handle_velocity_centi[slot] = centi(report.handle_velocity[a]);
     }
     return r;
 }

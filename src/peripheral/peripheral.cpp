@@ -58,7 +58,8 @@ constexpr auto kAdmitWait = 250ms;
 bool droppable(const transport::Frame& frame) {
     if (frame.kind != transport::FrameKind::input_report || frame.payload.empty()) return false;
     const auto id = static_cast<protocol::ReportId>(frame.payload[0]);
-    return id == protocol::ReportId::joystick_input || id == protocol::ReportId::device_status;
+    return id == protocol::ReportId::joystick_input || id == protocol::ReportId::device_status ||
+           id == protocol::ReportId::effect_states;
 }
 
 const sim::DeviceProfile& profile_named(const std::string& name) {

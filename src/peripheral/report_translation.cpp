@@ -127,6 +127,8 @@ std::string_view report_key(ReportId id) noexcept {
         case ReportId::command_status: return "command_status";
         case ReportId::device_status: return "device_status";
         case ReportId::dynamic_report: return "dynamic_report";
+        case ReportId::command_error_text: return "command_error_text";
+        case ReportId::effect_states: return "effect_states";
     }
     return "report";
 }
@@ -271,8 +273,15 @@ void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p, const
     p.axis_count = r.axis_count;
     std::copy(std::begin(r.axes), std::end(r.axes), p.axes);
     if (r.axis_count == 0) {
-        p.axis_count = std::clamp(device.axis_count, 1, 2);
-        for (int a = 0; a < p.axis_count; ++a) p.axes[a] = device.axes[a].axis;
+        p.axis_count = 0;
+        const int device_axes = std::clamp(device.axis_count, 1, kMaxAxes);
+        for (int k = 0; k < device_axes && r.axes_enable != 0; ++k) {
+            if (((r.axes_enable >> static_cast<int>(device.axes[k].axis)) & 1u) != 0) p.axes[p.axis_count++] = device.axes[k].axis;
+        }
+        if (p.axis_count == 0) {  // no Axes Enable (check_axes_enable refused one naming none of the device's)
+            p.axis_count = std::clamp(device.axis_count, 1, 2);
+            for (int a = 0; a < p.axis_count; ++a) p.axes[a] = device.axes[a].axis;
+        }
     }
     p.direction.kind = r.direction_kind;
     std::copy(std::begin(r.direction), std::end(r.direction), p.direction.value);
@@ -280,6 +289,28 @@ void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p, const
         for (int32_t& angle : p.direction.value) angle = angle == 36000 ? 0 : angle;
     }
     p.has_envelope = r.has_envelope;
+}
+
+std::optional<Refusal> check_axes_enable(const protocol::SetEffectReport& r, const runtime::Capabilities& device) {
+    if (r.axes_enable == 0) return std::nullopt;
+    if (r.axis_count >= 1) {
+        uint8_t mask = 0;
+        for (int i = 0; i < r.axis_count && i < kMaxAxes; ++i) {
+            mask = static_cast<uint8_t>(mask | (1u << static_cast<int>(r.axes[i])));
+        }
+        if (r.axes_enable == mask) return std::nullopt;
+        Refusal why = Refusal::of(ErrorCode::invalid_parameter, "set_effect.axes_enable",
+                                  "must be 0 or name exactly the effect's axes (axes[0..axis_count))");
+        why.value = r.axes_enable;
+        return why;
+    }
+    const int device_axes = std::clamp(device.axis_count, 1, kMaxAxes);
+    for (int k = 0; k < device_axes; ++k) {
+        if (((r.axes_enable >> static_cast<int>(device.axes[k].axis)) & 1u) != 0) return std::nullopt;
+    }
+    Refusal why = Refusal::of(ErrorCode::invalid_parameter, "set_effect.axes_enable", "names no axis this device has");
+    why.value = r.axes_enable;
+    return why;
 }
 
 void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived, EffectParams& p) noexcept {
@@ -293,6 +324,19 @@ void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions
         if ((conditions_arrived & (1u << i)) == 0) return;  // check_blocks_complete names the missing one
     }
     p.direction = Direction{};
+}
+
+std::optional<Refusal> check_conditions_within_axes(const protocol::SetEffectReport& r, EffectType type,
+                                                    uint8_t conditions_arrived, const EffectParams& next) {
+    if (r.axis_count == 0 || !is_condition_with_blocks(type)) return std::nullopt;  // a standard host's: ignored
+    const int axes = next.axis_count >= 1 && next.axis_count <= kMaxAxes ? next.axis_count : 1;
+    for (int i = axes; i < kMaxAxes; ++i) {
+        if ((conditions_arrived & (1u << i)) == 0) continue;
+        Refusal why = Refusal::out_of_range("set_condition.axis_index", i, {0, axes - 1});
+        why.rule = "a Set Condition came for an axis the effect does not have (one per axis of the effect)";
+        return why;
+    }
+    return std::nullopt;
 }
 
 std::optional<Refusal> check_blocks_complete(const Block& block, const EffectParams& next, uint16_t index) {

@@ -58,10 +58,19 @@ void apply_type_block(const protocol::AnyReport& report, Block& block);
 
 // Writes Set Effect's Effect Structure into `params` (the type blocks stay). A report
 // without axes (axis_count 0: a standard PID host, which never writes feel's vendor
-// fields) plays on the device's first two axes, or its one: PID's direction is a 2D angle
-// and hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
+// fields) plays on the axes its Axes Enable names that the device has, or without Axes
+// Enable on the device's first two axes, or its one: PID's direction is a 2D angle and
+// hid-pidff sends two Set Condition blocks (docs/protocol.md, "Standard hosts").
 void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& params,
                       const runtime::Capabilities& device);
+
+// PID's Axes Enable against the effect's axes. From feel's own host (axis_count >= 1) it is
+// 0 or exactly the bits of axes[0..axis_count). From a standard host (axis_count 0) it
+// names the effect's axes: those the device has play, in the device's order, and those it
+// lacks are ignored (hid-pidff enables the first axes it finds in the list, whatever the
+// device has), but at least one must be the device's. std::nullopt when it fits.
+[[nodiscard]] std::optional<Refusal> check_axes_enable(const protocol::SetEffectReport& report,
+                                                       const runtime::Capabilities& device);
 
 // DirectInput's rule for conditions (spring, damper, inertia, friction): given one Set
 // Condition per axis, the effect ignores its direction, which applies only to one block
@@ -71,6 +80,17 @@ void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& par
 // no direction on conditions (the engine refuses one): the rule only reads the wire.
 void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived,
                                              EffectParams& params) noexcept;
+
+// Set Condition blocks for axes the effect does not have (bit i of `conditions_arrived` for
+// axis i >= the effect's axis count). hid-pidff sends two, for axes 0 and 1, whatever the
+// device has: a one-axis wheel gets an axis-1 block it cannot use. A standard host says so
+// by naming no axes in Set Effect (axis_count 0), and for it such blocks are accepted and
+// ignored (docs/protocol.md, "Standard hosts"). feel's own host names the effect's axes and
+// sends one block per axis; from it such a block is a mistake, refused at the commit naming
+// `set_condition.axis_index` and the effect's axes as the allowed range.
+[[nodiscard]] std::optional<Refusal> check_conditions_within_axes(const protocol::SetEffectReport& report,
+                                                                  EffectType type, uint8_t conditions_arrived,
+                                                                  const EffectParams& next);
 
 // For a block's first commit: std::nullopt when every type block the effect needs has
 // arrived, else a Refusal naming the first one missing.

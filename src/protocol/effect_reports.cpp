@@ -44,6 +44,9 @@ SetEffectReport set_effect_report(const EffectParams& p, uint16_t block) {
     r.trigger_index = p.trigger.kind == TriggerKind::none ? 0 : static_cast<uint8_t>(p.trigger.index);
     r.axis_count = static_cast<uint8_t>(p.axis_count);
     std::copy(std::begin(p.axes), std::end(p.axes), std::begin(r.axes));
+    for (int i = 0; i < p.axis_count && i < kMaxAxes; ++i) {
+        r.axes_enable = static_cast<uint8_t>(r.axes_enable | (1u << static_cast<int>(p.axes[i])));
+    }
     r.direction_kind = p.direction.kind;
     std::copy(std::begin(p.direction.value), std::end(p.direction.value), std::begin(r.direction));
     r.has_envelope = p.has_envelope;

@@ -165,6 +165,8 @@ inline constexpr uint32_t kDeviceInfoReport = u(0x30);
 inline constexpr uint32_t kCommandStatusReport = u(0x42);
 inline constexpr uint32_t kDeviceStatusReport = u(0x43);
 inline constexpr uint32_t kDynamicReportReport = u(0x44);
+inline constexpr uint32_t kCommandErrorTextReport = u(0x45);
+inline constexpr uint32_t kEffectStatesReport = u(0x46);
 
 // Effect types PID 1.0 has no usage for (feel's EffectType beyond PID's twelve).
 [[nodiscard]] constexpr uint32_t effect_type(uint8_t feel_type) noexcept {
@@ -288,16 +290,16 @@ inline constexpr uint32_t kVendorRevision = u(0x1C5);
 // Command Status.
 inline constexpr uint32_t kCommand = u(0x1D0);
 inline constexpr uint32_t kErrorCode = u(0x1D1);
-inline constexpr uint32_t kErrorField = u(0x1D2);
+inline constexpr uint32_t kErrorText = u(0x1D2);  // Command Error Text's part
 inline constexpr uint32_t kErrorValue = u(0x1D3);
 inline constexpr uint32_t kAllowedMin = u(0x1D4);
 inline constexpr uint32_t kAllowedMax = u(0x1D5);
 inline constexpr uint32_t kHasRange = u(0x1D6);
-inline constexpr uint32_t kErrorRule = u(0x1D7);
 inline constexpr uint32_t kEffectState = u(0x1D8);
 inline constexpr uint32_t kCompletedIterations = u(0x1D9);
 inline constexpr uint32_t kElapsed = u(0x1DA);
 inline constexpr uint32_t kLastEnd = u(0x1DB);
+inline constexpr uint32_t kErrorTextPart = u(0x1DC);
 // Device Status.
 inline constexpr uint32_t kDeviceTime = u(0x1E0);
 inline constexpr uint32_t kReportNumber = u(0x1E1);
@@ -317,6 +319,7 @@ inline constexpr uint32_t kEffectCount = u(0x1ED);
 inline constexpr uint32_t kFinalReport = u(0x1F0);
 inline constexpr uint32_t kMassPosition = u(0x1F1);
 inline constexpr uint32_t kMassVelocity = u(0x1F2);
+inline constexpr uint32_t kFirstAxis = u(0x1F3);
 }  // namespace vendor
 
 }  // namespace feel::protocol::usage

@@ -1,5 +1,6 @@
 // The input reports (device -> host): the joystick's state (Generic Desktop), PID State, and
-// feel's Command Status, Device Status and Dynamic Report.
+// feel's Command Status (with Command Error Text), Device Status (with Effect States) and
+// Dynamic Report. Each fits one 64-byte interrupt packet (kInterruptPacketBytes).
 #include "feel/engine.hpp"
 #include "feel/runtime/runtime_messages.hpp"
 #include "hid_usages.hpp"
@@ -18,13 +19,15 @@ constexpr Range kSafetyFlags{0, 0x1F};          // five flag bits
 constexpr Range kPages{1, 0xFF};
 constexpr Range kStatusEffects{0, kEffectsPerStatusReport};
 constexpr Range kAxisCountOrNone{0, kMaxAxes};
+constexpr Range kFirstAxis{0, kMaxAxes - 1};
+constexpr Range kErrorTextPart{0, 2};
 // Command Status's `command`: kNoReportId (0) or a ReportId up to the highest.
-constexpr Range kAnsweredIds{0x00, 0x44};
+constexpr Range kAnsweredIds{0x00, 0x46};
 static_assert(static_cast<int>(ErrorCode::invalid_handle) == kErrorCode.max, "ErrorCode's last");
 static_assert(static_cast<int>(runtime::ReportedEffectState::emulated) == kReportedState.max,
               "ReportedEffectState's last");
 static_assert(static_cast<int>(PlayEnd::finished) == kPlayEnd.max, "PlayEnd's last");
-static_assert(static_cast<int>(ReportId::dynamic_report) == kAnsweredIds.max, "the highest ReportId");
+static_assert(static_cast<int>(ReportId::effect_states) == kAnsweredIds.max, "the highest ReportId");
 
 constexpr uint32_t kButtonUsages[32] = {
     button(1),  button(2),  button(3),  button(4),  button(5),  button(6),  button(7),
@@ -63,18 +66,24 @@ constexpr FieldSpec kCommandStatus[] = {
                u8(vendor::kCommand, kAnsweredIds).only(&answers_a_report, "is not a report id (nor 0, no report)")),
     FEEL_FIELD(CommandStatusReport, block, u16(pid::kEffectBlockIndex, kBlockOrNone)),
     FEEL_FIELD(CommandStatusReport, code, u8(vendor::kErrorCode, kErrorCode)),
-    FEEL_FIELD(CommandStatusReport, field[i], text(vendor::kErrorField, 48)),
     FEEL_FIELD(CommandStatusReport, value, x64(vendor::kErrorValue)),
     FEEL_FIELD(CommandStatusReport, allowed_min, x64(vendor::kAllowedMin)),
     FEEL_FIELD(CommandStatusReport, allowed_max, x64(vendor::kAllowedMax)),
     FEEL_FIELD(CommandStatusReport, has_range, flag(vendor::kHasRange)),
-    FEEL_FIELD(CommandStatusReport, rule[i], text(vendor::kErrorRule, 96)),
     FEEL_FIELD(CommandStatusReport, effect_state, u8(vendor::kEffectState, kReportedState)),
     FEEL_FIELD(CommandStatusReport, iterations, u16(vendor::kIterations, kAnyU8).or_infinite()),
     FEEL_FIELD(CommandStatusReport, completed_iterations, u8(vendor::kCompletedIterations, kAnyU8)),
     FEEL_FIELD(CommandStatusReport, elapsed_us,
                u32(vendor::kElapsed, kAnyU32).in(FieldUnit::microseconds)),
     FEEL_FIELD(CommandStatusReport, last_end, u8(vendor::kLastEnd, kPlayEnd)),
+};
+
+constexpr FieldSpec kCommandErrorText[] = {
+    FEEL_FIELD(CommandErrorTextReport, sequence, u32(vendor::kSequence, kAnyU32)),
+    FEEL_FIELD(CommandErrorTextReport, command,
+               u8(vendor::kCommand, kAnsweredIds).only(&answers_a_report, "is not a report id (nor 0, no report)")),
+    FEEL_FIELD(CommandErrorTextReport, part, u8(vendor::kErrorTextPart, kErrorTextPart)),
+    FEEL_FIELD(CommandErrorTextReport, text[i], text(vendor::kErrorText, kErrorTextPartBytes)),
 };
 
 constexpr FieldSpec kDeviceStatus[] = {
@@ -87,19 +96,23 @@ constexpr FieldSpec kDeviceStatus[] = {
     FEEL_FIELD(DeviceStatusReport, fade_level, u16(vendor::kSafetyFade, range::kLevel)),
     FEEL_FIELD(DeviceStatusReport, safety_flags, u8(vendor::kSafetyFlags, kSafetyFlags)),
     FEEL_FIELD(DeviceStatusReport, gain, u16(pid::kDeviceGain, range::kGain)),
-    FEEL_FIELD(DeviceStatusReport, playing_effects, u16(vendor::kPlayingEffects, kAnyU16)),
-    FEEL_FIELD(DeviceStatusReport, resident_effects, u16(vendor::kResidentEffects, kAnyU16)),
     FEEL_FIELD(DeviceStatusReport, loop_rate_hz, u16(vendor::kLoopRate, kAnyU16).in(FieldUnit::hertz)),
     FEEL_FIELD(DeviceStatusReport, overruns, u32(vendor::kOverruns, kAnyU32)),
     FEEL_FIELD(DeviceStatusReport, measured_rate_millihz,
                u32(vendor::kMeasuredRate, kAnyU32).in(FieldUnit::millihertz)),
-    FEEL_FIELD(DeviceStatusReport, dropped_reports, x64(vendor::kDroppedReports)),
-    FEEL_FIELD(DeviceStatusReport, page, u8(vendor::kPage, kAnyU8)),
-    FEEL_FIELD(DeviceStatusReport, pages, u8(vendor::kPages, kPages)),
-    FEEL_FIELD(DeviceStatusReport, effect_count, u8(vendor::kEffectCount, kStatusEffects)),
-    FEEL_FIELD(DeviceStatusReport, effect_block[i],
+};
+
+constexpr FieldSpec kEffectStates[] = {
+    FEEL_FIELD(EffectStatesReport, report_number, u32(vendor::kReportNumber, kAnyU32)),
+    FEEL_FIELD(EffectStatesReport, playing_effects, u16(vendor::kPlayingEffects, kAnyU16)),
+    FEEL_FIELD(EffectStatesReport, resident_effects, u16(vendor::kResidentEffects, kAnyU16)),
+    FEEL_FIELD(EffectStatesReport, dropped_reports, x64(vendor::kDroppedReports)),
+    FEEL_FIELD(EffectStatesReport, page, u8(vendor::kPage, kAnyU8)),
+    FEEL_FIELD(EffectStatesReport, pages, u8(vendor::kPages, kPages)),
+    FEEL_FIELD(EffectStatesReport, effect_count, u8(vendor::kEffectCount, kStatusEffects)),
+    FEEL_FIELD(EffectStatesReport, effect_block[i],
                u16(pid::kEffectBlockIndex, kBlockOrNone).times(kEffectsPerStatusReport)),
-    FEEL_FIELD(DeviceStatusReport, effect_state[i],
+    FEEL_FIELD(EffectStatesReport, effect_state[i],
                u8(vendor::kEffectState, kReportedState).times(kEffectsPerStatusReport)),
 };
 
@@ -108,12 +121,13 @@ constexpr FieldSpec kDynamicReport[] = {
     FEEL_FIELD(DynamicReportReport, final_report, flag(vendor::kFinalReport)),
     FEEL_FIELD(DynamicReportReport, t_us, x64(vendor::kDeviceTime).in(FieldUnit::microseconds)),
     FEEL_FIELD(DynamicReportReport, axis_count, u8(vendor::kAxisCount, kAxisCountOrNone)),
+    FEEL_FIELD(DynamicReportReport, first_axis, u8(vendor::kFirstAxis, kFirstAxis)),
     FEEL_FIELD(DynamicReportReport, position_centi[i],
-               i32(vendor::kMassPosition, kAnyI32).times(kMaxAxes)),
+               i32(vendor::kMassPosition, kAnyI32).times(kDynamicAxesPerReport)),
     FEEL_FIELD(DynamicReportReport, velocity_centi[i],
-               i32(vendor::kMassVelocity, kAnyI32).times(kMaxAxes)),
+               i32(vendor::kMassVelocity, kAnyI32).times(kDynamicAxesPerReport)),
     FEEL_FIELD(DynamicReportReport, handle_velocity_centi[i],
-               i32(vendor::kHandleVelocity, kAnyI32).times(kMaxAxes)),
+               i32(vendor::kHandleVelocity, kAnyI32).times(kDynamicAxesPerReport)),
 };
 
 constexpr ReportKind kIn = ReportKind::input;
@@ -129,6 +143,10 @@ constexpr ReportSpec kReports[] = {
                                vendor::kDeviceStatusReport, kDeviceStatus),
     report<DynamicReportReport>(ReportId::dynamic_report, kIn, "Dynamic Report",
                                 "dynamic_report", vendor::kDynamicReportReport, kDynamicReport),
+    report<CommandErrorTextReport>(ReportId::command_error_text, kIn, "Command Error Text",
+                                   "command_error_text", vendor::kCommandErrorTextReport, kCommandErrorText),
+    report<EffectStatesReport>(ReportId::effect_states, kIn, "Effect States", "effect_states",
+                               vendor::kEffectStatesReport, kEffectStates),
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 // rides in the same report under vendor usages, so one report still describes one effect
 // block.
 #include "hid_usages.hpp"
+#include "joystick_layout.hpp"
 #include "report_table.hpp"
 
 namespace feel::protocol::detail {
@@ -99,6 +100,13 @@ constexpr bool has_angles(DirectionKind k) noexcept {
 constexpr bool has_vector(DirectionKind k) noexcept {
     return k == DirectionKind::cartesian || k == DirectionKind::moments;
 }
+// Axes Enable: one bit per axis, X..Rz.
+constexpr int64_t axis_enabled(const SetEffectReport& r, int i) noexcept { return (r.axes_enable >> i) & 1u; }
+constexpr bool set_axis_enabled(SetEffectReport& r, int i, int64_t v) noexcept {
+    const auto bit = static_cast<uint8_t>(1u << i);
+    r.axes_enable = static_cast<uint8_t>(v != 0 ? (r.axes_enable | bit) : (r.axes_enable & ~bit));
+    return true;
+}
 constexpr int64_t direction_enable(const SetEffectReport& r, int) noexcept {
     return r.direction_kind == DirectionKind::none ? 0 : 1;
 }
@@ -163,6 +171,13 @@ constexpr FieldSpec kSetEffect[] = {
     FEEL_FIELD(SetEffectReport, gain, u16(pid::kGain, range::kGain)),
     FEEL_FIELD(SetEffectReport, trigger_index, u16(pid::kTriggerButton, kTriggerButtonOrNone)),
     FEEL_FIELD(SetEffectReport, trigger_kind, u8(vendor::kTriggerKind, kTriggerKind)),
+    // PID's Axes Enable: a Logical collection of one-bit flags named by the axes' usages
+    // (PID 1.0's Set Effect; newer hid-pidff, from 2025, finds the axes there), padded to a
+    // byte.
+    FEEL_MAPPED(SetEffectReport, "axes_enable[i]",
+                field(0, 1, kBinary).times(kMaxAxes).usages(kAxisUsages).wrapped_in(pid::kAxesEnable),
+                axis_enabled, set_axis_enabled),
+    padding_field(8 - kMaxAxes),
     FEEL_MAPPED(SetEffectReport, "direction_enable", flag(pid::kDirectionEnable), direction_enable,
                 set_direction_enable),
     FEEL_MAPPED(SetEffectReport, "direction_form",

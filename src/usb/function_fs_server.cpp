@@ -64,6 +64,7 @@
 
 #include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "feel/protocol/report_text.hpp"
 #include "feel/usb/usb_device.hpp"
 #include "ffs_descriptors.hpp"
@@ -212,32 +213,45 @@ public:
     [[nodiscard]] std::string peer() const override { return peer_; }
 
 private:
-    // A CommandStatus with an error: logged; one naming get_feature / get_descriptor refuses
-    // the control transfer waiting for its reply (called with the mutex held).
+    // A CommandStatus with an error, joined with the Command Error Text before it: logged
+    // with its field and rule; one naming get_feature / get_descriptor refuses the control
+    // transfer waiting for its reply (called with the mutex held).
     void note_refusal(const std::vector<uint8_t>& bytes) {
         protocol::AnyReport report;
         if (protocol::decode(bytes, report)) return;
+        if (const auto* text = std::get_if<protocol::CommandErrorTextReport>(&report)) {
+            error_text_.add(*text);
+            return;
+        }
         const auto* status = std::get_if<protocol::CommandStatusReport>(&report);
         if (status == nullptr || status->code == ErrorCode::ok) return;
-        const std::string field(status->field, strnlen(status->field, sizeof status->field));
-        if (channel_->log != nullptr) channel_->log->line("refused " + protocol::describe_report(report));
+        const protocol::CommandAnswer answer = error_text_.finish(*status);
+        const std::string field(answer.field_text());
+        if (channel_->log != nullptr) {
+            channel_->log->line("refused " + protocol::describe_report(report) + " field=\"" + field + "\" rule=\"" +
+                                std::string(answer.rule_text()) + "\"");
+        }
         if (channel_->reply_pending && (field.rfind("get_feature", 0) == 0 || field.rfind("get_descriptor", 0) == 0)) {
             channel_->reply_refused = true;
         }
     }
 
-    // The periodic state reports' slot: Joystick Input, and Device Status per page.
+    // The periodic state reports' slot: Joystick Input, Device Status, and Effect States
+    // per page.
     static std::optional<uint16_t> state_key(const std::vector<uint8_t>& bytes) {
         if (bytes.empty()) return std::nullopt;
         const uint8_t id = bytes[0];
-        if (id == static_cast<uint8_t>(protocol::ReportId::joystick_input)) return static_cast<uint16_t>(id << 8);
-        if (id != static_cast<uint8_t>(protocol::ReportId::device_status)) return std::nullopt;
+        if (id == static_cast<uint8_t>(protocol::ReportId::joystick_input) ||
+            id == static_cast<uint8_t>(protocol::ReportId::device_status)) {
+            return static_cast<uint16_t>(id << 8);
+        }
+        if (id != static_cast<uint8_t>(protocol::ReportId::effect_states)) return std::nullopt;
         protocol::AnyReport report;
         if (protocol::decode(bytes, report)) return std::nullopt;
-        return static_cast<uint16_t>((id << 8) | std::get<protocol::DeviceStatusReport>(report).page);
+        return static_cast<uint16_t>((id << 8) | std::get<protocol::EffectStatesReport>(report).page);
     }
 
-    // DeviceStatus (page 0): the log gets a "motor" line when the motors' force goes from
+    // DeviceStatus: the log gets a "motor" line when the motors' force goes from
     // zero to non-zero or back (the latency measurement's end point, docs/usb-device.md) and
     // a "loop" line each second with the loop's measured rate and overruns.
     void note_status(const std::vector<uint8_t>& bytes) {
@@ -248,7 +262,6 @@ private:
         protocol::AnyReport report;
         if (protocol::decode(bytes, report)) return;
         const auto& status = std::get<protocol::DeviceStatusReport>(report);
-        if (status.page != 0) return;
         bool pushing = false;
         for (const int16_t f : status.force) pushing = pushing || f != 0;
         if (pushing != pushing_) {
@@ -272,6 +285,7 @@ private:
     std::string peer_;
     bool pushing_ = false;
     uint64_t next_loop_line_us_ = 0;
+    protocol::CommandAnswerJoiner error_text_;  // guarded by the channel's mutex, as note_refusal
 };
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "feel/transport/transport.hpp"
 
 namespace feel::host::test {
@@ -21,7 +22,7 @@ class FakeDevice {
 public:
     // What the device answers a host report with: the status to send (its sequence is
     // filled in), or std::nullopt for "ok".
-    using Answer = std::function<std::optional<protocol::CommandStatusReport>(const protocol::AnyReport&)>;
+    using Answer = std::function<std::optional<protocol::CommandAnswer>(const protocol::AnyReport&)>;
 
     std::atomic<bool> silent{false};  // answers nothing (from now on)
     bool busy = false;           // sends `busy` at the first frame, then closes
@@ -59,6 +60,9 @@ public:
         for (const auto& r : received()) n += std::holds_alternative<R>(r) ? 1 : 0;
         return n;
     }
+
+    // Sends an input report as the device would, unasked (after host_end()).
+    void push(const protocol::AnyReport& report) { send(transport::FrameKind::input_report, report); }
 
     // A DeviceInfo within every wire range: a 2-axis stick of 4 effect slots.
     static protocol::DeviceInfoReport info() {
@@ -127,7 +131,7 @@ private:
                     device_->close();
                     return;
                 }
-                protocol::CommandStatusReport status;
+                protocol::CommandAnswer status;
                 if (answer) {
                     if (auto a = answer(report)) status = *a;
                 }
@@ -137,7 +141,10 @@ private:
                     },
                     report);
                 status.command = protocol::report_id_of(report);
-                send(transport::FrameKind::input_report, status);
+                // A refusal's text first, then its status, as a feel device sends them.
+                const protocol::ErrorTextParts text = protocol::error_text_parts(status);
+                for (std::size_t i = 0; i < text.count; ++i) send(transport::FrameKind::input_report, text.parts[i]);
+                send(transport::FrameKind::input_report, static_cast<const protocol::CommandStatusReport&>(status));
             }
         } catch (const transport::TransportError&) {
             // The host went away.

@@ -26,8 +26,8 @@ EffectParams sine(int32_t magnitude) {
     return p;
 }
 
-protocol::CommandStatusReport refusal(ErrorCode code, const char* field, int64_t value, int64_t lo, int64_t hi) {
-    protocol::CommandStatusReport s;
+protocol::CommandAnswer refusal(ErrorCode code, const char* field, int64_t value, int64_t lo, int64_t hi) {
+    protocol::CommandAnswer s;
     s.code = code;
     std::strncpy(s.field, field, sizeof s.field - 1);
     s.has_range = true;
@@ -37,8 +37,8 @@ protocol::CommandStatusReport refusal(ErrorCode code, const char* field, int64_t
     return s;
 }
 
-protocol::CommandStatusReport refusal_rule(ErrorCode code, const char* field, const char* rule) {
-    protocol::CommandStatusReport s;
+protocol::CommandAnswer refusal_rule(ErrorCode code, const char* field, const char* rule) {
+    protocol::CommandAnswer s;
     s.code = code;
     std::strncpy(s.field, field, sizeof s.field - 1);
     std::strncpy(s.rule, rule, sizeof s.rule - 1);
@@ -63,7 +63,7 @@ TEST(HostProtocolPaths, DeviceSideRangeRefusalNamesTheFieldAndRangeAndFreesTheBl
     FakeDevice fake;
     fake.block_load.block = 3;
     // The device's engine allows less than the host's validator: its verdict is final.
-    fake.answer = [](const protocol::AnyReport& r) -> std::optional<protocol::CommandStatusReport> {
+    fake.answer = [](const protocol::AnyReport& r) -> std::optional<protocol::CommandAnswer> {
         if (std::holds_alternative<protocol::SetEffectReport>(r)) {
             return refusal(ErrorCode::invalid_parameter, "periodic.magnitude", 9000, 0, 8000);
         }
@@ -98,7 +98,7 @@ TEST(HostProtocolPaths, EachDeviceErrorCodeMapsToItsKind) {
                          Case{ErrorCode::invalid_handle, ErrorKind::invalid_handle},
                          Case{ErrorCode::invalid_parameter, ErrorKind::invalid_parameter}}) {
         FakeDevice fake;
-        fake.answer = [c](const protocol::AnyReport& r) -> std::optional<protocol::CommandStatusReport> {
+        fake.answer = [c](const protocol::AnyReport& r) -> std::optional<protocol::CommandAnswer> {
             if (std::holds_alternative<protocol::SetPeriodicReport>(r)) {
                 return refusal_rule(c.code, "periodic", "refused by the test device");
             }

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 
 namespace {
 
@@ -43,6 +44,9 @@ bool send_output(int fd, const AnyReport& r) {
     return ::write(fd, bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size());
 }
 
+// A refusal's text comes in Command Error Text reports before its CommandStatus.
+CommandAnswerJoiner error_text;
+
 void read_statuses(int fd, int milliseconds) {
     std::vector<uint8_t> buf(4096);
     timespec start{}, now{};
@@ -57,9 +61,12 @@ void read_statuses(int fd, int milliseconds) {
         if (n <= 0) return;
         AnyReport r;
         if (decode({buf.data(), static_cast<std::size_t>(n)}, r)) continue;
+        if (const auto* t = std::get_if<CommandErrorTextReport>(&r)) error_text.add(*t);
         if (const auto* s = std::get_if<CommandStatusReport>(&r)) {
+            const CommandAnswer answer = error_text.finish(*s);
+            const std::string field(answer.field_text());
             std::printf("hidraw status command=%u block=%u code=%u field=%s\n", static_cast<unsigned>(s->command),
-                        s->block, static_cast<unsigned>(s->code), s->field[0] != '\0' ? s->field : "-");
+                        s->block, static_cast<unsigned>(s->code), field.empty() ? "-" : field.c_str());
         }
     }
 }

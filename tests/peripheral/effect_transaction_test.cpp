@@ -25,7 +25,7 @@ TEST(EffectTransaction, SpringOnXFeelsMinusKTimesX) {
     rig.ok(spring_axis(rig.next_sequence(), block, 0, k));
     protocol::SetEffectReport e = set_effect(rig.next_sequence(), block, EffectType::spring);
     e.axes[0] = Axis::x;
-    const protocol::CommandStatusReport committed = rig.ok(e);
+    const protocol::CommandAnswer committed = rig.ok(e);
     EXPECT_EQ(committed.command, ReportId::set_effect);
     EXPECT_EQ(committed.block, block);
     ASSERT_TRUE(rig.session().block(block)->committed);
@@ -48,9 +48,12 @@ TEST(EffectTransaction, SpringOnXFeelsMinusKTimesX) {
     ASSERT_FALSE(rig.device_status.empty());
     const protocol::DeviceStatusReport& s = rig.device_status.back();
     EXPECT_NEAR(s.force[0], expected, 0.5);
-    ASSERT_EQ(s.effect_count, 1);
-    EXPECT_EQ(s.effect_block[0], block);
-    EXPECT_EQ(s.effect_state[0], static_cast<uint8_t>(runtime::ReportedEffectState::playing));
+    ASSERT_FALSE(rig.effect_states.empty());
+    const protocol::EffectStatesReport& states = rig.effect_states.back();
+    EXPECT_EQ(states.report_number, s.report_number);  // the Device Status it follows
+    ASSERT_EQ(states.effect_count, 1);
+    EXPECT_EQ(states.effect_block[0], block);
+    EXPECT_EQ(states.effect_state[0], static_cast<uint8_t>(runtime::ReportedEffectState::playing));
     ASSERT_FALSE(rig.joystick.empty());
     EXPECT_NEAR(rig.joystick.back().position[0], 5000, 3);
 

@@ -213,7 +213,7 @@ TEST(FuzzCorpus, EverySeedReportIsAccepted) {
         }
         rig.run(10);
         EXPECT_GT(frames, 5);
-        for (const protocol::CommandStatusReport& s : rig.statuses) {
+        for (const protocol::CommandAnswer& s : rig.statuses) {
             EXPECT_EQ(s.code, ErrorCode::ok) << "sequence " << s.sequence << ": " << s.field << " " << s.rule;
         }
         for (const protocol::AnyReport& r : rig.feature_replies) {

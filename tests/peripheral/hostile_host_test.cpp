@@ -88,12 +88,12 @@ protected:
     }
 
     // Offers a raw frame and returns the one CommandStatus it got.
-    protocol::CommandStatusReport raw(Frame f) {
+    protocol::CommandAnswer raw(Frame f) {
         const std::size_t seen = rig.statuses.size();
         rig.offer(std::move(f));
         rig.run(3);
         EXPECT_EQ(rig.statuses.size(), seen + 1) << "one frame, one answer";
-        return rig.statuses.size() > seen ? rig.statuses[seen] : protocol::CommandStatusReport{};
+        return rig.statuses.size() > seen ? rig.statuses[seen] : protocol::CommandAnswer{};
     }
 
     SessionRig rig;

@@ -1,5 +1,6 @@
 // A host written against the raw transport for the Peripheral's tests: it sends reports and
-// reads frames until the answer it waits for, keeping the last Device Status it saw.
+// reads frames until the answer it waits for, keeping the last Device Status and Effect
+// States it saw.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "session_rig.hpp"
 
 namespace feel::peripheral::test {
@@ -25,7 +27,7 @@ public:
 
     transport::Connection& connection() { return *connection_; }
 
-    protocol::CommandStatusReport command(const protocol::AnyReport& r, bool feature = false) {
+    protocol::CommandAnswer command(const protocol::AnyReport& r, bool feature = false) {
         const uint32_t sequence = std::visit([](const auto& x) -> uint32_t {
             if constexpr (requires { x.sequence; }) return x.sequence; else return 0;
         }, r);
@@ -41,8 +43,12 @@ public:
                 ADD_FAILURE() << "undecodable input report";
                 continue;
             }
-            if (const auto* s = std::get_if<protocol::CommandStatusReport>(&a); s && s->sequence == sequence) return *s;
-            if (const auto* d = std::get_if<protocol::DeviceStatusReport>(&a)) last_status = *d;
+            if (const auto* t = std::get_if<protocol::CommandErrorTextReport>(&a)) error_text_.add(*t);
+            if (const auto* s = std::get_if<protocol::CommandStatusReport>(&a)) {
+                const protocol::CommandAnswer answer = error_text_.finish(*s);
+                if (s->sequence == sequence) return answer;
+            }
+            keep_state(a);
         }
         ADD_FAILURE() << "no CommandStatus for sequence " << sequence;
         return {};
@@ -60,7 +66,7 @@ public:
             if (f->kind == FrameKind::feature_reply) {
                 if (const R* r = std::get_if<R>(&a)) return *r;
             }
-            if (const auto* d = std::get_if<protocol::DeviceStatusReport>(&a)) last_status = *d;
+            keep_state(a);
         }
         ADD_FAILURE() << "no feature reply";
         return R{};
@@ -81,7 +87,7 @@ public:
             if (!f) continue;
             protocol::AnyReport a;
             if (!protocol::decode(f->payload, a).ok()) continue;
-            if (const auto* d = std::get_if<protocol::DeviceStatusReport>(&a)) last_status = *d;
+            keep_state(a);
         }
     }
 
@@ -101,8 +107,15 @@ public:
     }
 
     std::optional<protocol::DeviceStatusReport> last_status;
+    std::optional<protocol::EffectStatesReport> last_effects;  // page 0
 
 private:
+    void keep_state(const protocol::AnyReport& a) {
+        if (const auto* d = std::get_if<protocol::DeviceStatusReport>(&a)) last_status = *d;
+        if (const auto* e = std::get_if<protocol::EffectStatesReport>(&a); e && e->page == 0) last_effects = *e;
+    }
+
+    protocol::CommandAnswerJoiner error_text_;
     std::unique_ptr<transport::Connection> connection_;
 };
 

@@ -36,9 +36,10 @@ TEST(Peripheral, InProcessDeviceAnswersAndPlays) {
     EXPECT_EQ(block, 1);
     host.listen_for(100ms);
     ASSERT_TRUE(host.last_status.has_value());
-    EXPECT_EQ(host.last_status->resident_effects, 1);
+    ASSERT_TRUE(host.last_effects.has_value());
+    EXPECT_EQ(host.last_effects->resident_effects, 1);
     EXPECT_EQ(host.last_status->loop_rate_hz, 1000);
-    EXPECT_EQ(host.last_status->effect_block[0], block);
+    EXPECT_EQ(host.last_effects->effect_block[0], block);
 }
 
 TEST(Peripheral, DeviceStatusCarriesTheMeasuredLoopRate) {
@@ -115,9 +116,9 @@ TEST(Peripheral, HostDisconnectResetsTheDevice) {
     EXPECT_EQ(pool.free_effects, 32);
     EXPECT_EQ(pool.ram_pool_available, pool.ram_pool_size);
     host.listen_for(50ms);
-    ASSERT_TRUE(host.last_status.has_value());
-    EXPECT_EQ(host.last_status->resident_effects, 0);
-    EXPECT_EQ(host.last_status->playing_effects, 0);
+    ASSERT_TRUE(host.last_effects.has_value());
+    EXPECT_EQ(host.last_effects->resident_effects, 0);
+    EXPECT_EQ(host.last_effects->playing_effects, 0);
     // The new host starts at block 1 again.
     EXPECT_EQ(host.play_spring(1), 1);
     EXPECT_EQ(device.stats().hosts_served, 2u);

@@ -17,6 +17,7 @@
 
 #include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/protocol/command_answer.hpp"
 #include "feel/protocol/effect_reports.hpp"
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/host_link.hpp"
@@ -85,7 +86,7 @@ public:
 
     // Sends an output report or sets a feature report and runs until its CommandStatus
     // comes (at most 50 ticks).
-    protocol::CommandStatusReport command(const protocol::AnyReport& r, bool feature = false) {
+    protocol::CommandAnswer command(const protocol::AnyReport& r, bool feature = false) {
         const uint32_t sequence = std::visit([](const auto& x) -> uint32_t {
             if constexpr (requires { x.sequence; }) return x.sequence; else return 0;
         }, r);
@@ -103,8 +104,8 @@ public:
     }
 
     // A command that must succeed.
-    protocol::CommandStatusReport ok(const protocol::AnyReport& r, bool feature = false) {
-        const protocol::CommandStatusReport s = command(r, feature);
+    protocol::CommandAnswer ok(const protocol::AnyReport& r, bool feature = false) {
+        const protocol::CommandAnswer s = command(r, feature);
         EXPECT_EQ(s.code, ErrorCode::ok) << "report " << static_cast<int>(s.command) << " seq " << s.sequence
                                          << ": " << s.field << " " << s.rule;
         return s;
@@ -135,7 +136,7 @@ public:
         r.sequence = next_sequence();
         r.type = type;
         r.sample_count = sample_count;
-        const protocol::CommandStatusReport s = command(r, true);
+        const protocol::CommandAnswer s = command(r, true);
         const auto load = get<protocol::BlockLoadReport>(protocol::ReportId::block_load);
         if (s.code != ErrorCode::ok) {
             EXPECT_EQ(load.block, 0);
@@ -149,11 +150,13 @@ public:
     uint32_t next_sequence() { return sequence_++; }
 
     // Every frame the device sent, sorted by kind.
-    std::vector<protocol::CommandStatusReport> statuses;
+    // The CommandStatus answers, each joined with the Command Error Text before it.
+    std::vector<protocol::CommandAnswer> statuses;
     std::vector<protocol::AnyReport> feature_replies;
     std::vector<std::vector<uint8_t>> descriptors;
     std::vector<protocol::JoystickInputReport> joystick;
     std::vector<protocol::DeviceStatusReport> device_status;
+    std::vector<protocol::EffectStatesReport> effect_states;
     std::vector<protocol::PidStateReport> pid_states;
     std::vector<protocol::DynamicReportReport> dynamics;
     std::vector<Frame> other;
@@ -186,7 +189,9 @@ private:
             return;
         }
         ASSERT_EQ(f.kind, FrameKind::input_report);
-        if (auto* s = std::get_if<protocol::CommandStatusReport>(&r)) statuses.push_back(*s);
+        if (auto* t = std::get_if<protocol::CommandErrorTextReport>(&r)) error_text_.add(*t);
+        else if (auto* s = std::get_if<protocol::CommandStatusReport>(&r)) statuses.push_back(error_text_.finish(*s));
+        else if (auto* es = std::get_if<protocol::EffectStatesReport>(&r)) effect_states.push_back(*es);
         else if (auto* j = std::get_if<protocol::JoystickInputReport>(&r)) joystick.push_back(*j);
         else if (auto* d = std::get_if<protocol::DeviceStatusReport>(&r)) device_status.push_back(*d);
         else if (auto* p = std::get_if<protocol::PidStateReport>(&r)) pid_states.push_back(*p);
@@ -196,6 +201,7 @@ private:
 
     const sim::DeviceProfile* profile_;
     runtime::Capabilities caps_;
+    protocol::CommandAnswerJoiner error_text_;
     runtime::SimBackend* sim_ = nullptr;
     std::unique_ptr<runtime::RuntimePipeline> pipeline_;
     std::unique_ptr<runtime::HostLink> link_;

@@ -56,7 +56,7 @@ TEST(StandardHost, ConditionWithOneBlockForTwoAxesIsRefusedNamingTheMissingBlock
     const uint16_t block = rig.create(EffectType::damper);
     ASSERT_NE(block, 0);
     rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
-    const protocol::CommandStatusReport s =
+    const protocol::CommandAnswer s =
         rig.command(pidff_set_effect(rig.next_sequence(), block, EffectType::damper, 9000));
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(s.field, "set_condition");
@@ -100,7 +100,7 @@ TEST(StandardHost, NegativeSawMagnitudeIsRefused) {
         SessionRig rig("iforce2");
         const uint16_t block = rig.create(type);
         ASSERT_NE(block, 0);
-        const protocol::CommandStatusReport s = rig.command(periodic(rig.next_sequence(), block, -2500, 100'000));
+        const protocol::CommandAnswer s = rig.command(periodic(rig.next_sequence(), block, -2500, 100'000));
         EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
         EXPECT_EQ(s.command, ReportId::set_periodic);
         EXPECT_STREQ(s.field, "set_periodic.magnitude");
@@ -110,6 +110,120 @@ TEST(StandardHost, NegativeSawMagnitudeIsRefused) {
         // A positive magnitude still fits.
         rig.ok(periodic(rig.next_sequence(), block, 2500, 100'000));
     }
+}
+
+
+// hid-pidff sends Set Condition for axes 0 and 1 whatever the device has. On the one-axis
+// wheel the axis-1 block is accepted and ignored (docs/protocol.md, "Standard hosts"): the
+// spring holds axis 0 with axis 0's stiffness, -k·x/10000 (§3.3), and nothing is refused.
+TEST(StandardHost, OneAxisDeviceAcceptsAndIgnoresTheSecondConditionBlock) {
+    SessionRig rig("wheel", "hold:5000", sim::Grip::kinematic);
+    ASSERT_EQ(rig.caps().axis_count, 1);
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    constexpr int16_t k0 = 1000;
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, k0));
+    rig.ok(spring_axis(rig.next_sequence(), block, 1, 4000));  // the axis the wheel lacks
+    rig.ok(pidff_set_effect(rig.next_sequence(), block, EffectType::spring, 9000));
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 1));
+    rig.run(20);
+    const double x = rig.pipeline().last_input().position[0];
+    EXPECT_NEAR(x, 5000, 20000.0 / 4096);
+    EXPECT_NEAR(rig.pipeline().motor_force()[0], -k0 * x / 10000.0, 1e-3);
+}
+
+// feel's own host names the effect's axes (Set Effect's axis_count) and sends one block per
+// axis: a block for an axis the effect lacks is its mistake, refused at the commit.
+TEST(StandardHost, OwnHostConditionBlockForAnAxisTheEffectLacksIsRefused) {
+    SessionRig rig("wheel");
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
+    rig.ok(spring_axis(rig.next_sequence(), block, 1, 4000));
+    const protocol::CommandAnswer s = rig.command(set_effect(rig.next_sequence(), block, EffectType::spring, 1));
+    EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
+    EXPECT_STREQ(s.field, "set_condition.axis_index");
+    EXPECT_TRUE(s.has_range);
+    EXPECT_EQ(s.value, 1);
+    EXPECT_EQ(s.allowed_min, 0);
+    EXPECT_EQ(s.allowed_max, 0);
+}
+
+
+// PID's Axes Enable names the axes an effect acts on (PID 1.0's Set Effect). A standard
+// host's spring with only Y enabled and one Set Condition (Parameter Block Offset 0, the
+// effect's first axis) holds y alone: -k·y/10000 (§3.3) on y, nothing on x.
+TEST(StandardHost, AxesEnableChoosesTheEffectsAxes) {
+    SessionRig rig("iforce2", "hold:5000,-3000", sim::Grip::kinematic);
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    constexpr int16_t k = 2000;
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, k));
+    protocol::SetEffectReport e = pidff_set_effect(rig.next_sequence(), block, EffectType::spring, 0);
+    e.direction_kind = DirectionKind::none;  // hid-pidff clears Direction Enable when it enables axes
+    e.direction[0] = 0;
+    e.axes_enable = 1u << static_cast<int>(Axis::y);
+    rig.ok(e);
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 1));
+    rig.run(20);
+    const double y = rig.pipeline().last_input().position[1];
+    EXPECT_NEAR(y, -3000, 20000.0 / 4096);
+    EXPECT_NEAR(rig.pipeline().motor_force()[1], -k * y / 10000.0, 1e-3);
+    EXPECT_NEAR(rig.pipeline().motor_force()[0], 0, 1e-6);
+}
+
+// hid-pidff enables the first axes it finds in Axes Enable's list (X and Y) whatever the
+// device has: on the one-axis wheel Y is ignored and the effect plays on X.
+TEST(StandardHost, AxesEnableNamingAnAxisTheDeviceLacksIsIgnored) {
+    SessionRig rig("wheel", "hold:5000", sim::Grip::kinematic);
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    constexpr int16_t k = 1000;
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, k));
+    rig.ok(spring_axis(rig.next_sequence(), block, 1, 3000));
+    protocol::SetEffectReport e = pidff_set_effect(rig.next_sequence(), block, EffectType::spring, 0);
+    e.direction_kind = DirectionKind::none;
+    e.axes_enable = (1u << static_cast<int>(Axis::x)) | (1u << static_cast<int>(Axis::y));
+    rig.ok(e);
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 1));
+    rig.run(20);
+    const double x = rig.pipeline().last_input().position[0];
+    EXPECT_NEAR(rig.pipeline().motor_force()[0], -k * x / 10000.0, 1e-3);
+}
+
+TEST(StandardHost, AxesEnableNamingNoAxisOfTheDeviceIsRefused) {
+    SessionRig rig("iforce2");
+    const uint16_t block = rig.create(EffectType::constant);
+    ASSERT_NE(block, 0);
+    protocol::SetConstantForceReport c;
+    c.sequence = rig.next_sequence();
+    c.block = block;
+    c.magnitude = 1000;
+    rig.ok(c);
+    protocol::SetEffectReport e = pidff_set_effect(rig.next_sequence(), block, EffectType::constant, 9000);
+    e.axes_enable = 1u << static_cast<int>(Axis::rz);
+    const protocol::CommandAnswer s = rig.command(e);
+    EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
+    EXPECT_STREQ(s.field, "set_effect.axes_enable");
+    EXPECT_EQ(s.value, 1 << static_cast<int>(Axis::rz));
+}
+
+// feel's own host names the axes in its vendor fields; an Axes Enable that disagrees is refused.
+TEST(StandardHost, OwnHostAxesEnableMustMatchItsAxes) {
+    SessionRig rig("iforce2");
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
+    protocol::SetEffectReport e = set_effect(rig.next_sequence(), block, EffectType::spring, 1);  // axes[0] = x
+    e.axes_enable = 1u << static_cast<int>(Axis::y);
+    const protocol::CommandAnswer s = rig.command(e);
+    EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
+    EXPECT_STREQ(s.field, "set_effect.axes_enable");
+    // The refused first commit rolled the block back: its Set Condition comes again.
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
+    e.sequence = rig.next_sequence();
+    e.axes_enable = 1u << static_cast<int>(Axis::x);
+    rig.ok(e);
 }
 
 }  // namespace

@@ -14,12 +14,12 @@ namespace {
 using protocol::ReportId;
 
 // Offers one raw frame and returns the one CommandStatus it got.
-protocol::CommandStatusReport answer_to(SessionRig& rig, Frame f) {
+protocol::CommandAnswer answer_to(SessionRig& rig, Frame f) {
     const std::size_t seen = rig.statuses.size();
     rig.offer(std::move(f));
     rig.run(3);
     EXPECT_EQ(rig.statuses.size(), seen + 1) << "one frame, one answer";
-    return rig.statuses.size() > seen ? rig.statuses[seen] : protocol::CommandStatusReport{};
+    return rig.statuses.size() > seen ? rig.statuses[seen] : protocol::CommandAnswer{};
 }
 
 TEST(UnknownReport, EveryIdThatNamesNoReportIsQuotedInValueAndBlamedOnNoReport) {

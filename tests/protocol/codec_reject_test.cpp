@@ -101,6 +101,7 @@ TEST(DecodeRejects, EveryFieldOnePastTheDescriptorsRange) {
         }
         ASSERT_NE(layout, nullptr);
         for (const hid::DescriptorField& f : layout->fields) {
+            if (f.is_constant()) continue;  // padding: no value (written 0, refused otherwise)
             const bool is_signed = f.logical_min < 0;
             for (uint32_t i = 0; i < f.report_count; ++i) {
                 const std::size_t offset = 8 + f.bit_offset + i * f.report_size;
@@ -195,14 +196,14 @@ TEST(DecodeRejects, InvalidEnumValues) {
     EXPECT_STREQ(decode_with(BlockLoadReport{}, 3, 0).field, "block_load.status");
     EXPECT_STREQ(decode_with(BlockLoadReport{}, 3, 4).field, "block_load.status");
     // id(1) seq(4) block(2) type(1) 3 x time(12) gain(2) trigger_button(2) trigger_kind(24)
-    // direction_enable(25) direction_form(26) angles(4) vector(6) iterations(2)
-    // axis_count(39) axes[0..5](40..45).
-    EXPECT_STREQ(decode_with(valid_effect(), 26, 4).field, "set_effect.direction_form");
+    // axes_enable(25, six bits and padding) direction_enable(26) direction_form(27) angles(4)
+    // vector(6) iterations(2) axis_count(40) axes[0..5](41..46).
+    EXPECT_STREQ(decode_with(valid_effect(), 27, 4).field, "set_effect.direction_form");
     EXPECT_STREQ(decode_with(valid_effect(), 24, 3).field, "set_effect.trigger_kind");
-    EXPECT_STREQ(decode_with(valid_effect(), 41, 6).field, "set_effect.axes[1]");
+    EXPECT_STREQ(decode_with(valid_effect(), 42, 6).field, "set_effect.axes[1]");
     // A bool that is neither 0 nor 1.
     EXPECT_STREQ(decode_with(ReflexReport{}, 7, 2).field, "reflex.assign");
-    // Command Status naming a report id that does not exist: inside 0x01..0x44 but a hole.
+    // Command Status naming a report id that does not exist: inside 0x01..0x46 but a hole.
     CommandStatusReport status;
     e = decode_with(status, 5, 0x0E);
     EXPECT_STREQ(e.field, "command_status.command");
@@ -224,21 +225,21 @@ TEST(DecodeAccepts, CommandStatusForAFrameThatNamedNoReport) {
 
 TEST(DecodeRejects, FieldsThatContradictAnEarlierField) {
     // Decode loses nothing, so a value that an earlier field makes meaningless is refused
-    // with a rule rather than dropped. Set Effect: byte 25 Direction Enable, 26 form,
-    // 27..30 the Ordinal angles, 31..36 the vector; 8..9 Duration ms, 10..11 its µs.
+    // with a rule rather than dropped. Set Effect: byte 26 Direction Enable, 27 form,
+    // 28..31 the Ordinal angles, 32..37 the vector; 8..9 Duration ms, 10..11 its µs.
     SetEffectReport polar = valid_effect();
     polar.direction_kind = DirectionKind::polar;
     polar.direction[0] = 9000;
     polar.direction[1] = polar.direction[2] = 0;
-    Error e = decode_with(polar, 31, 1);  // a vector component on a polar direction
+    Error e = decode_with(polar, 32, 1);  // a vector component on a polar direction
     EXPECT_STREQ(e.field, "set_effect.direction_vector[0]");
     EXPECT_FALSE(e.has_range);
     EXPECT_STREQ(e.rule, "must be 0: only cartesian and moment directions have a vector");
-    EXPECT_STREQ(decode_with(polar, 29, 1).field, "set_effect.direction_angle[1]");  // polar has one angle
+    EXPECT_STREQ(decode_with(polar, 30, 1).field, "set_effect.direction_angle[1]");  // polar has one angle
     SetEffectReport none = polar;
     none.direction_kind = DirectionKind::none;
     none.direction[0] = 0;
-    EXPECT_STREQ(decode_with(none, 26, 2).field, "set_effect.direction_form");
+    EXPECT_STREQ(decode_with(none, 27, 2).field, "set_effect.direction_form");
     SetEffectReport endless = polar;
     endless.duration_us = kWireInfinite;
     EXPECT_STREQ(decode_with(endless, 10, 5).field, "set_effect.duration_fine_us");

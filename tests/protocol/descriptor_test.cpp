@@ -184,7 +184,7 @@ TEST(Descriptor, VendorReportsLiveOnTheVendorPage) {
                         ReportId::reflex, ReportId::idf_settings, ReportId::report_rate,
                         ReportId::keep_alive, ReportId::effect_status_request,
                         ReportId::device_info, ReportId::command_status, ReportId::device_status,
-                        ReportId::dynamic_report}) {
+                        ReportId::dynamic_report, ReportId::command_error_text, ReportId::effect_states}) {
         EXPECT_EQ(report_usage(report(id)) >> 16, 0xFF00u) << report_name(id);
     }
     // Every field usage is on a standard page feel uses, or on the vendor page.

@@ -130,7 +130,11 @@ std::string usage_text(uint32_t u) {
 }
 
 std::string field_usage_text(const FieldSpec& f) {
+    if (f.padding) return "(constant padding)";
     if (f.named_array != 0) return usage_text(f.named_array) + " (named array)";
+    if (f.wrap != 0 && !f.usage_list.empty() && f.usage_list.front() == usage::gd::kX) {
+        return usage_text(f.wrap) + " (collection of GD X, Y, Z, Rx, Ry, Rz)";
+    }
     if (f.wrap != 0) return usage_text(f.wrap) + " (collection of Ordinals 1, 2)";
     if (f.usage_list.empty()) return usage_text(f.usage);
     if (usage::page_of(f.usage_list.front()) == usage::kPageButton) return "Button 1..32";
@@ -178,16 +182,46 @@ const char* kind_text(ReportKind k) {
     return "";
 }
 
-// Which USB pipe the report travels on, and whether it fits one full-speed packet.
+// Which USB pipe the report travels on, and whether it fits one full-speed packet (every
+// input and output report does: tests/usb/report_fit_test.cpp checks it on the descriptor).
 std::string pipe_text(const ReportSpec& r) {
     if (r.kind == ReportKind::feature) return "control pipe (GET/SET_REPORT)";
     const char* pipe = r.kind == ReportKind::output ? "interrupt OUT" : "interrupt IN";
-    return std::string(pipe) + (r.size() <= 64 ? " (fits a 64-byte packet)" : " (MORE than one 64-byte packet)");
+    return std::string(pipe) + (r.size() <= kInterruptPacketBytes ? " (fits a 64-byte packet)"
+                                                                  : " (does NOT fit a 64-byte packet)");
+}
+
+// Who sends it: a feature report is set by the host (Create New Effect) or got from the device.
+const char* direction_text(const ReportSpec& r) {
+    switch (r.kind) {
+        case ReportKind::output: return "host → device";
+        case ReportKind::input: return "device → host";
+        case ReportKind::feature:
+            return r.id == ReportId::create_new_effect ? "host → device (SET_REPORT)" : "device → host (GET_REPORT)";
+    }
+    return "";
+}
+
+std::string pipe_column(const ReportSpec& r) {
+    switch (r.kind) {
+        case ReportKind::output: return "interrupt OUT";
+        case ReportKind::input: return "interrupt IN";
+        case ReportKind::feature: return "control (feature)";
+    }
+    return "";
 }
 
 std::string generated_tables() {
     std::ostringstream md;
     md << kBegin << "\n";
+    md << "\n### Reports by pipe\n\nOn USB (docs/usb-device.md). Sizes include the report id byte; a "
+          "full-speed interrupt packet is 64 bytes.\n\n| id | report | direction | bytes | pipe |\n|---|---|---|---|---|\n";
+    for (const ReportSpec* r : detail::all_reports()) {
+        char id[8];
+        std::snprintf(id, sizeof id, "0x%02X", static_cast<unsigned>(r->id));
+        md << "| " << id << " | " << r->name << " | " << direction_text(*r) << " | " << r->size() << " | "
+           << pipe_column(*r) << " |\n";
+    }
     for (const ReportSpec* r : detail::all_reports()) {
         char id[8];
         std::snprintf(id, sizeof id, "0x%02X", static_cast<unsigned>(r->id));

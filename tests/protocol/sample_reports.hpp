@@ -177,18 +177,23 @@ inline std::vector<AnyReport> sample_reports() {
     status.command = ReportId::set_effect;
     status.block = 56;
     status.code = ErrorCode::invalid_parameter;
-    set_text(status.field, "periodic.phase");
     status.value = INT64_MIN;
     status.allowed_min = -1;
     status.allowed_max = INT64_MAX;
     status.has_range = true;
-    set_text(status.rule, "is out of range");
     status.effect_state = 3;
     status.iterations = 255;
     status.completed_iterations = 254;
     status.elapsed_us = 0xFFFFFFFFu;
     status.last_end = 2;
     all.emplace_back(status);
+
+    CommandErrorTextReport text;
+    text.sequence = 0x12345678u;
+    text.command = ReportId::set_effect;
+    text.part = 2;
+    set_text(text.text, "the rule's second half, NUL-padded");
+    all.emplace_back(text);
 
     DeviceStatusReport device;
     device.t_us = 0x0123456789ABCDEFull;
@@ -200,27 +205,32 @@ inline std::vector<AnyReport> sample_reports() {
     device.fade_level = 5000;
     device.safety_flags = 0x1F;
     device.gain = 1;
-    device.playing_effects = 3;
-    device.resident_effects = 65535;
     device.loop_rate_hz = 1000;
     device.overruns = 0xFFFFFFFFu;
     device.measured_rate_millihz = 999'987;
-    device.dropped_reports = ~uint64_t{0};
-    device.page = 2;
-    device.pages = 255;
-    device.effect_count = kEffectsPerStatusReport;
-    for (int i = 0; i < kEffectsPerStatusReport; ++i) {
-        device.effect_block[i] = static_cast<uint16_t>(65535 - i);
-        device.effect_state[i] = static_cast<uint8_t>(i % 4);
-    }
     all.emplace_back(device);
+
+    EffectStatesReport effects;
+    effects.report_number = 0xFEDCBA98u;
+    effects.playing_effects = 3;
+    effects.resident_effects = 65535;
+    effects.dropped_reports = ~uint64_t{0};
+    effects.page = 2;
+    effects.pages = 255;
+    effects.effect_count = kEffectsPerStatusReport;
+    for (int i = 0; i < kEffectsPerStatusReport; ++i) {
+        effects.effect_block[i] = static_cast<uint16_t>(65535 - i);
+        effects.effect_state[i] = static_cast<uint8_t>(i % 4);
+    }
+    all.emplace_back(effects);
 
     DynamicReportReport dyn;
     dyn.block = 57;
     dyn.final_report = 1;
     dyn.t_us = ~uint64_t{0} - 1;
     dyn.axis_count = 6;
-    for (int i = 0; i < kMaxAxes; ++i) {
+    dyn.first_axis = 4;
+    for (int i = 0; i < kDynamicAxesPerReport; ++i) {
         dyn.position_centi[i] = INT32_MIN + i;
         dyn.velocity_centi[i] = INT32_MAX - i;
         dyn.handle_velocity_centi[i] = -i * 1000;

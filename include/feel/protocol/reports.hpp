@@ -73,8 +73,15 @@ enum class ReportId : uint8_t {
     pid_state = 0x41,              // PID State Report (one effect's playing flag)
     command_status = 0x42,         // vendor: the outcome of one command
     device_status = 0x43,          // vendor: forces, safety, effect states, loop figures
-    dynamic_report = 0x44,         // vendor: a dynamic's interim or final report (§5.2)
+    dynamic_report = 0x44,         // vendor: a dynamic's interim or final report (§5.2), by axes
+    command_error_text = 0x45,     // vendor: a refusal's field and rule, before its CommandStatus
+    effect_states = 0x46,          // vendor: the effects' states and counts, in pages
 };
+
+// The largest input or output report travels in one full-speed interrupt packet (64
+// bytes, USB 2.0 §5.7.3), whatever the transport: the reports are laid out for it
+// (docs/protocol.md, "Which pipe"). Feature reports travel on the control pipe.
+inline constexpr int kInterruptPacketBytes = 64;
 
 enum class ReportKind : uint8_t { output, feature, input };
 
@@ -107,6 +114,9 @@ struct SetEffectReport {
     uint8_t trigger_index = 0;                 // PID Trigger Button: 0 none, button 1..32, hat 1..4
     uint8_t axis_count = 1;                    // vendor: 1..6, in feel's order; 0 not given (standard host)
     Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};  // 0..5
+    // PID Axes Enable: bit a for feel::Axis a (Generic Desktop X, Y, Z, Rx, Ry, Rz), the
+    // axes the effect acts on; 0 not given. feel's host sets the bits of `axes`.
+    uint8_t axes_enable = 0;
     DirectionKind direction_kind = DirectionKind::none;  // PID Direction Enable + vendor form
     // Polar and spherical: PID Direction's Ordinals, 0..35999; cartesian and moments: a
     // vendor vector, ±10000 per component (see feel::Direction). Slots a form does not
@@ -446,19 +456,19 @@ struct PidStateReport {
 // the status's `value`, field "report.id"). HID reserves report id 0, so no report has it.
 inline constexpr ReportId kNoReportId = ReportId{0};
 
-// The outcome of one command (vendor). For an error, `error` names the field, the value
-// and the allowed range exactly as the device's engine refused it.
+// The outcome of one command (vendor). For an error: the value and the allowed range
+// exactly as the device's engine refused it; the field's name and the rule's sentence come
+// in CommandErrorTextReports sent just before it (protocol/command_answer.hpp joins them),
+// so the answer fits one interrupt packet.
 struct CommandStatusReport {
     uint32_t sequence = 0;
     ReportId command = ReportId::keep_alive;  // the report that was answered, or kNoReportId
     uint16_t block = 0;                        // the effect concerned, 0 if none
     ErrorCode code = ErrorCode::ok;
-    char field[48] = {};
     int64_t value = 0;
     int64_t allowed_min = 0;
     int64_t allowed_max = 0;
     bool has_range = false;
-    char rule[96] = {};                        // the sentence for errors that are not a range
     // The effect's status after the command (effect commands and status requests).
     uint8_t effect_state = 0;                  // runtime::ReportedEffectState
     uint16_t iterations = 0;                   // 0..255, or kLoopInfinite
@@ -469,8 +479,24 @@ struct CommandStatusReport {
     friend bool operator==(const CommandStatusReport&, const CommandStatusReport&) = default;
 };
 
-// The device's state at the report rate (vendor): what `feel monitor` shows.
-inline constexpr int kEffectsPerStatusReport = 16;
+// A refusal's text (vendor), in parts of kErrorTextPartBytes, sent right before the refusal's
+// CommandStatus with the same sequence and command: part 0 is the field's name
+// ("set_effect.gain"), parts 1 and 2 the rule's sentence (bytes 0..47, 48..95), each
+// NUL-padded. Parts 1 and 2 come only when the rule reaches into them.
+inline constexpr int kErrorTextPartBytes = 48;
+inline constexpr int kErrorFieldBytes = kErrorTextPartBytes;      // part 0
+inline constexpr int kErrorRuleBytes = 2 * kErrorTextPartBytes;   // parts 1 and 2
+struct CommandErrorTextReport {
+    uint32_t sequence = 0;
+    ReportId command = ReportId::keep_alive;  // as in the CommandStatus it precedes
+    uint8_t part = 0;                          // 0 field, 1 and 2 the rule
+    char text[kErrorTextPartBytes] = {};
+
+    friend bool operator==(const CommandErrorTextReport&, const CommandErrorTextReport&) = default;
+};
+
+// The device's state at the report rate (vendor): what `feel monitor` shows. The effects'
+// states follow in EffectStatesReport pages.
 struct DeviceStatusReport {
     uint64_t t_us = 0;                 // device time of the tick described
     uint32_t report_number = 0;
@@ -479,29 +505,43 @@ struct DeviceStatusReport {
     uint16_t fade_level = 0;           // safety fade 0..10000 (1.0 = 10000)
     uint8_t safety_flags = 0;          // bit 0 held, 1 hands_off, 2 host_lost, 3 paused, 4 actuators_enabled
     uint16_t gain = 10000;
-    uint16_t playing_effects = 0;
-    uint16_t resident_effects = 0;
     uint16_t loop_rate_hz = 0;         // the loop's nominal rate
     uint32_t overruns = 0;             // loop overruns since the device started
     uint32_t measured_rate_millihz = 0;// ticks per second measured over the last second, mHz
-    uint64_t dropped_reports = 0;
-    uint8_t page = 0, pages = 1, effect_count = 0;  // 0..255, 1..255, 0..kEffectsPerStatusReport
-    uint16_t effect_block[kEffectsPerStatusReport] = {};
-    uint8_t effect_state[kEffectsPerStatusReport] = {};  // runtime::ReportedEffectState
 
     friend bool operator==(const DeviceStatusReport&, const DeviceStatusReport&) = default;
 };
 
-// A dynamic's interim or final report (vendor, §5.2, §6.6.f).
+// The effects' states (vendor), sent after each DeviceStatus with its report number, in
+// pages of kEffectsPerStatusReport effects (at least one page, also with no effect).
+inline constexpr int kEffectsPerStatusReport = 14;
+struct EffectStatesReport {
+    uint32_t report_number = 0;        // the DeviceStatus this belongs to
+    uint16_t playing_effects = 0;
+    uint16_t resident_effects = 0;
+    uint64_t dropped_reports = 0;      // input reports the device dropped (a host not reading)
+    uint8_t page = 0, pages = 1, effect_count = 0;  // 0..255, 1..255, 0..kEffectsPerStatusReport
+    uint16_t effect_block[kEffectsPerStatusReport] = {};
+    uint8_t effect_state[kEffectsPerStatusReport] = {};  // runtime::ReportedEffectState
+
+    friend bool operator==(const EffectStatesReport&, const EffectStatesReport&) = default;
+};
+
+// A dynamic's interim or final report (vendor, §5.2, §6.6.f), kDynamicAxesPerReport axes
+// at a time: an effect with more axes sends several, first_axis 0 first, all with the
+// same t_us.
+inline constexpr int kDynamicAxesPerReport = 4;
 struct DynamicReportReport {
     uint16_t block = 0;
     uint8_t final_report = 0;          // 0 interim, 1 final
     uint64_t t_us = 0;
     uint8_t axis_count = 0;            // the effect's axes, 0..6
-    // Mass minus handle, hundredths of a position unit, and hundredths of units/s.
-    int32_t position_centi[kMaxAxes] = {};
-    int32_t velocity_centi[kMaxAxes] = {};
-    int32_t handle_velocity_centi[kMaxAxes] = {};
+    uint8_t first_axis = 0;            // the effect axis of slot 0 here: 0 or 4
+    // Mass minus handle, hundredths of a position unit, and hundredths of units/s, for
+    // effect axes first_axis .. first_axis + 3.
+    int32_t position_centi[kDynamicAxesPerReport] = {};
+    int32_t velocity_centi[kDynamicAxesPerReport] = {};
+    int32_t handle_velocity_centi[kDynamicAxesPerReport] = {};
 
     friend bool operator==(const DynamicReportReport&, const DynamicReportReport&) = default;
 };
@@ -515,6 +555,6 @@ using AnyReport = std::variant<
     SetDynamicReport, SetControlLawReport, ReflexReport, IdfSettingsReport, ReportRateReport,
     KeepAliveReport, EffectStatusRequestReport, CreateNewEffectReport, BlockLoadReport,
     PidPoolReport, DeviceInfoReport, JoystickInputReport, PidStateReport, CommandStatusReport,
-    DeviceStatusReport, DynamicReportReport>;
+    DeviceStatusReport, DynamicReportReport, CommandErrorTextReport, EffectStatesReport>;
 
 }  // namespace feel::protocol
