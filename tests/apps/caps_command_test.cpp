@@ -36,7 +36,7 @@ TEST_F(Caps, DefaultsToTheInProcessIforce2) {
     EXPECT_EQ(value_of(r.out, "effect slots"), "32") << r.out;
     EXPECT_EQ(value_of(r.out, "parameter memory"), "16384 bytes") << r.out;
     EXPECT_EQ(value_of(r.out, "local reflexes"), "yes") << r.out;
-    EXPECT_EQ(value_of(r.out, "protocol"), "HID PID 1.0 + feel vendor 1") << r.out;
+    EXPECT_EQ(value_of(r.out, "protocol"), "HID PID 1.0 + feel vendor 2") << r.out;
     EXPECT_EQ(value_of(r.out, "firmware"), "feel-sim 0.1.0") << r.out;
 }
 

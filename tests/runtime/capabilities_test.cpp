@@ -80,7 +80,7 @@ TEST(Capabilities, EveryBuiltInReportsItsProfilesData) {
         EXPECT_EQ(c.max_loop_rate_hz, p.max_loop_rate_hz);
         EXPECT_EQ(c.firmware_version, p.firmware_version);
         EXPECT_EQ(c.firmware_version, "feel-sim 0.1.0");
-        EXPECT_EQ(c.protocol_version, "HID PID 1.0 + feel vendor 1");
+        EXPECT_EQ(c.protocol_version, "HID PID 1.0 + feel vendor 2");
     }
 }
 
@@ -387,7 +387,7 @@ TEST(PrintCapabilities, TellsTheFactsOfAnIforce1) {
     EXPECT_EQ(value_of(text, "device"), "iforce1") << text;
     EXPECT_EQ(value_of(text, "class"), "I-FORCE 1.x") << text;
     EXPECT_EQ(value_of(text, "firmware"), "feel-sim 0.1.0") << text;
-    EXPECT_EQ(value_of(text, "protocol"), "HID PID 1.0 + feel vendor 1") << text;
+    EXPECT_EQ(value_of(text, "protocol"), "HID PID 1.0 + feel vendor 2") << text;
     EXPECT_EQ(value_of(text, "axes"), "2") << text;
     EXPECT_EQ(value_of(text, "buttons"), "4") << text;
     EXPECT_EQ(value_of(text, "hats"), "2") << text;

@@ -422,7 +422,7 @@ struct DeviceInfoReport {
     uint16_t interim_report_centihz = 0;  // interim report rate, hundredths of Hz
     uint16_t report_rate_hz = 0;          // the state report rate now
     char firmware_version[kNameBytes] = {};
-    uint8_t vendor_revision = 1;          // runtime::kProtocolVendorRevision
+    uint8_t vendor_revision = 2;          // runtime::kProtocolVendorRevision
 
     friend bool operator==(const DeviceInfoReport&, const DeviceInfoReport&) = default;
 };

@@ -29,8 +29,8 @@ namespace feel::runtime {
 // (PID 1.0, the DirectInput model of §6) plus feel's vendor-defined reports for what PID
 // lacks (Dynamics, reflex repeat, IDF). The host side arrives with the host-link issue;
 // this names the version it will be.
-inline constexpr std::string_view kProtocolVersion = "HID PID 1.0 + feel vendor 1";
-inline constexpr int32_t kProtocolVendorRevision = 1;
+inline constexpr std::string_view kProtocolVersion = "HID PID 1.0 + feel vendor 2";
+inline constexpr int32_t kProtocolVendorRevision = 2;
 
 // One axis as the host sees it: what ±10000 of position and force mean physically.
 struct AxisCapability {
