@@ -16,11 +16,13 @@
 // freely across it. The positive side of the block is the side u points to: a spring with
 // {"polar": 9000} is a spring on x, the same as an angle_spring at 9000.
 //
-// The 1-D law is the family's own code (spring_condition, ...), run on a one-axis view of
-// the effect whose axis 0 reads the projections: one law, not a second copy of it. The
-// friction bristle of that view is the effect's first (bristle[0]), so the directed
-// friction keeps its state across ticks like a one-axis friction. Real-time: a copy of the
-// params and a few arrays on the stack, no allocation.
+// The 1-D law is the family's own code (spring_condition, ...), run on a view of the
+// handle in which the effect's first axis reads the projections and its other axes read 0:
+// one law, not a second copy of it. Only the force on the first axis is taken. The other
+// blocks are left at their defaults (the validator requires it) and their forces, zero
+// anyway, are dropped. The friction bristle of the first block (bristle[0]) keeps the
+// state across ticks, like a one-axis friction. Real-time: a few arrays on the stack (no
+// copy of the params, which would cost the M4's tick stack 784 bytes), no allocation.
 #include "conditions/condition_math.hpp"
 
 namespace feel::detail {
@@ -30,31 +32,25 @@ void directed_condition(const ConditionContext& c, void (*law)(const ConditionCo
     double u[kMaxAxes];
     condition_line(c, u);
 
-    EffectParams line = *c.params;  // axis 0 is the line of the direction
-    line.axis_count = 1;
-    line.axes[0] = Axis::x;
-    line.direction = Direction{};
-
-    const int a0 = axis_index(Axis::x);
+    const int line = axis_index(c.params->axes[0]);  // the first axis carries the line
     float position[kMaxAxes] = {};
     float velocity[kMaxAxes] = {};
     float acceleration[kMaxAxes] = {};
     float start_position[kMaxAxes] = {};
-    position[a0] = static_cast<float>(along(u, c.position));
-    velocity[a0] = static_cast<float>(along(u, c.velocity));
-    acceleration[a0] = static_cast<float>(along(u, c.acceleration));
-    start_position[a0] = static_cast<float>(along(u, c.start_position));
+    position[line] = static_cast<float>(along(u, c.position));
+    velocity[line] = static_cast<float>(along(u, c.velocity));
+    acceleration[line] = static_cast<float>(along(u, c.acceleration));
+    start_position[line] = static_cast<float>(along(u, c.start_position));
 
     ConditionContext on_line = c;
-    on_line.params = &line;
     on_line.position = position;
     on_line.velocity = velocity;
     on_line.acceleration = acceleration;
     on_line.start_position = start_position;
 
-    double along_line[kMaxAxes] = {};
-    law(on_line, along_line);
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += along_line[a0] * u[a];
+    double per_axis[kMaxAxes] = {};
+    law(on_line, per_axis);
+    for (int a = 0; a < kMaxAxes; ++a) force[a] += per_axis[line] * u[a];
 }
 
 }  // namespace feel::detail
