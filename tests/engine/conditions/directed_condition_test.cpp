@@ -4,6 +4,9 @@
 // component across u is zero, and along u it is the 1-D Condition Struct law of the
 // handle's position, velocity or acceleration projected onto u. Where the form coincides
 // with the angle_spring (a spring with a polar direction), both give the same force vector.
+#include <cstring>
+#include <vector>
+
 #include "condition_fixture.hpp"
 
 namespace feel::test {
@@ -172,6 +175,37 @@ TEST_F(DirectedCondition, FrictionRubsOnlyAlongTheDirection) {
         const TickOutput out = tick_at(-0.8 * t, 0.6 * t);
         expect_along_only(out, u, 0, 60, k);
     }
+}
+
+TEST_F(DirectedCondition, TheSameInputsGiveBitIdenticalForces) {
+    // The real-time rule: a directed friction and a directed inertia (the stateful and the
+    // most derived input) replayed on a second engine give the very same bits.
+    auto run = [&](Engine& e) {
+        ConditionBlock b = block(7000, 5000);
+        EffectParams friction = directed(EffectType::friction, {Axis::x, Axis::y}, b, DirectionKind::polar, {2100});
+        EffectParams inertia = directed(EffectType::inertia, {Axis::y, Axis::x}, b, DirectionKind::cartesian, {-2, 5});
+        for (const EffectParams& p : {friction, inertia}) {
+            const CreateResult r = e.create(p);
+            EXPECT_TRUE(r.error.ok()) << r.error.message();
+            EXPECT_TRUE(e.start(r.id).ok());
+        }
+        std::vector<float> forces;
+        for (int k = 0; k < 3000; ++k) {
+            TickInput in;
+            in.t_us = k * 1000;
+            in.position[0] = static_cast<float>(quantize(7000 * std::sin(k / 230.0), kJoystickStep));
+            in.position[1] = static_cast<float>(quantize(5000 * std::sin(k / 170.0 + 1), kJoystickStep));
+            TickOutput out;
+            e.tick(in, out);
+            forces.push_back(out.force[0]);
+            forces.push_back(out.force[1]);
+        }
+        return forces;
+    };
+    Engine a(config_), b(config_);
+    const std::vector<float> first = run(a), second = run(b);
+    ASSERT_EQ(first.size(), second.size());
+    EXPECT_EQ(std::memcmp(first.data(), second.data(), first.size() * sizeof(float)), 0);
 }
 
 TEST_F(DirectedCondition, ThePerAxisFormIsUnchanged) {
