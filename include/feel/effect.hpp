@@ -141,6 +141,9 @@ struct BarrierBlock {  // §6.6.g
     int32_t angle = 0;             // 0..35999 (angle_barrier only)
     int32_t surface_friction = 0;  // 0..10000
     int32_t surface_texture = 0;   // 0..10000
+    // The Offset-Flag, "same as the wall" (§3.8): relative measures offset from where the
+    // handle is when the effect starts. Last, so that brace-initialised blocks keep their order.
+    OffsetMode offset_mode = OffsetMode::absolute;
 
     friend bool operator==(const BarrierBlock&, const BarrierBlock&) = default;
 };
@@ -245,5 +248,16 @@ struct EffectParams {
 };
 
 inline constexpr int32_t kInfiniteIterations = -1;
+
+// A spring, damper, inertia or friction given a direction (§3.1: "for multi-axis conditions,
+// you can define a direction"): one condition block, conditions[0], applied along the
+// direction, DirectInput's single DICONDITION "in the specified direction". Without one, a
+// block per axis acts on each axis separately. (angle_spring is the polar special case with
+// its own type.) docs/conditions.md, "Conditions with a direction".
+[[nodiscard]] constexpr bool is_directed_condition(const EffectParams& p) noexcept {
+    return (p.type == EffectType::spring || p.type == EffectType::damper || p.type == EffectType::inertia ||
+            p.type == EffectType::friction) &&
+           p.direction.kind != DirectionKind::none;
+}
 
 }  // namespace feel

@@ -438,6 +438,9 @@ typedef struct feel_effect_params {
     feel_wall_block wall;                /* axis_wall, angle_wall */
     feel_barrier_block barrier;          /* axis_barrier, angle_barrier */
     feel_dynamic_block dynamic;          /* dynamic_* */
+    /* Grown at the end (docs/c-api.md, "ABI evolution"; it sits in what was the struct's tail
+     * padding, so sizeof is unchanged and a zeroed struct means "absolute", as before). */
+    int32_t barrier_offset_mode;   /* FEEL_OFFSET_*, axis_barrier and angle_barrier (§3.8) */
 } feel_effect_params;
 
 /* Fills *params (params->size must be set) with the defaults of an effect of `type`. */

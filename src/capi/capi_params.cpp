@@ -97,8 +97,15 @@ EffectParams to_cpp(const char* fn, const feel_effect_params& c) {
                        wall.surface_texture,
                        wall.clipping};
     const feel_barrier_block& b = c.barrier;
-    p.barrier = BarrierBlock{b.pos_hardness, b.neg_hardness, b.thickness, b.offset,
-                             b.angle, b.surface_friction, b.surface_texture};
+    p.barrier = BarrierBlock{b.pos_hardness,
+                             b.neg_hardness,
+                             b.thickness,
+                             b.offset,
+                             b.angle,
+                             b.surface_friction,
+                             b.surface_texture,
+                             enum_value<OffsetMode>(fn, "barrier_offset_mode", c.barrier_offset_mode,
+                                                    FEEL_OFFSET_RELATIVE)};
     const feel_dynamic_block& d = c.dynamic;
     DynamicBlock& pd = p.dynamic;
     pd.blast_direction = d.blast_direction;
@@ -175,6 +182,7 @@ feel_effect_params to_c(const EffectParams& p) noexcept {
     const BarrierBlock& b = p.barrier;
     c.barrier = feel_barrier_block{b.pos_hardness, b.neg_hardness, b.thickness, b.offset,
                              b.angle, b.surface_friction, b.surface_texture};
+    c.barrier_offset_mode = c_enum(b.offset_mode);
     const DynamicBlock& pd = p.dynamic;
     feel_dynamic_block& d = c.dynamic;
     d.blast_direction = pd.blast_direction;

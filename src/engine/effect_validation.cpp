@@ -22,6 +22,8 @@
 //   - cartesian gives one component per axis, for the translational axes x, y, z;
 //     moments gives one component per axis for the rotational axes rx, ry, rz (§6.5.d).
 //     Either vector must not be zero (it would name no direction).
+//   - spring, damper, inertia and friction on 2 or more axes may take a direction: then one
+//     block (conditions[0]) acts along it (is_directed_condition); without, one per axis.
 //   - Types whose block carries the angle (sweeps, angle_wall, angle_barrier, and the
 //     directional dynamics recoil, impact, paddle) play in the x-y plane on the axes x
 //     and y and take no separate direction: two sources of truth would disagree. Recoil
@@ -285,6 +287,29 @@ private:
     return in_range(at("deadband"), c.deadband, range::kLevel);
 }
 
+// A spring, damper, inertia or friction with a direction (§3.1): one block, conditions[0],
+// applied along the direction on 2 or more axes (DirectInput's single DICONDITION "in the
+// specified direction"). The blocks past the first are not read, so they must be left at
+// their defaults: a block given for an axis and silently ignored would be a lie.
+[[nodiscard]] Error check_directed_condition(const EffectParams& p) noexcept {
+    if (p.axis_count < 2) {
+        return Error::invalid("direction",
+                              "a condition on one axis acts along that axis and takes no direction; a "
+                              "direction applies one condition block along it on 2 or more axes");
+    }
+    if (Error e = check_direction_form(p)) return e;
+    if (Error e = check_condition_block(p.conditions[0], 0, p.type)) return e;
+    for (int i = 1; i < p.axis_count; ++i) {
+        if (!(p.conditions[i] == ConditionBlock{})) {
+            return Error::invalid(Path("conditions").index(i).view(),
+                                  "a condition with a direction has one block, conditions[0], applied "
+                                  "along the direction; leave the others at their defaults, or give "
+                                  "one block per axis and no direction");
+        }
+    }
+    return {};
+}
+
 [[nodiscard]] Error check_texture(const TextureBlock& t) noexcept {
     if (Error e = in_range("texture.pos_roughness", t.pos_roughness, range::kPositiveLevel)) return e;
     if (Error e = in_range("texture.neg_roughness", t.neg_roughness, range::kPositiveLevel)) return e;
@@ -317,6 +342,9 @@ private:
     if (Error e = in_range("barrier.neg_hardness", b.neg_hardness, range::kSignedLevel)) return e;
     if (Error e = in_range("barrier.thickness", b.thickness, range::kPositiveLevel)) return e;
     if (Error e = in_range("barrier.offset", b.offset, range::kSignedLevel)) return e;
+    if (b.offset_mode != OffsetMode::absolute && b.offset_mode != OffsetMode::relative) {
+        return Error::invalid("barrier.offset_mode", "the offset mode must be absolute or relative");
+    }
     if (angled) {
         if (Error e = in_range("barrier.angle", b.angle, range::kAngle)) return e;
     } else if (b.angle != 0) {
@@ -334,10 +362,7 @@ private:
         case EffectType::damper:
         case EffectType::inertia:
         case EffectType::friction:
-            if (Error e = no_direction(p, "spring, damper, inertia and friction act on each of "
-                                          "their axes separately and take no direction")) {
-                return e;
-            }
+            if (is_directed_condition(p)) return check_directed_condition(p);
             for (int i = 0; i < p.axis_count; ++i) {
                 if (Error e = check_condition_block(p.conditions[i], i, p.type)) return e;
             }

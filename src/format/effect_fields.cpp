@@ -147,6 +147,7 @@ constexpr FieldSpec kAxisBarrier[] = {
     field<InBarrier, &BarrierBlock::neg_hardness>("neg_hardness", kRequired),
     field<InBarrier, &BarrierBlock::thickness>("thickness", kRequired),
     field<InBarrier, &BarrierBlock::offset>("offset", kOptional),
+    field<InBarrier, &BarrierBlock::offset_mode>("offset_mode", kOptional, kOffsetModes),
     field<InBarrier, &BarrierBlock::surface_friction>("surface_friction", kOptional),
     field<InBarrier, &BarrierBlock::surface_texture>("surface_texture", kOptional),
 };
@@ -156,6 +157,7 @@ constexpr FieldSpec kAngleBarrier[] = {
     field<InBarrier, &BarrierBlock::neg_hardness>("neg_hardness", kRequired),
     field<InBarrier, &BarrierBlock::thickness>("thickness", kRequired),
     field<InBarrier, &BarrierBlock::offset>("offset", kOptional),
+    field<InBarrier, &BarrierBlock::offset_mode>("offset_mode", kOptional, kOffsetModes),
     field<InBarrier, &BarrierBlock::angle>("angle", kRequired),
     field<InBarrier, &BarrierBlock::surface_friction>("surface_friction", kOptional),
     field<InBarrier, &BarrierBlock::surface_texture>("surface_texture", kOptional),

@@ -379,11 +379,16 @@ private:
         if (layout.extra == BlockExtra::samples) read_samples(*b);
     }
 
-    // conditions: one object per axis (or one for angle_spring).
+    // conditions: one object per axis, or one applied along the direction when a spring,
+    // damper, inertia or friction has one (§3.1), or one for angle_spring.
     void read_block_array(const JsonValue& b, const BlockLayout& layout) {
         const std::string key(layout.key);
-        const size_t expected = layout.shape == BlockShape::per_axis ? static_cast<size_t>(p_.axis_count) : 1;
-        const char* what = layout.shape == BlockShape::per_axis ? " (one per axis)" : " (one for the whole plane)";
+        const bool per_axis = layout.shape == BlockShape::per_axis && !is_directed_condition(p_);
+        const size_t expected = per_axis ? static_cast<size_t>(p_.axis_count) : 1;
+        const char* what = per_axis ? " (one per axis)"
+                           : layout.shape == BlockShape::per_axis
+                               ? " (with a direction, one block applied along it; per-axis blocks take no direction)"
+                               : " (one for the whole plane)";
         if (!b.is_array()) {
             where_.fail(key, "expected an array of " + std::to_string(expected) + " blocks" + what + ", found " +
                                  describe(b));

@@ -113,7 +113,8 @@ private:
         const BlockLayout layout = detail::block_layout(p_.type);
         const std::string key(layout.key);
         if (layout.shape != BlockShape::object) {
-            const int blocks = layout.shape == BlockShape::per_axis ? p_.axis_count : 1;
+            const int blocks =
+                layout.shape == BlockShape::per_axis && !is_directed_condition(p_) ? p_.axis_count : 1;
             Json a = Json::array();
             for (int i = 0; i < blocks; ++i) a.push_back(fields(layout.fields, i, "/" + key + "/" + std::to_string(i)));
             j[key] = std::move(a);

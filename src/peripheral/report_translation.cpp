@@ -346,10 +346,14 @@ std::optional<Refusal> check_blocks_complete(const Block& block, const EffectPar
     if (t == EffectType::angle_spring) {
         if ((a.conditions & 1u) == 0) return missing(index, t, "set_condition", "Set Condition (axis 0)");
     } else if (is_condition_with_blocks(t)) {
+        // One Set Condition (axis 0) and a direction on 2 or more axes: the condition with a
+        // direction (§3.1), its block applied along it.
+        if (is_directed_condition(next) && axes >= 2 && a.conditions == 1u) return std::nullopt;
         for (int i = 0; i < axes; ++i) {
             if ((a.conditions & (1u << i)) == 0) {
                 return missing(index, t, "set_condition",
-                               "Set Condition for axis " + std::to_string(i) + " (one per axis of the effect)");
+                               "Set Condition for axis " + std::to_string(i) +
+                                   " (one per axis of the effect; or axis 0's alone, with a direction)");
             }
         }
     } else if (is_periodic(t) || is_sweep(t)) {

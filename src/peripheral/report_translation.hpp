@@ -76,8 +76,10 @@ void apply_set_effect(const protocol::SetEffectReport& report, EffectParams& par
 // Condition per axis, the effect ignores its direction, which applies only to one block
 // given for several axes. hid-pidff always sends Direction Enable with a direction and
 // one block per axis; this drops that direction from `params` when every axis of the
-// effect has its block (`conditions_arrived`: bit i for axis i). feel's own effects take
-// no direction on conditions (the engine refuses one): the rule only reads the wire.
+// effect has its block (`conditions_arrived`: bit i for axis i). The other form, one Set
+// Condition (axis 0) with a direction on 2 or more axes, keeps its direction: it is the
+// condition with a direction (§3.1), its one block applied along the direction, as feel's
+// own host sends it (check_blocks_complete accepts it).
 void ignore_direction_of_per_axis_conditions(EffectType type, uint8_t conditions_arrived,
                                              EffectParams& params) noexcept;
 

@@ -120,6 +120,12 @@ void append_type_blocks(std::vector<AnyReport>& out, const EffectParams& p, std:
         case EffectType::damper:
         case EffectType::inertia:
         case EffectType::friction:
+            // With a direction, one block applied along it (§3.1): only axis 0's Set Condition
+            // goes, and the device reads the missing ones as that form (docs/protocol.md).
+            if (is_directed_condition(p)) {
+                out.emplace_back(condition_report(p.conditions[0], block, 0));
+                return;
+            }
             for (int i = 0; i < p.axis_count; ++i) out.emplace_back(condition_report(p.conditions[i], block, i));
             return;
         case EffectType::angle_spring:  // one condition along its angle

@@ -50,6 +50,7 @@ constexpr FieldSpec kSetBarrier[] = {
     FEEL_FIELD(SetBarrierReport, barrier.neg_hardness, i16(vendor::kNegHardness, range::kSignedLevel)),
     FEEL_FIELD(SetBarrierReport, barrier.thickness, u16(vendor::kThickness, range::kPositiveLevel)),
     FEEL_FIELD(SetBarrierReport, barrier.offset, i16(vendor::kWallOffset, range::kSignedLevel)),
+    FEEL_FIELD(SetBarrierReport, barrier.offset_mode, u8(vendor::kOffsetMode, kBinary)),
     FEEL_FIELD(SetBarrierReport, barrier.angle,
                u16(vendor::kAngle, range::kAngle).in(FieldUnit::centidegrees)),
     FEEL_FIELD(SetBarrierReport, barrier.surface_friction, u16(vendor::kSurfaceFriction, range::kLevel)),

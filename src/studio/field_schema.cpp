@@ -206,6 +206,12 @@ json describe_fields(const format::SensationFile& starters) {
                   {"envelope", supports_envelope(type)},
                   {"samples", layout.extra == format::detail::BlockExtra::samples},
                   {"fields", fields}};
+        if (layout.shape == format::detail::BlockShape::per_axis) {
+            // With a direction, one block applied along it (§3.1, is_directed_condition).
+            EffectParams directed = starter->params;
+            directed.direction.kind = DirectionKind::cartesian;
+            t["one_block_with_direction"] = is_directed_condition(directed);
+        }
         if (layout.extra == format::detail::BlockExtra::control_law) {
             json law = json::array();
             for (const FieldSpec& f : format::detail::control_law_fields()) {

@@ -164,6 +164,29 @@ static void test_params(void) {
     CHECK(feel_effect_status(spring, &status) == FEEL_OK && status.state == FEEL_STATE_PLAYING,
           "without restart it plays on");
 
+    /* A barrier's Offset-Flag (§3.8, "same as the wall"): the field grown at the struct's end
+     * goes in and comes back; a value past FEEL_OFFSET_RELATIVE is refused, naming it. */
+    feel_effect_params bp;
+    FEEL_INIT(bp);
+    CHECK(feel_effect_params_init(&bp, FEEL_TYPE_AXIS_BARRIER) == FEEL_OK && bp.barrier_offset_mode == FEEL_OFFSET_ABSOLUTE,
+          "feel_effect_params_init(AXIS_BARRIER): absolute by default");
+    bp.barrier.pos_hardness = 5000;
+    bp.barrier.neg_hardness = 5000;
+    bp.barrier.thickness = 300;
+    bp.barrier_offset_mode = 7;
+    CHECK(feel_create_effect(dev, &bp, NULL, 0) == NULL && strstr(feel_last_error_message(), "barrier_offset_mode") != NULL,
+          "barrier_offset_mode 7 refused: %s", feel_last_error_message());
+    bp.barrier_offset_mode = FEEL_OFFSET_RELATIVE;
+    feel_effect* barrier = feel_create_effect(dev, &bp, NULL, 0);
+    CHECK(barrier != NULL, "feel_create_effect(relative barrier): %s", barrier ? "created" : feel_last_error_message());
+    if (barrier) {
+        feel_effect_params back;
+        FEEL_INIT(back);
+        CHECK(feel_effect_get_parameters(barrier, &back) == FEEL_OK && back.barrier_offset_mode == FEEL_OFFSET_RELATIVE,
+              "get_parameters: barrier_offset_mode = %d (relative)", back.barrier_offset_mode);
+        feel_effect_destroy(barrier);
+    }
+
     change.gain = 2500;
     CHECK(feel_effect_set_parameters(spring, &change, FEEL_FIELD_GAIN, false, NULL, 0) == FEEL_OK,
           "set_parameters(GAIN = 2500)");

@@ -445,8 +445,24 @@ TEST(EffectValidation, ConditionRanges) {
 
 TEST(EffectValidation, ConditionRules) {
     const RuleCase cases[] = {
-        {"spring takes no direction", EffectType::spring, [](auto& p) { p.direction = {DirectionKind::polar, {0, 0, 0}}; },
-         "direction", "no direction"},
+        // §3.1 "for multi-axis conditions, you can define a direction": one block along it.
+        {"condition on one axis with a direction", EffectType::damper,
+         [](auto& p) { set_axes(p, {Axis::x}); p.direction = {DirectionKind::cartesian, {1, 0, 0}}; },
+         "direction", "on one axis acts along that axis"},
+        {"directed spring with a second block", EffectType::spring,
+         [](auto& p) { p.direction = {DirectionKind::polar, {0, 0, 0}}; p.conditions[1].pos_coefficient = 1000; },
+         "conditions[1]", "one block, conditions[0]"},
+        {"directed friction with a direction that does not fit", EffectType::friction,
+         [](auto& p) { p.direction = {DirectionKind::spherical, {0, 9000, 0}}; }, "direction.spherical", "x, y and z"},
+        {"relative offset on a directed damper", EffectType::damper,
+         [](auto& p) {
+             p.direction = {DirectionKind::polar, {0, 0, 0}};
+             p.conditions[0].offset_mode = OffsetMode::relative;
+             p.conditions[1] = {};
+         },
+         "conditions[0].offset_mode", "only springs"},
+        {"barrier offset mode", EffectType::axis_barrier, [](auto& p) { p.barrier.offset_mode = static_cast<OffsetMode>(2); },
+         "barrier.offset_mode", "absolute or relative"},
         {"angle spring on one axis", EffectType::angle_spring, [](auto& p) { set_axes(p, {Axis::x}); }, "axes", "x and y"},
         {"angle spring without its angle", EffectType::angle_spring, [](auto& p) { p.direction.kind = DirectionKind::none; },
          "direction", "polar direction"},
@@ -478,6 +494,20 @@ TEST(EffectValidation, ConditionRules) {
          "wall.offset_mode", "absolute or relative"},
     };
     for (const RuleCase& c : cases) expect_rule_error(c);
+
+    for (EffectType t : {EffectType::spring, EffectType::damper, EffectType::inertia, EffectType::friction}) {
+        EffectParams directed = valid(t);  // one block along the direction, the others left alone
+        set_axes(directed, {Axis::x, Axis::y, Axis::z});
+        directed.direction = {DirectionKind::spherical, {4500, 6000, 0}};
+        directed.conditions[1] = {};
+        directed.conditions[2] = {};
+        EXPECT_TRUE(check(directed).ok()) << effect_type_name(t) << ": " << check(directed).message();
+        directed.direction = {DirectionKind::cartesian, {3, -4, 1}};
+        EXPECT_TRUE(check(directed).ok()) << effect_type_name(t) << ": " << check(directed).message();
+    }
+    EffectParams relative_barrier = valid(EffectType::angle_barrier);  // §3.8 "same as the wall"
+    relative_barrier.barrier.offset_mode = OffsetMode::relative;
+    EXPECT_TRUE(check(relative_barrier).ok()) << check(relative_barrier).message();
 
     EffectParams texture = valid(EffectType::texture);  // §7.5: a texture on x, y felt along polar 0
     set_axes(texture, {Axis::x, Axis::y});

@@ -167,6 +167,28 @@ TEST(SensationBlocks, Barriers) {
     EXPECT_EQ(x.barrier.pos_hardness, 1);
     EXPECT_EQ(x.barrier.neg_hardness, 2);
     EXPECT_EQ(x.barrier.thickness, 3);
+    EXPECT_EQ(x.barrier.offset_mode, OffsetMode::absolute);  // default
+
+    // §3.8: "The Offset-Flag ... same as the wall".
+    const EffectParams r = params_of(file_with(R"({"type": "axis_barrier", "duration_us": "infinite", "axes": ["x"],
+        "barrier": {"pos_hardness": 1, "neg_hardness": 2, "thickness": 3, "offset": 1500, "offset_mode": "relative"}})"));
+    EXPECT_EQ(r.barrier.offset, 1500);
+    EXPECT_EQ(r.barrier.offset_mode, OffsetMode::relative);
+}
+
+TEST(SensationBlocks, AConditionWithADirectionHasOneBlock) {
+    // §3.1 "for multi-axis conditions, you can define a direction": one block applied along it.
+    const EffectParams p = params_of(file_with(R"({"type": "damper", "duration_us": "infinite", "axes": ["x", "y", "z"],
+        "direction": {"spherical": [4500, 6000]},
+        "conditions": [{"pos_coefficient": 7000, "neg_coefficient": 3000, "deadband": 40}]})"));
+    EXPECT_EQ(p.direction.kind, DirectionKind::spherical);
+    EXPECT_EQ(p.direction.value[0], 4500);
+    EXPECT_EQ(p.direction.value[1], 6000);
+    EXPECT_EQ(p.conditions[0].pos_coefficient, 7000);
+    EXPECT_EQ(p.conditions[0].neg_coefficient, 3000);
+    EXPECT_EQ(p.conditions[0].deadband, 40);
+    EXPECT_EQ(p.conditions[1], ConditionBlock{});  // not read: left at its defaults
+    EXPECT_EQ(p.conditions[2], ConditionBlock{});
 }
 
 TEST(SensationBlocks, SweepFields) {

@@ -379,7 +379,14 @@ TEST(SensationFileErrors, AFieldOfASiblingTypeNamesTheTypesThatHaveIt) {
     const std::string barrier = R"({"type": "axis_barrier", "duration_us": 1, "axes": ["x"], "barrier": {
         "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "clipping": true}})";
     EXPECT_EQ(error_of(file_with(barrier)),
-              R"(bad.json: sensation "hum": barrier: unknown field "clipping" (axis_wall and angle_wall have it; allowed here: pos_hardness, neg_hardness, thickness, offset, surface_friction, surface_texture))");
+              R"(bad.json: sensation "hum": barrier: unknown field "clipping" (axis_wall and angle_wall have it; allowed here: pos_hardness, neg_hardness, thickness, offset, offset_mode, surface_friction, surface_texture))");
+    // The wall's sense is the wall's alone; its offset_mode is the barrier's too (§3.8).
+    EXPECT_THAT(error_of(file_with(R"({"type": "angle_barrier", "duration_us": 1, "axes": ["x", "y"], "barrier": {
+        "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "angle": 0, "sense": "positive"}})")),
+                HasSubstr(R"(barrier: unknown field "sense" (axis_wall and angle_wall have it; allowed here: )"));
+    EXPECT_EQ(params_of(file_with(R"({"type": "axis_barrier", "duration_us": 1, "axes": ["x"], "barrier": {
+        "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "offset_mode": "relative"}})")).barrier.offset_mode,
+              OffsetMode::relative);
     // A sweep's sense in a plain sine: the five sweeps (§4.2.d) have it.
     EXPECT_THAT(error_of(sine_with("", R"("magnitude": 2000, "period_us": 10000, "sweep_sense": "clockwise")")),
                 HasSubstr(R"(periodic: unknown field "sweep_sense" (sweep_sine, sweep_square, sweep_triangle, sweep_saw_up and sweep_saw_down have it; allowed here: )"));
@@ -387,6 +394,19 @@ TEST(SensationFileErrors, AFieldOfASiblingTypeNamesTheTypesThatHaveIt) {
     EXPECT_THAT(error_of(file_with(R"({"type": "axis_barrier", "duration_us": 1, "axes": ["x"], "barrier": {
         "pos_hardness": 1, "neg_hardness": 1, "thickness": 10, "softness": 1}})")),
                 HasSubstr(R"(barrier: unknown field "softness" (allowed here: )"));
+}
+
+TEST(SensationFileErrors, AConditionWithADirectionTakesOneBlock) {
+    // §3.1: with a direction, one block applied along it; a block per axis takes no direction.
+    EXPECT_EQ(error_of(file_with(R"({"type": "spring", "duration_us": 1, "axes": ["x", "y"], "direction": {"polar": 0},
+        "conditions": [{"pos_coefficient": 1, "neg_coefficient": 1}, {"pos_coefficient": 1, "neg_coefficient": 1}]})")),
+              R"(bad.json: sensation "hum": conditions: found 2 blocks, expected 1 (with a direction, one block applied along it; per-axis blocks take no direction))");
+    EXPECT_EQ(error_of(file_with(R"({"type": "friction", "duration_us": 1, "axes": ["x"], "direction": {"cartesian": [1]},
+        "conditions": [{"pos_coefficient": 1, "neg_coefficient": 1}]})")),
+              R"(bad.json: sensation "hum": direction: a condition on one axis acts along that axis and takes no direction; a direction applies one condition block along it on 2 or more axes)");
+    EXPECT_EQ(error_of(file_with(R"({"type": "inertia", "duration_us": 1, "axes": ["x", "y"], "direction": {"spherical": [0, 0]},
+        "conditions": [{"pos_coefficient": 1, "neg_coefficient": 1}]})")),
+              R"(bad.json: sensation "hum": direction.spherical: a spherical direction needs the axes x, y and z (§6.5.c))");
 }
 
 TEST(SensationFileErrors, AxisWallHasNoAngle) {

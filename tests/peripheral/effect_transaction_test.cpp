@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "feel/protocol/descriptor_parser.hpp"
 #include "session_rig.hpp"
@@ -307,6 +308,36 @@ TEST(EffectTransaction, EveryTypeArrivesInTheEngineExactlyAsSent) {
         rig.ok(f);
     }
     EXPECT_EQ(rig.pipeline().resident_effects(), 0);
+}
+
+TEST(EffectTransaction, TheNewFormsArriveExactlyAsSent) {
+    // A condition with a direction (§3.1: one Set Condition, axis 0, and the direction) and
+    // a barrier with a relative offset (§3.8) make the very EffectParams they came from.
+    SessionRig rig;
+    std::vector<EffectParams> forms;
+    for (EffectType t : {EffectType::spring, EffectType::damper, EffectType::inertia, EffectType::friction}) {
+        EffectParams p = feel::test::valid_effect(t);  // x and y
+        p.direction = {DirectionKind::cartesian, {3, -4, 0}};
+        p.conditions[1] = {};
+        forms.push_back(p);
+    }
+    EffectParams barrier = feel::test::valid_effect(EffectType::angle_barrier);
+    barrier.barrier.offset_mode = OffsetMode::relative;
+    forms.push_back(barrier);
+    for (const EffectParams& p : forms) {
+        SCOPED_TRACE(effect_type_name(p.type));
+        const uint16_t block = download(rig, p, {});
+        ASSERT_NE(block, 0);
+        const auto view = rig.session().block(block);
+        ASSERT_TRUE(view && view->committed);
+        EffectParams engine;
+        ASSERT_TRUE(rig.pipeline().engine().params(view->effect, engine).ok());
+        EXPECT_EQ(engine, p);
+        protocol::BlockFreeReport f;
+        f.sequence = rig.next_sequence();
+        f.block = block;
+        rig.ok(f);
+    }
 }
 
 TEST(EffectTransaction, DynamicsReportTheirMassByBlock) {

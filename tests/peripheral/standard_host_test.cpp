@@ -5,6 +5,7 @@
 // Direction Enable with a polar direction on every effect.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -50,14 +51,38 @@ TEST(StandardHost, ConditionWithABlockPerAxisIgnoresTheDirection) {
     EXPECT_NEAR(rig.pipeline().motor_force()[1], -ky * y / 10000.0, 1e-3);
 }
 
-// One block for several axes is where a direction would apply; feel takes one per axis.
-TEST(StandardHost, ConditionWithOneBlockForTwoAxesIsRefusedNamingTheMissingBlock) {
+// The other form of DirectInput's rule: one block for several axes, with a direction, is
+// the condition with a direction (§3.1), its block applied along it. A spring of stiffness
+// k along compass 3000 (u = (sin 30°, cos 30°)), held at (5000, -3000): s = x·u, and the
+// force is -k·s/10000 along u (§3.2), nothing across it.
+TEST(StandardHost, ConditionWithOneBlockAndADirectionActsAlongTheDirection) {
+    SessionRig rig("iforce2", "hold:5000,-3000", sim::Grip::kinematic);
+    const uint16_t block = rig.create(EffectType::spring);
+    ASSERT_NE(block, 0);
+    constexpr int16_t k = 4000;
+    rig.ok(spring_axis(rig.next_sequence(), block, 0, k));
+    rig.ok(pidff_set_effect(rig.next_sequence(), block, EffectType::spring, 3000));
+    rig.ok(operation(rig.next_sequence(), block, EffectOperation::start, 1));
+    rig.run(20);
+
+    const double x = rig.pipeline().last_input().position[0];
+    const double y = rig.pipeline().last_input().position[1];
+    const double ux = 0.5, uy = std::sqrt(3.0) / 2;
+    const double f = -k * (x * ux + y * uy) / 10000.0;
+    EXPECT_NEAR(rig.pipeline().motor_force()[0], f * ux, 1e-2);
+    EXPECT_NEAR(rig.pipeline().motor_force()[1], f * uy, 1e-2);
+}
+
+// One block for two axes without a direction is neither form: refused, naming the block.
+TEST(StandardHost, ConditionWithOneBlockForTwoAxesAndNoDirectionIsRefusedNamingTheMissingBlock) {
     SessionRig rig("iforce2");
     const uint16_t block = rig.create(EffectType::damper);
     ASSERT_NE(block, 0);
     rig.ok(spring_axis(rig.next_sequence(), block, 0, 1000));
-    const protocol::CommandAnswer s =
-        rig.command(pidff_set_effect(rig.next_sequence(), block, EffectType::damper, 9000));
+    protocol::SetEffectReport r = pidff_set_effect(rig.next_sequence(), block, EffectType::damper, 9000);
+    r.direction_kind = DirectionKind::none;
+    r.direction[0] = 0;
+    const protocol::CommandAnswer s = rig.command(r);
     EXPECT_EQ(s.code, ErrorCode::invalid_parameter);
     EXPECT_STREQ(s.field, "set_condition");
     EXPECT_NE(std::string(s.rule).find("axis 1"), std::string::npos) << s.rule;

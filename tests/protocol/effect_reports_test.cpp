@@ -52,6 +52,19 @@ TEST(EffectReports, OneConditionBlockPerAxis) {
     }
 }
 
+TEST(EffectReports, AConditionWithADirectionSendsItsOneBlock) {
+    // §3.1: one block applied along the direction, so one Set Condition (axis 0).
+    EffectParams p = feel::test::valid_effect(EffectType::friction);  // x and y
+    p.direction = {DirectionKind::polar, {4500, 0, 0}};
+    p.conditions[1] = {};
+    const auto reports = parameter_block_reports(p, {}, 3, true, true);
+    ASSERT_EQ(reports.size(), 1u);
+    const auto& c = std::get<SetConditionReport>(reports[0]);
+    EXPECT_EQ(c.axis_index, 0);
+    EXPECT_EQ(c.pos_coefficient, 1000);
+    EXPECT_EQ(set_effect_report(p, 3).direction_kind, DirectionKind::polar);
+}
+
 TEST(EffectReports, ForceProfileSamplesGoInChunksBeforeSetCustomForce) {
     EffectParams p;
     p.type = EffectType::force_profile;

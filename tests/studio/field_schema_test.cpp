@@ -98,5 +98,22 @@ TEST(FieldSchema, DirectionFormsAreThePrimers) {
     EXPECT_FALSE(field(d, "sine", "magnitude").contains("scale"));
 }
 
+TEST(FieldSchema, TheFormsOfIssue16Section3AreDescribed) {
+    const json d = describe();
+    // §3.8: a barrier's Offset-Flag, "same as the wall".
+    for (std::string_view type : {"axis_barrier", "angle_barrier"}) {
+        const json& f = field(d, type, "offset_mode");
+        EXPECT_EQ(f["kind"], "choice") << type;
+        EXPECT_EQ(f["choices"], json::array({"absolute", "relative"})) << type;
+    }
+    // §3.1: spring, damper, inertia and friction take one block along a direction; the
+    // angle_spring always has one block, the texture no condition blocks at all.
+    for (const json& t : d["types"]) {
+        const std::string type = t["type"];
+        const bool directed = type == "spring" || type == "damper" || type == "inertia" || type == "friction";
+        EXPECT_EQ(t.value("one_block_with_direction", false), directed) << type;
+    }
+}
+
 }  // namespace
 }  // namespace feel::studio

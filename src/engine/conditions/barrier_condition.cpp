@@ -1,8 +1,14 @@
 // Barriers (§3.8, §6.6.g): axis_barrier and angle_barrier, a two-sided penetrable surface.
 //
 // Geometry (contact_surface.hpp): s = position·u; the barrier is a slab of the given
-// thickness t centered on s = offset (§8.2: "location of center of barrier"), with faces
-// at offset − t/2 and offset + t/2. ContactState remembers two things:
+// thickness t centered on s = c (§8.2: "location of center of barrier"), with faces at
+// c − t/2 and c + t/2, where, as for the wall (§3.8: the Offset-Flag is "same as the wall"),
+//
+//     c = offset                         offset_mode absolute (from the center of travel)
+//     c = start_position·u + offset      offset_mode relative (from where the handle was
+//                                        when the effect began playing)
+//
+// ContactState remembers two things:
 //
 //     side      which side of the center the handle is on, −1 or +1;
 //     crossing  while the handle is inside the slab, the direction it entered in: +1 if
@@ -52,11 +58,12 @@ struct Face {
     double surface = 0;  // the face's coordinate along u
 };
 
-Face face_of(const BarrierBlock& barrier, const EngineConfig& config, int side, int crossing) noexcept {
+Face face_of(const BarrierBlock& barrier, double center, const EngineConfig& config, int side,
+             int crossing) noexcept {
     const double half = 0.5 * barrier.thickness;
     const double k = element_stiffness(config, crossing > 0 ? barrier.pos_hardness : barrier.neg_hardness);
-    if (side < 0) return {k, 1.0, barrier.offset - half};
-    return {k, -1.0, barrier.offset + half};
+    if (side < 0) return {k, 1.0, center - half};
+    return {k, -1.0, center + half};
 }
 
 double face_depth(const Face& f, double s) noexcept { return f.into * (s - f.surface); }
@@ -68,7 +75,8 @@ void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
     const BarrierBlock& barrier = c.params->barrier;
     const ContactFrame frame = element_contact_frame(c, barrier.angle);
     const double s = dot(frame.u, c.position);
-    const double center = barrier.offset;
+    const double center =
+        barrier.offset + (barrier.offset_mode == OffsetMode::relative ? dot(frame.u, c.start_position) : 0.0);
 
     ContactState& state = c.state->contact;
     if (state.side == 0) state.side = s >= center ? 1 : -1;
@@ -84,13 +92,13 @@ void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
     // The ideal energy change since the last tick: the tent of the crossing, split at the
     // center if the handle popped through. Outside the slab the tent is zero whatever its
     // hardness, so a new crossing's hardness changes nothing that was stored.
-    const Face face = face_of(barrier, *c.config, state.side, crossing);
-    const Face before = face_of(barrier, *c.config, previous_side, previous_crossing);
+    const Face face = face_of(barrier, center, *c.config, state.side, crossing);
+    const Face before = face_of(barrier, center, *c.config, previous_side, previous_crossing);
     double ideal_energy_change = 0;
     if (state.side == previous_side) {
         ideal_energy_change = face_energy(face, s) - face_energy(before, state.coordinate);
     } else {
-        const Face before_at_center = face_of(barrier, *c.config, previous_side, crossing);
+        const Face before_at_center = face_of(barrier, center, *c.config, previous_side, crossing);
         ideal_energy_change = (face_energy(before_at_center, center) - face_energy(before, state.coordinate)) +
                               (face_energy(face, s) - face_energy(face, center));
     }

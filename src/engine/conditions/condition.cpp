@@ -3,7 +3,26 @@
 
 namespace feel::detail {
 
+namespace {
+
+// The 1-D law of each condition family that can take a direction.
+using Law = void (*)(const ConditionContext&, double*);
+Law directed_law(EffectType type) noexcept {
+    switch (type) {
+        case EffectType::spring: return spring_condition;
+        case EffectType::damper: return damper_condition;
+        case EffectType::inertia: return inertia_condition;
+        default: return friction_condition;  // is_directed_condition: the four above
+    }
+}
+
+}  // namespace
+
 void render_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+    if (is_directed_condition(*c.params)) {
+        directed_condition(c, directed_law(c.params->type), force);
+        return;
+    }
     switch (c.params->type) {
         case EffectType::spring:
         case EffectType::angle_spring: spring_condition(c, force); return;

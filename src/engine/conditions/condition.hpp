@@ -47,4 +47,9 @@ void texture_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
 void wall_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;     // axis_wall, angle_wall
 void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;  // axis_barrier, angle_barrier
 
+// A spring, damper, inertia or friction with a direction (is_directed_condition): `law`, the
+// family's function, rendered on the line of the direction and applied along it.
+void directed_condition(const ConditionContext& c, void (*law)(const ConditionContext&, double*),
+                        double force[kMaxAxes]) noexcept;
+
 }  // namespace feel::detail

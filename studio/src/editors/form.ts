@@ -31,6 +31,7 @@ export interface TypeInfo {
   class: string;
   block: string;
   shape: 'object' | 'per_axis' | 'one_block';
+  one_block_with_direction?: boolean; // per_axis: given a direction, one block applied along it
   envelope: boolean;
   samples: boolean;
   fields: FieldInfo[];
@@ -295,9 +296,10 @@ export function formEditor(root: HTMLElement, store: Store) {
         }
       } else {
         const blocks = (fx[info.block] as Record<string, unknown>[]) ?? [];
-        const count = info.shape === 'one_block' ? 1 : Math.max(1, axes.length);
+        const single = info.shape === 'one_block' || (info.one_block_with_direction === true && fx.direction !== undefined);
+        const count = single ? 1 : Math.max(1, axes.length);
         for (let a = 0; a < count; ++a) {
-          rows.push(h('h5', {}, info.shape === 'one_block' ? `${info.block}[0]` : `${info.block}[${a}] (${axes[a] ?? '?'})`));
+          rows.push(h('h5', {}, single ? `${info.block}[0]${info.shape === 'per_axis' ? ' (along the direction)' : ''}` : `${info.block}[${a}] (${axes[a] ?? '?'})`));
           for (const f of info.fields) {
             rows.push(fieldRow(`${info.block}[${a}].${f.name}`, f, () => blocks[a]?.[f.name], setIn((e) => {
               const list = (e[info.block] as Record<string, unknown>[]) ?? [];

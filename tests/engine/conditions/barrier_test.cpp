@@ -172,5 +172,45 @@ TEST_F(BarrierTest, PassivityControllerLeavesASlowCrossingExactlyAlone) {
     }
 }
 
+// §3.8: "The Offset-Flag ... same as the wall": with a relative offset the barrier's center
+// is measured from where the handle is when the effect starts (along u), as the wall's
+// surface is (§3.7), and every restart takes the new position.
+TEST_F(BarrierTest, ARelativeOffsetCentersTheBarrierFromTheStartPosition) {
+    EffectParams p = axis_barrier(Axis::x, 10000, 10000, 300, 500);
+    p.barrier.offset_mode = OffsetMode::relative;
+    const EffectId id = play(p);
+    const double start = -2000;  // center at -2000 + 500 = -1500, faces at -1650 and -1350
+    at(start);
+    for (double x = start; x <= -1000; x += 4) {
+        const TickOutput out = at(x);
+        ASSERT_NEAR(out.force[0], barrier_force(x, x > -1500 ? 1 : -1, kWallK, 300, -1500), kContactTolerance)
+            << "x=" << x;
+    }
+    // Restarted at 3000: center 3500, the old place is free space now.
+    ASSERT_TRUE(engine_->start(id).ok());
+    at(3000);
+    EXPECT_NEAR(at(-1500 + 100).force[0], 0, 1e-9);
+    EXPECT_NEAR(at(3400).force[0], barrier_force(3400, -1, kWallK, 300, 3500), kContactTolerance);
+}
+
+TEST_F(BarrierTest, ARelativeAngleBarrierIsCenteredOnTheStartPositionAlongItsAngle) {
+    const int32_t angle = 12000;
+    const double ux = compass_x(angle), uy = compass_y(angle);
+    EffectParams p = angle_barrier(angle, 6000, 9000, 400, 300);
+    p.barrier.offset_mode = OffsetMode::relative;
+    play(p);
+    const double x0 = 1200, y0 = -800;  // s0 = x0·ux + y0·uy; the center is s0 + 300
+    const double s0 = x0 * ux + y0 * uy;
+    at(x0, y0);
+    const double k_pos = 0.6 * kWallK;
+    for (double d = 0; d <= 1100; d += 4) {  // from the start along +u, with a sideways offset
+        const double s = s0 + d;
+        const TickOutput out = at(x0 + d * ux - 250 * uy, y0 + d * uy + 250 * ux);
+        const double f = barrier_force(s, s > s0 + 300 ? 1 : -1, k_pos, 400, s0 + 300);
+        ASSERT_NEAR(out.force[0], f * ux, 0.05) << "d=" << d;
+        ASSERT_NEAR(out.force[1], f * uy, 0.05) << "d=" << d;
+    }
+}
+
 }  // namespace
 }  // namespace feel::test::contact
