@@ -239,6 +239,7 @@ Status DeviceCore::send_unanswered(AnyReport report) {
 
 std::shared_ptr<EffectRecord> DeviceCore::add_record(EffectParams params, std::vector<int16_t> samples) {
     auto record = std::make_shared<EffectRecord>();
+    record->type = params.type;
     record->params = params;
     record->samples = std::move(samples);
     std::lock_guard lock(mu);

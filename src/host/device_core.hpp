@@ -51,6 +51,9 @@ using Clock = std::chrono::steady_clock;
 // What the host keeps of one effect it created (Effect points at it).
 struct EffectRecord {
     uint64_t key = 0;                 // the core's name for it, never reused
+    // The type, apart from params: it never changes, so Effect::type() reads it on any thread
+    // without mu while a CommandQueue's thread rewrites params (ThreadSanitizer's finding).
+    EffectType type = EffectType::constant;
     EffectParams params{};            // as the game gave them (trigger included)
     std::vector<int16_t> samples;     // force_profile only
     uint16_t block = 0;               // the device's block while downloaded, else 0

@@ -57,7 +57,7 @@ bool Effect::downloaded() const noexcept {
     return !record_->closed && record_->block != 0;
 }
 
-EffectType Effect::type() const noexcept { return record_ ? record_->params.type : EffectType::constant; }
+EffectType Effect::type() const noexcept { return record_ ? record_->type : EffectType::constant; }
 
 const EffectParams& Effect::parameters() const noexcept {
     static const EffectParams kNone{};
@@ -104,7 +104,7 @@ Live live_block(DeviceCore& core, EffectRecord& record, const std::string& what)
 
 Status Effect::download() {
     if (!core_ || !record_) return empty_effect("download");
-    const std::string what = "download " + effect_label(record_->params.type);
+    const std::string what = "download " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
     {
         std::lock_guard lock(core_->mu);
@@ -117,7 +117,7 @@ Status Effect::download() {
 
 Status Effect::unload() {
     if (!core_ || !record_) return empty_effect("unload");
-    const std::string what = "unload " + effect_label(record_->params.type);
+    const std::string what = "unload " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
     uint16_t block = 0;
     {
@@ -141,7 +141,7 @@ Status Effect::unload() {
 
 Status Effect::start(int32_t iterations, bool solo) {
     if (!core_ || !record_) return empty_effect("start");
-    const std::string what = "start " + effect_label(record_->params.type);
+    const std::string what = "start " + effect_label(record_->type);
     if (iterations != runtime::kEffectIterations && iterations != kInfiniteIterations &&
         !(iterations >= range::kIterations.min && iterations <= range::kIterations.max)) {
         const Error e = Error::out_of_range("iterations", iterations, range::kIterations);
@@ -167,7 +167,7 @@ Status Effect::start(int32_t iterations, bool solo) {
 
 Status Effect::stop() {
     if (!core_ || !record_) return empty_effect("stop");
-    const std::string what = "stop " + effect_label(record_->params.type);
+    const std::string what = "stop " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
     const Live live = live_block(*core_, *record_, what);
     if (!live.status.ok()) return live.status;
@@ -184,7 +184,7 @@ Status Effect::stop() {
 
 Result<EffectStatusInfo> Effect::status() {
     if (!core_ || !record_) return empty_effect("status");
-    const std::string what = "status of " + effect_label(record_->params.type);
+    const std::string what = "status of " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
     const Live live = live_block(*core_, *record_, what);
     if (!live.status.ok()) return live.status;
@@ -224,17 +224,17 @@ Result<EffectStatusInfo> Effect::status() {
 Status Effect::set_parameters(const EffectParams& params, uint32_t field_mask, bool restart,
                               std::span<const int16_t> samples) {
     if (!core_ || !record_) return empty_effect("set_parameters");
-    const std::string what = "set_parameters of " + effect_label(record_->params.type);
+    const std::string what = "set_parameters of " + effect_label(record_->type);
     if ((field_mask & ~effect_field::kAll) != 0) {
         const Error e = Error::out_of_range("field_mask", field_mask, {0, effect_field::kAll});
         return Status::failure(ErrorKind::invalid_parameter,
                                what + ": " + e.message() + ": bits beyond effect_field::kAll name no field", e);
     }
-    if (params.type != record_->params.type) {
+    if (params.type != record_->type) {
         const Error e = Error::invalid("type", "an effect's type never changes: create another effect");
         return Status::failure(ErrorKind::invalid_parameter,
                                what + ": type = " + effect_label(params.type) + " differs from the effect's " +
-                                   effect_label(record_->params.type) + ": an effect's type never changes",
+                                   effect_label(record_->type) + ": an effect's type never changes",
                                e);
     }
     std::lock_guard call(core_->call_mu);
