@@ -74,6 +74,8 @@ fuzz: deps
 # that compiles fastest under the sanitizers. Warnings are the plain build's job, so no
 # -Werror here. Every finding stops its test (halt_on_error); leak reports go through
 # scripts/lsan.supp (third-party leaks only, each entry says why).
+# --fresh: the options above always win over a tree configured before (another compiler or
+# sanitizer); only objects whose command changed are rebuilt.
 SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_BUILD_FUZZ=OFF
@@ -89,12 +91,12 @@ test-asan: export LSAN_OPTIONS := suppressions=$(CURDIR)/scripts/lsan.supp:print
 test-tsan: export TSAN_OPTIONS := halt_on_error=1:second_deadlock_stack=1
 
 test-asan: deps
-	cmake -S . -B $(BUILD)-asan $(SANITIZER_TREE) -DFEEL_SANITIZE=address
+	cmake --fresh -S . -B $(BUILD)-asan $(SANITIZER_TREE) -DFEEL_SANITIZE=address
 	cmake --build $(BUILD)-asan
 	ctest --test-dir $(BUILD)-asan $(SANITIZER_CTEST) -LE '^firmware$$'
 
 test-tsan: deps
-	cmake -S . -B $(BUILD)-tsan $(SANITIZER_TREE) -DFEEL_SANITIZE=thread
+	cmake --fresh -S . -B $(BUILD)-tsan $(SANITIZER_TREE) -DFEEL_SANITIZE=thread
 	cmake --build $(BUILD)-tsan --target $(addprefix feel_suite_,$(TSAN_SUITES))
 	ctest --test-dir $(BUILD)-tsan $(SANITIZER_CTEST) -L '^($(subst $(space),|,$(TSAN_SUITES)))$$'
 
