@@ -79,6 +79,13 @@ namespace {
 
 static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
 constexpr int kMask = MotionEstimator::kHistory - 1;
+// The first kLadder index whose window's sums are kept.
+constexpr int first_summed() {
+    int k = 0;
+    while (MotionEstimator::kLadder[k] < MotionEstimator::kMinSummedWindow) ++k;
+    return k;
+}
+constexpr int kFirstSummed = first_summed();
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
@@ -191,6 +198,45 @@ int adaptive_window(const AxisWindow& w, const int* rung_n, int rung_count, int 
     return 0;
 }
 
+// A position as an integer of 1/kFixedScale units, rounded half away from zero; false
+// beyond kMaxFixedPosition. Exact for every position that is a multiple of 1/256 unit up
+// to 65536 units (x·256 is then exact in float), which covers every sensor of the device
+// profiles; elsewhere a deterministic rounding of it (the same on every platform).
+bool to_fixed(float x, int64_t& fixed) noexcept {
+    if (!(std::fabs(x) <= MotionEstimator::kMaxFixedPosition)) return false;
+    const float scaled = x * MotionEstimator::kFixedScale;
+    fixed = static_cast<int64_t>(scaled + (scaled < 0 ? -0.5f : 0.5f));
+    return true;
+}
+
+// True if every sample of a fixed set within 0..n lies within band of the fit: the newest
+// kDenseSamples one by one (where a stop or a reversal first shows), then the window's
+// eighths (where a bend shows: a line fitted to a curve departs from it most at the ends
+// and the middle, a parabola fitted to a cubic at the ends and at about a sixth in from
+// them). x is one axis's ring, y_i = x[(head + i) & kMask] - x0.
+constexpr int kDenseSamples = 8;
+
+template <bool kParabola>
+bool sampled_within_band(const float* x, int head, float x0, const float* u, const float* u2, int n, float c0,
+                         float c1, float c2, float band) noexcept {
+    auto outside = [=](int i) {
+        const float y = x[(head + i) & kMask] - x0;
+        const float fit = kParabola ? c0 + c1 * u[i] + c2 * u2[i] : c0 + c1 * u[i];
+        return std::fabs(y - fit) > band;
+    };
+    const int dense = n < kDenseSamples ? n : kDenseSamples;
+    for (int i = 0; i <= dense; ++i) {
+        if (outside(i)) return false;
+    }
+    if (n > kDenseSamples) {
+        for (int j = 1; j <= 8; ++j) {
+            const int i = n * j / 8;
+            if (i > kDenseSamples && outside(i)) return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 void MotionEstimator::configure(float sensor_step) noexcept {
@@ -206,10 +252,17 @@ void MotionEstimator::reset() noexcept {
     steady_run_ = 0;
     pattern_.steady_interval_us = 0;
     pattern_.max_n = 0;
+    frozen_interval_us_ = 0;
+    frozen_run_ = 0;
+    sums_axes_ = 0;
     for (int a = 0; a < kMaxAxes; ++a) {
+        fixed_run_[a] = 0;
+        sums_[a] = RungSums{};
+        sums_still_[a] = false;
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
         acceleration_ready_[a] = true;
+        velocity_rung_[a] = acceleration_rung_[a] = kRungs;
     }
 }
 
@@ -236,6 +289,17 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     const bool pushed = count_ == 0 || (t_us > t_us_[head_] && !crowded);
     if (pushed) {
         if (count_ > 0) push_interval(t_us - t_us_[head_]);
+        // The newest sample becomes frozen: the interval between it and the one before
+        // joins the frozen ones.
+        if (count_ >= 2) {
+            const int64_t frozen = t_us_[head_] - t_us_[previous];
+            if (frozen == frozen_interval_us_) {
+                if (frozen_run_ < kHistory) ++frozen_run_;
+            } else {
+                frozen_interval_us_ = frozen;
+                frozen_run_ = 1;
+            }
+        }
         head_ = (head_ - 1) & kMask;
         if (count_ < kHistory) ++count_;
     } else if (count_ >= 2) {
@@ -258,11 +322,218 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
             still_run_[a] = 1;
         }
         x_[a][head_] = x;
+        int64_t fixed = 0;
+        fixed_[a][head_] = to_fixed(x, fixed) ? static_cast<int32_t>(fixed) : 0;
     }
 
+    const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
+    for (int a = 0; a < axes; ++a) {
+        if (a >= sums_axes_) {
+            rebuild_sums(a);
+        } else if (pushed && count_ >= 2) {
+            slide_sums(a);
+        }
+    }
+    sums_axes_ = axes;
+
     refresh_time_pattern();
-    for (int a = 0; a < axis_count && a < kMaxAxes; ++a) estimate_axis(a, with_acceleration);
-    for (int a = axis_count; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
+    for (int a = 0; a < axes; ++a) estimate_axis(a, with_acceleration);
+    for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
+}
+
+// After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
+// the others move one m older, and the one that reaches m = n (index n + 1) leaves:
+//   Σ X   += X_in - X_out
+//   Σ m·X += Σ X - n·X_out           (each staying sample's m grows by one)
+//   Σ m²X += 2·Σ m·X + Σ X - n²·X_out
+// with the sums on the right taken before the update. Exact in 64-bit integers: a sum is
+// at most 96³·2^28 in magnitude.
+void MotionEstimator::slide_sums(int axis) noexcept {
+    const int32_t* fixed = fixed_[axis];
+    int64_t unused = 0;
+    const bool representable = to_fixed(x_[axis][(head_ + 1) & kMask], unused);
+    fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
+    // At rest (the newest frozen sample and the longest ladder window all one value) the
+    // sums are implied; leaving rest, they are first written out for the state before
+    // this push (every window full of the value now at index 2).
+    if (still_run_[axis] > kLadder[kLadderSize - 1] + 1) {
+        sums_still_[axis] = true;
+        return;
+    }
+    if (sums_still_[axis]) {
+        sums_still_[axis] = false;
+        const int64_t still = fixed[(head_ + 2) & kMask];
+        for (int k = kFirstSummed; k < kLadderSize; ++k) {
+            const int64_t n = kLadder[k];
+            int64_t* s = sums_[axis].s[k];
+            s[0] = n * still;
+            s[1] = n * (n - 1) / 2 * still;
+            s[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
+        }
+    }
+    const int64_t in = fixed[(head_ + 1) & kMask];
+    for (int k = kFirstSummed; k < kLadderSize; ++k) {
+        const int64_t n = kLadder[k];
+        // Before the ring holds n + 1 frozen samples nothing leaves.
+        const int64_t out = n + 1 <= count_ - 1 ? fixed[(head_ + kLadder[k] + 1) & kMask] : 0;
+        int64_t* s = sums_[axis].s[k];
+        const int64_t s0 = s[0], s1 = s[1];
+        s[0] = s0 + in - out;
+        s[1] = s1 + s0 - n * out;
+        s[2] = s[2] + 2 * s1 + s0 - n * n * out;
+    }
+}
+
+void MotionEstimator::ladder_sums(int axis, int k, int64_t sums[3]) const noexcept {
+    if (sums_still_[axis]) {
+        const int64_t still = fixed_[axis][(head_ + 1) & kMask], n = kLadder[k];
+        sums[0] = n * still;
+        sums[1] = n * (n - 1) / 2 * still;
+        sums[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
+        return;
+    }
+    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].s[k][p];
+}
+
+// The running sums of an axis from the ring, for an axis that was not kept up to date.
+void MotionEstimator::rebuild_sums(int axis) noexcept {
+    const float* x = x_[axis];
+    fixed_run_[axis] = 0;
+    sums_still_[axis] = false;
+    int64_t fixed = 0;
+    while (fixed_run_[axis] + 1 < count_ && to_fixed(x[(head_ + fixed_run_[axis] + 1) & kMask], fixed)) {
+        ++fixed_run_[axis];
+    }
+    for (int k = kFirstSummed; k < kLadderSize; ++k) {
+        int64_t* s = sums_[axis].s[k];
+        s[0] = s[1] = s[2] = 0;
+        for (int i = 1; i <= kLadder[k] && i < count_; ++i) {
+            const int64_t value = fixed_[axis][(head_ + i) & kMask];
+            const int64_t m = i - 1;
+            s[0] += value;
+            s[1] += m * value;
+            s[2] += m * m * value;
+        }
+    }
+}
+
+// Where the fast fits start their downward search: kRungsUp above the rung accepted last
+// time, the whole history at most. The full search (longest window first) is what the
+// slow path does every tick; a window that passed last tick grows by a rung or two a tick
+// at most, so starting a little above it finds the same window except when the motion
+// has just turned steady after a bend: then the window grows back to its longest over a
+// few ticks instead of at once.
+int MotionEstimator::start_rung(int previous) const noexcept {
+    const int top = pattern_.rung_count - 1;
+    return previous + kRungsUp < top ? previous + kRungsUp : top;
+}
+
+bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
+    const int max_n = pattern_.max_n;
+    int64_t newest = 0;
+    return max_n >= 1 && axis < sums_axes_ && fixed_run_[axis] >= max_n && to_fixed(x_[axis][head_], newest) &&
+           (max_n <= 1 || (frozen_run_ >= max_n - 1 && frozen_interval_us_ > 0));
+}
+
+// Σ y, Σ u·y, Σ u²·y over samples 0..n, y relative to the newest sample. The frozen
+// samples 1..n are at ages a1 + m·T (m = i - 1, a1 the newest interval, T the frozen
+// one), so with α = a1/W, β = T/W (W = kMaxWindowUs) u = -(α + m·β) and
+//   Σ u·y  = -(α·Σy + β·Σm·y),   Σ u²·y = α²·Σy + 2αβ·Σm·y + β²·Σm²·y,
+// where Σ m^p·y = Σ m^p·X - X_0·Σ m^p (the newest sample's y is 0). The sums of a rung
+// between two ladder lengths (the whole history) add the few samples past the longest
+// ladder window below it.
+bool MotionEstimator::window_sums(int axis, int r, float out[3]) const noexcept {
+    const int n = pattern_.rung_n[r];
+    const int k = pattern_.rung_ladder[r];
+    int64_t s0 = 0, s1 = 0, s2 = 0;
+    int from = 1;
+    if (k >= 0) {
+        int64_t sums[3];
+        ladder_sums(axis, k, sums);
+        s0 = sums[0];
+        s1 = sums[1];
+        s2 = sums[2];
+        from = kLadder[k] + 1;
+    }
+    const int32_t* x = fixed_[axis];
+    for (int i = from; i <= n; ++i) {
+        const int64_t value = x[(head_ + i) & kMask];
+        const int64_t m = i - 1;
+        s0 += value;
+        s1 += m * value;
+        s2 += m * m * value;
+    }
+    const int64_t x0 = x[head_];
+    const int64_t count = n;
+    const int64_t sum_m = count * (count - 1) / 2;
+    const int64_t sum_m2 = (count - 1) * count * (2 * count - 1) / 6;
+    constexpr float kUnit = 1.0f / kFixedScale;
+    const float sy = static_cast<float>(s0 - count * x0) * kUnit;
+    const float smy = static_cast<float>(s1 - sum_m * x0) * kUnit;
+    const float smmy = static_cast<float>(s2 - sum_m2 * x0) * kUnit;
+    const float alpha = static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs;
+    const float beta = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
+    out[0] = sy;
+    out[1] = -(alpha * sy + beta * smy);
+    out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;
+    return true;
+}
+
+void MotionEstimator::fast_velocity(int axis) noexcept {
+    const TimePattern& p = pattern_;
+    const float* x = x_[axis];
+    const float x0 = x[head_];
+    for (int r = start_rung(velocity_rung_[axis]); r >= 0; --r) {
+        const int n = p.rung_n[r];
+        float sums[3];
+        window_sums(axis, r, sums);
+        const float s0 = static_cast<float>(n + 1), s1 = p.moment[1][r], s2 = p.moment[2][r];
+        const float det = s0 * s2 - s1 * s1;
+        if (!(det > 0)) continue;
+        const float c1 = (s0 * sums[1] - s1 * sums[0]) / det;
+        const float c0 = (sums[0] - c1 * s1) / s0;
+        if (!sampled_within_band<false>(x, head_, x0, p.u, p.u2, n, c0, c1, 0.0f, band_)) continue;
+        const float v = c1 / kWindowS;
+        velocity_rung_[axis] = r;
+        velocity_window_[axis] = n;
+        velocity_[axis] = std::isfinite(v) ? v : 0.0f;
+        return;
+    }
+    velocity_rung_[axis] = 0;
+    velocity_window_[axis] = 0;
+    velocity_[axis] = 0.0f;
+}
+
+void MotionEstimator::fast_acceleration(int axis) noexcept {
+    const TimePattern& p = pattern_;
+    acceleration_ready_[axis] = true;
+    acceleration_[axis] = 0.0f;
+    acceleration_window_[axis] = 0;
+    if (p.max_n < kMinAccelerationWindow) return;
+    const float* x = x_[axis];
+    const float x0 = x[head_];
+    // As fit_acceleration: the longest window whose parabola passes, else the shortest
+    // allowed one without the band check.
+    for (int r = start_rung(acceleration_rung_[axis]); r >= 0; --r) {
+        const int n = p.rung_n[r];
+        if (n < kMinAccelerationWindow) break;
+        const bool last = n == kMinAccelerationWindow;
+        float sums[3];
+        window_sums(axis, r, sums);
+        const float s0 = static_cast<float>(n + 1), s1 = p.moment[1][r], s2 = p.moment[2][r], s3 = p.moment[3][r],
+                    s4 = p.moment[4][r];
+        const float det = det3(s0, s1, s2, s1, s2, s3, s2, s3, s4);
+        if (!(det > 0)) continue;
+        const float c2 = det3(s0, s1, sums[0], s1, s2, sums[1], s2, s3, sums[2]) / det;
+        const float c0 = det3(sums[0], s1, s2, sums[1], s2, s3, sums[2], s3, s4) / det;
+        const float c1 = det3(s0, sums[0], s2, s1, sums[1], s3, s2, sums[2], s4) / det;
+        if (!last && !sampled_within_band<true>(x, head_, x0, p.u, p.u2, n, c0, c1, c2, band_)) continue;
+        const float a = 2.0f * c2 / (kWindowS * kWindowS);
+        acceleration_rung_[axis] = r;
+        acceleration_window_[axis] = n;
+        acceleration_[axis] = std::isfinite(a) ? a : 0.0f;
+        return;
+    }
 }
 
 void MotionEstimator::refresh_time_pattern() noexcept {
@@ -290,6 +561,10 @@ void MotionEstimator::refresh_time_pattern() noexcept {
         if (n < max_n) p.rung_n[p.rung_count++] = n;
     }
     p.rung_n[p.rung_count++] = max_n;
+    for (int r = 0, k = -1; r < p.rung_count; ++r) {
+        while (k + 1 < kLadderSize && kLadder[k + 1] <= p.rung_n[r]) ++k;
+        p.rung_ladder[r] = k >= kFirstSummed ? k : -1;
+    }
     float sum[5] = {};
     int i = 0;
     for (int r = 0; r < p.rung_count; ++r) {
@@ -352,6 +627,19 @@ void MotionEstimator::estimate_axis(int axis, bool with_acceleration) noexcept {
         velocity_window_[axis] = 0;
         return;
     }
+    if (still_run_[axis] > p.max_n) {  // at rest: both fits are exactly 0
+        velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
+        velocity_window_[axis] = p.max_n;
+        velocity_[axis] = 0.0f;
+        if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
+        return;
+    }
+    if (fast_fit_possible(axis)) {
+        fast_velocity(axis);
+        if (with_acceleration) fast_acceleration(axis);
+        return;
+    }
+    velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
     float y[kHistory];
     float sums[3][kRungs];
     if (!gather_axis(axis, with_acceleration, y, sums)) {
@@ -374,6 +662,14 @@ void MotionEstimator::estimate_acceleration(int axis) noexcept {
     acceleration_window_[axis] = 0;
     const int max_n = pattern_.max_n;
     if (max_n < kMinAccelerationWindow) return;
+    if (still_run_[axis] > max_n) {
+        acceleration_window_[axis] = max_n;
+        return;
+    }
+    if (fast_fit_possible(axis)) {
+        fast_acceleration(axis);
+        return;
+    }
     float y[kHistory];
     float sums[3][kRungs];
     if (!gather_axis(axis, true, y, sums)) {

@@ -13,6 +13,10 @@
 // changing motion a short one (little lag). motion_estimator.cpp has the details and
 // docs/conditions.md the reasoning and the measured accuracy.
 //
+// Cost (issue 14): the window sums come from running sums kept per ladder rung, exact in
+// integers, so a fit is O(1); the band check looks at a fixed set of samples (the newest
+// few, then the window's eighths) instead of all of them. motion_estimator.cpp explains.
+//
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
 // function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
 // FPU), time in integer microseconds.
@@ -40,7 +44,18 @@ public:
     // Window lengths tried (in sample intervals) below the whole history, shortest first;
     // kRungs counts them and the whole history.
     static constexpr int kLadder[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96};
-    static constexpr int kRungs = static_cast<int>(sizeof kLadder / sizeof kLadder[0]) + 1;
+    static constexpr int kLadderSize = static_cast<int>(sizeof kLadder / sizeof kLadder[0]);
+    static constexpr int kRungs = kLadderSize + 1;
+    // Positions enter the running sums as integers of 1/kFixedScale position unit; a
+    // position beyond ±kMaxFixedPosition (or not finite) is fitted the slow way.
+    static constexpr float kFixedScale = 256.0f;
+    static constexpr float kMaxFixedPosition = 1048576.0f;
+    // A window grows by at most this many rungs a tick (the fits search downwards from
+    // there): one tick's new sample rarely lets a window grow more.
+    static constexpr int kRungsUp = 1;
+    // Running sums are kept for the ladder's windows of this many intervals or more;
+    // shorter ones are summed from the ring when a fit needs them.
+    static constexpr int kMinSummedWindow = 8;
 
     // sensor_step: the position change of one sensor count, normalized units (> 0). The
     // fit tolerance is one count: a sample one count off a line is quantization, two
@@ -77,13 +92,34 @@ private:
         int max_n = 0;               // samples 0..max_n are within kMaxWindowUs of the newest
         int rung_count = 0;          // windows tried: rung_n[0..rung_count-1], the last max_n
         int rung_n[kRungs] = {};     // their lengths, ascending
+        int rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
         float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
         float u[kHistory] = {};      // u_i = -age_i / kMaxWindowUs, in [-1, 0]
         float u2[kHistory] = {};     // u_i²
         int64_t steady_interval_us = 0;  // every interval was this (0: not a steady pattern)
     };
 
+    // Running sums of the frozen samples (all but the newest, which a later sample of the
+    // same instant may replace) over the ladder's window lengths, in 1/kFixedScale units:
+    // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
+    struct RungSums {
+        int64_t s[kLadderSize][3] = {};
+    };
+    // Σ X, Σ m·X, Σ m²·X of ladder window k (kLadder[k] >= kMinSummedWindow).
+    void ladder_sums(int axis, int k, int64_t sums[3]) const noexcept;
+
     void push_interval(int64_t interval_us) noexcept;
+    void slide_sums(int axis) noexcept;
+    void rebuild_sums(int axis) noexcept;
+    // Σ y, Σ u·y, Σ u²·y over rung r's samples 0..n of an axis from the running sums; false if the
+    // running sums cannot give them (uneven older intervals, a position out of range).
+    bool window_sums(int axis, int r, float out[3]) const noexcept;
+    bool fast_fit_possible(int axis) const noexcept;
+    int start_rung(int previous) const noexcept;
+    // The velocity (and the acceleration) of an axis from the running sums, as
+    // estimate_axis and fit_acceleration do from gathered samples.
+    void fast_velocity(int axis) noexcept;
+    void fast_acceleration(int axis) noexcept;
     void refresh_time_pattern() noexcept;
     // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
     // sums at every rung (sums[p][r] = Σ u^p·y, p = 0, 1 and for a parabola 2); false at
@@ -101,14 +137,32 @@ private:
     int steady_run_ = 0;
     int64_t t_us_[kHistory] = {};
     float x_[kMaxAxes][kHistory] = {};
+    // The same positions in 1/kFixedScale units (0 where to_fixed refuses one).
+    int32_t fixed_[kMaxAxes][kHistory] = {};
     // How many of the newest samples of each axis read the newest value (never more than
     // they do; it may read fewer after a replaced sample): at rest it reaches max_n and
     // the fits are skipped without looking at the history.
     int still_run_[kMaxAxes] = {};
     TimePattern pattern_;
+    // Intervals between frozen samples: the newest frozen_run_ of them are all
+    // frozen_interval_us_ (µs).
+    int64_t frozen_interval_us_ = 0;
+    int frozen_run_ = 0;
+    // How many of the newest frozen samples of each axis have a fixed-point value.
+    int fixed_run_[kMaxAxes] = {};
+    // Axes whose running sums are kept up to date (the first sums_axes_).
+    int sums_axes_ = 0;
+    RungSums sums_[kMaxAxes];
+    // At rest the sums are not slid: every ladder window then holds one value, the newest
+    // frozen sample's, and its sums follow from it (ladder_sums). True while that holds.
+    bool sums_still_[kMaxAxes] = {};
     float velocity_[kMaxAxes] = {};
     float acceleration_[kMaxAxes] = {};
     int velocity_window_[kMaxAxes] = {};
+    // The rungs (indices into the pattern's rung_n) the fast fits accepted last time: the
+    // next search starts at most kRungsUp above them.
+    int velocity_rung_[kMaxAxes] = {};
+    int acceleration_rung_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
     bool acceleration_ready_[kMaxAxes] = {};
 };

@@ -41,24 +41,37 @@ double deadband_gate(double relative_speed, double deadband) noexcept {
 void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     const EngineConfig& config = *c.config;
+    // Single precision (issue 14): the forces are within ±10000 and a bristle's state is
+    // float; what is per tick rather than per block is computed once here.
     const PreslidingRule rule = presliding_rule(config, c.dt_s);
-    const double velocity_ref = static_cast<double>(config.velocity_ref);
-    const double inverse_fade_speed = 1.0 / (kBristleDampingFade * velocity_ref);
+    const float passive = static_cast<float>(rule.passive), cap = static_cast<float>(rule.cap);
+    const float velocity_ref = config.velocity_ref;
+    const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * velocity_ref);
+    const float dt_s = static_cast<float>(c.dt_s);
+    constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
-        const double magnitude = std::fmax(std::abs(b.pos_coefficient), std::abs(b.neg_coefficient));
-        const double stiffness = magnitude > 0 ? presliding_stiffness(rule, magnitude) : 0.0;
-        const double presliding = magnitude > 0 ? magnitude / stiffness : 0.0;
-        const double surface_speed = b.offset * velocity_ref / kFullScale;
-        const double z = advance(c.state->friction.bristle[i], c.position[a], surface_speed * c.dt_s, presliding);
-        const double relative_velocity = c.velocity[a] - surface_speed;
+        const float pos = static_cast<float>(b.pos_coefficient), neg = static_cast<float>(b.neg_coefficient);
+        const float magnitude = std::fmax(std::fabs(pos), std::fabs(neg));
+        // presliding_stiffness in float: K = min(max(2b/T, f / kMaxPresliding), cap).
+        float stiffness = 0.0f, presliding = 0.0f;
+        if (magnitude > 0) {
+            stiffness = std::fmin(std::fmax(passive, magnitude * kMinStiffnessPerForce), cap);
+            presliding = magnitude / stiffness;
+        }
+        const float surface_speed =
+            b.offset == 0 ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
+        const float z = advance(c.state->friction.bristle[i], c.position[a], surface_speed * dt_s, presliding);
+        const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
-        double f = -(toward_positive ? b.pos_coefficient : b.neg_coefficient) * z;
-        if (presliding > 0 && c.dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
-        if (b.deadband > 0) f *= deadband_gate(scaled_velocity(config, relative_velocity), b.deadband);
-        const double cap = toward_positive ? b.pos_saturation : b.neg_saturation;
-        force[a] += f > cap ? cap : (f < -cap ? -cap : f);
+        float f = -(toward_positive ? pos : neg) * z;
+        if (presliding > 0 && dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        if (b.deadband > 0) {
+            f *= static_cast<float>(deadband_gate(scaled_velocity(config, relative_velocity), b.deadband));
+        }
+        const float limit = static_cast<float>(toward_positive ? b.pos_saturation : b.neg_saturation);
+        force[a] += static_cast<double>(f > limit ? limit : (f < -limit ? -limit : f));
     }
 }
 

@@ -102,15 +102,17 @@ struct PreslidingRule {
 
 // Moves the bristle with the handle now at `position` (along the bristle's line, position
 // units), less `slip` (how far the surface itself moved since the last tick, for a
-// friction with a velocity offset). Returns the new deflection z.
-float advance(Bristle& b, double position, double slip, double presliding) noexcept;
+// friction with a velocity offset). Returns the new deflection z. Single precision (issue
+// 14): z is kept in float anyway, and a step's travel is a few counts.
+float advance(Bristle& b, float position, float slip, float presliding) noexcept;
 
 // The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force
 // units per position unit) at deflection z, the handle moving at `velocity` (units/s)
 // relative to the surface.
 [[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
-// The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller.
-[[nodiscard]] double bristle_damping(double stiffness, double z, double velocity, double inverse_fade_speed) noexcept;
+// The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller, in
+// single precision.
+[[nodiscard]] float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept;
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
 // multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine

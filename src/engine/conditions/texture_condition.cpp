@@ -43,7 +43,7 @@ void texture_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
     const double s = along(u, c.position);
     const double roughness = t.pos_roughness > t.neg_roughness ? t.pos_roughness : t.neg_roughness;
     const double presliding = presliding_distance(*c.config, c.dt_s, roughness);
-    const double z = advance(c.state->friction.bristle[0], s, 0.0, presliding);
+    const double z = advance(c.state->friction.bristle[0], static_cast<float>(s), 0.0f, static_cast<float>(presliding));
     const double width = static_cast<double>(t.spacing) * t.density / kFullScale;
     const double bump = texture_bump(s, t.spacing, width);
     double f = -(z >= 0 ? t.pos_roughness : t.neg_roughness) * bump * z;
