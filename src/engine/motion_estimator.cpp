@@ -198,17 +198,6 @@ int adaptive_window(const AxisWindow& w, const int* rung_n, int rung_count, int 
     return 0;
 }
 
-// A position as an integer of 1/kFixedScale units, rounded half away from zero; false
-// beyond kMaxFixedPosition. Exact for every position that is a multiple of 1/256 unit up
-// to 65536 units (x·256 is then exact in float), which covers every sensor of the device
-// profiles; elsewhere a deterministic rounding of it (the same on every platform).
-bool to_fixed(float x, int64_t& fixed) noexcept {
-    if (!(std::fabs(x) <= MotionEstimator::kMaxFixedPosition)) return false;
-    const float scaled = x * MotionEstimator::kFixedScale;
-    fixed = static_cast<int64_t>(scaled + (scaled < 0 ? -0.5f : 0.5f));
-    return true;
-}
-
 // True if every sample of a fixed set within 0..n lies within band of the fit: the newest
 // kDenseSamples one by one (where a stop or a reversal first shows), then the window's
 // eighths (where a bend shows: a line fitted to a curve departs from it most at the ends
@@ -241,6 +230,11 @@ bool sampled_within_band(const float* x, int head, float x0, const float* u, con
 
 void MotionEstimator::configure(float sensor_step) noexcept {
     band_ = std::isfinite(sensor_step) && sensor_step > 0 ? sensor_step : 1.0f;
+    // The fixed-point unit: the largest power of two at most band_/kFixedPerCount (2^-10 on
+    // the joystick, whose positions are multiples of 2^-7), at least 1/kMaxFixedScale.
+    fixed_scale_ = 1.0f;
+    while (fixed_scale_ < kMaxFixedScale && 1.0f / fixed_scale_ > band_ / kFixedPerCount) fixed_scale_ *= 2.0f;
+    max_fixed_position_ = 1073741824.0f / fixed_scale_;
     reset();
 }
 
@@ -341,13 +335,23 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
+// Exact for every float position within ±max_fixed_position_ whose finest bit is not
+// below 1/fixed_scale_; elsewhere a deterministic rounding of it (the same on every
+// platform), at most half a unit off (1/8192 of a count on the joystick).
+bool MotionEstimator::to_fixed(float x, int64_t& fixed) const noexcept {
+    if (!(std::fabs(x) < max_fixed_position_)) return false;
+    const float scaled = x * fixed_scale_;
+    fixed = static_cast<int64_t>(scaled + (scaled < 0 ? -0.5f : 0.5f));
+    return true;
+}
+
 // After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
 // the others move one m older, and the one that reaches m = n (index n + 1) leaves:
 //   Σ X   += X_in - X_out
 //   Σ m·X += Σ X - n·X_out           (each staying sample's m grows by one)
 //   Σ m²X += 2·Σ m·X + Σ X - n²·X_out
 // with the sums on the right taken before the update. Exact in 64-bit integers: a sum is
-// at most 96³·2^28 in magnitude.
+// at most 96³·2^30 in magnitude.
 void MotionEstimator::slide_sums(int axis) noexcept {
     const int32_t* fixed = fixed_[axis];
     int64_t unused = 0;
@@ -467,10 +471,10 @@ bool MotionEstimator::window_sums(int axis, int r, float out[3]) const noexcept 
     const int64_t count = n;
     const int64_t sum_m = count * (count - 1) / 2;
     const int64_t sum_m2 = (count - 1) * count * (2 * count - 1) / 6;
-    constexpr float kUnit = 1.0f / kFixedScale;
-    const float sy = static_cast<float>(s0 - count * x0) * kUnit;
-    const float smy = static_cast<float>(s1 - sum_m * x0) * kUnit;
-    const float smmy = static_cast<float>(s2 - sum_m2 * x0) * kUnit;
+    const float unit = 1.0f / fixed_scale_;
+    const float sy = static_cast<float>(s0 - count * x0) * unit;
+    const float smy = static_cast<float>(s1 - sum_m * x0) * unit;
+    const float smmy = static_cast<float>(s2 - sum_m2 * x0) * unit;
     const float alpha = static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs;
     const float beta = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
     out[0] = sy;

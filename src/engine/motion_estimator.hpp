@@ -46,10 +46,13 @@ public:
     static constexpr int kLadder[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96};
     static constexpr int kLadderSize = static_cast<int>(sizeof kLadder / sizeof kLadder[0]);
     static constexpr int kRungs = kLadderSize + 1;
-    // Positions enter the running sums as integers of 1/kFixedScale position unit; a
-    // position beyond ±kMaxFixedPosition (or not finite) is fitted the slow way.
-    static constexpr float kFixedScale = 256.0f;
-    static constexpr float kMaxFixedPosition = 1048576.0f;
+    // Positions enter the running sums as integers of 1/fixed_scale_ position unit: the
+    // power of two that makes a unit at most 1/kFixedPerCount of a sensor count (exact for
+    // the device profiles' quantized positions; far inside the fit's band in any case),
+    // but no finer than 1/kMaxFixedScale so that ±16384 units fit in 31 bits. A position
+    // beyond 2^30 units of it (or not finite) is fitted the slow way.
+    static constexpr float kFixedPerCount = 4096.0f;
+    static constexpr float kMaxFixedScale = 65536.0f;
     // A window grows by at most this many rungs a tick (the fits search downwards from
     // there): one tick's new sample rarely lets a window grow more.
     static constexpr int kRungsUp = 1;
@@ -100,7 +103,7 @@ private:
     };
 
     // Running sums of the frozen samples (all but the newest, which a later sample of the
-    // same instant may replace) over the ladder's window lengths, in 1/kFixedScale units:
+    // same instant may replace) over the ladder's window lengths, in 1/fixed_scale_ units:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
     struct RungSums {
         int64_t s[kLadderSize][3] = {};
@@ -129,7 +132,13 @@ private:
     void estimate_acceleration(int axis) noexcept;
     void fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept;
 
+    // x as an integer of 1/fixed_scale_ units, rounded half away from zero; false if it
+    // does not fit (see kFixedPerCount).
+    bool to_fixed(float x, int64_t& fixed) const noexcept;
+
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
+    float fixed_scale_ = 64.0f;        // fixed-point units per position unit, a power of two
+    float max_fixed_position_ = 16777216.0f;  // position units: 2^30 fixed-point units
     int count_ = 0;      // valid samples in the ring, 0..kHistory
     int head_ = 0;       // index of the newest sample; older ones follow it (mod kHistory)
     // The newest steady_run_ intervals all equal steady_interval_us_ (µs).
@@ -137,7 +146,7 @@ private:
     int steady_run_ = 0;
     int64_t t_us_[kHistory] = {};
     float x_[kMaxAxes][kHistory] = {};
-    // The same positions in 1/kFixedScale units (0 where to_fixed refuses one).
+    // The same positions in 1/fixed_scale_ units (0 where to_fixed refuses one).
     int32_t fixed_[kMaxAxes][kHistory] = {};
     // How many of the newest samples of each axis read the newest value (never more than
     // they do; it may read fewer after a replaced sample): at rest it reaches max_n and

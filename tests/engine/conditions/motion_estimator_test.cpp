@@ -1,5 +1,6 @@
 // The velocity and acceleration estimator (FOAW, motion_estimator.hpp) on quantized motion
 // whose true velocity and acceleration are known in closed form.
+#include <algorithm>
 #include <random>
 
 #include "condition_fixture.hpp"
@@ -58,6 +59,42 @@ TEST(MotionEstimator, QuantizedRampsAtTwoPercentAndFullReferenceSpeedAreWithinFi
             EXPECT_GT(slow.zero_differences, slow.ticks / 2);
         }
     }
+}
+
+// The fits use sums kept from tick to tick (issue 14). Integers cannot drift, and this
+// checks it: after 400 000 ticks (6.7 minutes at 1 kHz) of a wandering 2-axis motion, the
+// estimate on a final ramp is the one a fresh estimator computes from the same last 200
+// samples, bit for bit, and within 0.5% of the ramp's true speed.
+TEST(MotionEstimator, RunningSumsAfterALongRunGiveWhatAFreshEstimatorGives) {
+    MotionEstimator long_run, fresh;
+    long_run.configure(static_cast<float>(kJoystickStep));
+    fresh.configure(static_cast<float>(kJoystickStep));
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> jerk(-2e7, 2e7);
+    double x = 0, y = 0, vx = 0, vy = 0;
+    const int64_t wander = 400'000, ramp = 200;
+    const double ramp_speed = 3000;  // units/s
+    double ramp_start = 0;
+    for (int64_t k = 0; k < wander + ramp; ++k) {
+        const double dt = 1e-3;
+        if (k < wander) {
+            vx = std::clamp(vx + jerk(random) * dt * dt, -30000.0, 30000.0);
+            vy = std::clamp(vy + jerk(random) * dt * dt, -30000.0, 30000.0);
+            x = std::clamp(x + vx * dt, -9000.0, 9000.0);
+            y = std::clamp(y + vy * dt, -9000.0, 9000.0);
+            ramp_start = x;
+        } else {
+            x = ramp_start + ramp_speed * static_cast<double>(k - wander) * dt;
+            y = 1234;
+        }
+        float p[kMaxAxes] = {static_cast<float>(quantize(x, kJoystickStep)), static_cast<float>(quantize(y, kJoystickStep))};
+        long_run.update(k * 1000, p, 2);
+        if (k >= wander) fresh.update(k * 1000, p, 2);
+    }
+    EXPECT_EQ(long_run.velocity(0), fresh.velocity(0));
+    EXPECT_EQ(long_run.velocity(1), 0.0f);
+    EXPECT_EQ(long_run.acceleration(0), fresh.acceleration(0));
+    EXPECT_NEAR(long_run.velocity(0), ramp_speed, 0.005 * ramp_speed);
 }
 
 TEST(MotionEstimator, SpeedsBetweenAreWithinFivePercentToo) {
