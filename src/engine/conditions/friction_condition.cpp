@@ -53,11 +53,15 @@ void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexc
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
         const float pos = static_cast<float>(b.pos_coefficient), neg = static_cast<float>(b.neg_coefficient);
-        const float magnitude = std::fmax(std::fabs(pos), std::fabs(neg));
+        // (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must
+        // be honoured, and nothing here is NaN.)
+        const float magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
         // presliding_stiffness in float: K = min(max(2b/T, f / kMaxPresliding), cap).
         float stiffness = 0.0f, presliding = 0.0f;
         if (magnitude > 0) {
-            stiffness = std::fmin(std::fmax(passive, magnitude * kMinStiffnessPerForce), cap);
+            const float guarded = magnitude * kMinStiffnessPerForce;
+            stiffness = passive > guarded ? passive : guarded;
+            if (stiffness > cap) stiffness = cap;
             presliding = magnitude / stiffness;
         }
         const float surface_speed =
