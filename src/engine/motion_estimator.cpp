@@ -62,6 +62,18 @@
 //     walks the window from the newest sample in blocks of 8 and stops at the first block
 //     that leaves the band. A window too long for a bending motion leaves it first at its
 //     newest end, so a failed rung costs about one block.
+// That is the general path. On the common one (every older interval the same, positions
+// within range) the sums come without a pass at all (issue 14):
+//   * each ladder window's sums over the frozen samples (all but the newest, which a
+//     fresher reading of the same instant may replace) are kept in 64-bit integers, the
+//     positions as integers of a power-of-two unit far below a sensor count, and slid by
+//     O(1) updates when a sample arrives (slide_sums). Integers are exact, so the sums
+//     never drift; at rest they are not slid at all (ladder_sums);
+//   * the band is checked on a fixed set of samples: the newest kDenseSamples, where a
+//     stop or a reversal shows first, and the window's eighths, where a bend shows;
+//   * the downward search starts kRungsUp above the window accepted last tick.
+// On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
+// (docs/stability.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
 // window of span σ scales as the same power of σ, so fitting in these fixed units has the
 // rounding of fitting in [-1, 0] per window: single precision is enough (the normal
