@@ -80,7 +80,8 @@ TEST(Address, RefusesEveryMalformedFormNamingTheProblem) {
     };
     const Case cases[] = {
         {"", "it is empty"},
-        {"usb:0", "the scheme \"usb\" is unknown"},
+        {"serial:0", "the scheme \"serial\" is unknown"},
+        {"usb:0", "the product ID is missing"},
         {"http://localhost:80", "the scheme \"http\" is unknown"},
         {"sim:", "the profile name is empty"},
         {"unix:", "the socket path is empty"},
