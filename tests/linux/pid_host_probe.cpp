@@ -58,8 +58,8 @@ EffectParams params_for(EffectType t, int index) {
         p.axis_count = 2;
         p.axes[1] = Axis::y;
         for (int a = 0; a < 2; ++a) {
-            p.conditions[a].pos_coefficient = 1000 * index + 100 * a;
-            p.conditions[a].neg_coefficient = 1000 * index + 100 * a;
+            p.conditions[a].pos_coefficient = 500 * (index - 6) + 100 * a;
+            p.conditions[a].neg_coefficient = 500 * (index - 6) + 100 * a;
             p.conditions[a].offset = 50 * a - 25 * index;
             p.conditions[a].pos_saturation = 8000;
             p.conditions[a].neg_saturation = 8000;
