@@ -91,12 +91,14 @@ void add_schema(CLI::App& app) {
 
 constexpr const char* kDeviceHelp =
     "The device: sim:PROFILE (in process; PROFILE joystick, wheel, 3axis, iforce1 or iforce2), "
-    "unix:PATH or tcp:HOST:PORT (a `feel device` process); a bare PROFILE means sim:PROFILE";
+    "unix:PATH or tcp:HOST:PORT (a `feel device` process), hidraw:/dev/hidrawN or usb:VID:PID[:SERIAL] "
+    "(a feel device on USB); a bare PROFILE means sim:PROFILE";
 
 void add_devices(CLI::App& app, DevicesArgs& a) {
     CLI::App* cmd = app.add_subcommand(
-        "devices", "List the devices a host can open: the in-process simulated devices and the "
-                   "`feel device` processes listening on Unix sockets");
+        "devices", "List the devices a host can open: the in-process simulated devices, the "
+                   "`feel device` processes listening on Unix sockets, and every USB HID force-feedback "
+                   "(PID) device present, through hidraw");
     cmd->add_option("--socket-dir", a.socket_dirs,
                     "Directory whose Unix sockets are probed (repeatable; default: "
                     "$XDG_RUNTIME_DIR/feel, else /tmp/feel-UID)");

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "descriptor_check.hpp"
+#include "feel/protocol/pid_layout.hpp"
 #include "device_core.hpp"
 #include "device_info.hpp"
 #include "effect_checks.hpp"
@@ -151,6 +152,13 @@ Result<Device> Device::attach(std::unique_ptr<transport::Connection> connection,
         if (!descriptor) return prefixed(descriptor.status(), what);
         protocol::JoystickLayout joystick;
         if (const std::string problem = check_report_descriptor(descriptor.value(), &joystick); !problem.empty()) {
+            std::string pid_error;
+            if (protocol::pid::PidLayout::from_bytes(descriptor.value(), pid_error)) {
+                return Status::failure(ErrorKind::protocol,
+                                       what + ": not a device of this feel protocol (" + problem +
+                                           "), but a HID PID device: feel::host::PidDevice drives it with "
+                                           "standard PID reports (docs/real-devices.md)");
+            }
             return Status::failure(ErrorKind::protocol,
                                    what + ": the device speaks another version of the protocol: " + problem);
         }

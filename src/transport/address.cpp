@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -20,7 +21,8 @@ namespace feel::transport {
 namespace {
 
 constexpr std::string_view kAllowedForms =
-    "allowed sim:PROFILE, unix:PATH or tcp:HOST:PORT with PORT 1..65535";
+    "allowed sim:PROFILE, unix:PATH, tcp:HOST:PORT with PORT 1..65535, hidraw:/dev/hidrawN or "
+    "usb:VID:PID[:SERIAL] with VID and PID 4 hex digits";
 
 [[noreturn]] void refuse(std::string_view text, std::string_view why) {
     std::string message = "\"";
@@ -82,12 +84,37 @@ Address parse_tcp(std::string_view text, std::string_view rest, bool allow_port_
     return address;
 }
 
+uint16_t parse_usb_id(std::string_view text, std::string_view id, std::string_view what) {
+    unsigned value = 0;
+    const auto [end, error] = std::from_chars(id.data(), id.data() + id.size(), value, 16);
+    if (id.size() != 4 || error != std::errc{} || end != id.data() + id.size())
+        refuse(text, "the " + std::string(what) + " \"" + std::string(id) + "\" is not 4 hex digits");
+    return static_cast<uint16_t>(value);
+}
+
+// usb:VID:PID[:SERIAL]
+Address parse_usb(std::string_view text, std::string_view rest) {
+    const std::size_t colon = rest.find(':');
+    if (colon == std::string_view::npos) refuse(text, "the product ID is missing (usb:VID:PID)");
+    Address address;
+    address.kind = Address::Kind::usb;
+    address.vendor_id = parse_usb_id(text, rest.substr(0, colon), "vendor ID");
+    const std::string_view after = rest.substr(colon + 1);
+    const std::size_t serial_colon = after.find(':');
+    address.product_id = parse_usb_id(text, after.substr(0, serial_colon), "product ID");
+    if (serial_colon != std::string_view::npos) {
+        address.serial = std::string(after.substr(serial_colon + 1));
+        if (address.serial.empty()) refuse(text, "the serial number after the last ':' is empty");
+    }
+    return address;
+}
+
 Address parse_address(std::string_view text, bool allow_port_zero) {
     if (text.empty()) refuse(text, "it is empty");
     const std::size_t colon = text.find(':');
     if (colon == std::string_view::npos) {
         // A bare word: a profile name.
-        if (text == "sim" || text == "unix" || text == "tcp")
+        if (text == "sim" || text == "unix" || text == "tcp" || text == "hidraw" || text == "usb")
             refuse(text, "the ':' after the scheme is missing");
         if (text.find('/') != std::string_view::npos)
             refuse(text, "a socket path needs the unix: scheme, e.g. unix:" + std::string(text));
@@ -137,6 +164,18 @@ Address parse_address(std::string_view text, bool allow_port_zero) {
         address.token = std::string(token);
         return address;
     }
+    if (scheme == "hidraw") {
+        if (rest.empty()) refuse(text, "the hidraw node's path is empty (e.g. hidraw:/dev/hidraw0)");
+        if (allow_port_zero) refuse(text, "a hidraw device is a device to open, not a place to listen");
+        Address address;
+        address.kind = Address::Kind::hidraw;
+        address.path = std::string(rest);
+        return address;
+    }
+    if (scheme == "usb") {
+        if (allow_port_zero) refuse(text, "a USB device is a device to open, not a place to listen");
+        return parse_usb(text, rest);
+    }
     refuse(text, "the scheme \"" + std::string(scheme) + "\" is unknown");
 }
 
@@ -155,6 +194,13 @@ std::string Address::to_string() const {
         case Kind::tcp:
             if (host.find(':') != std::string::npos) return "tcp:[" + host + "]:" + std::to_string(port);
             return "tcp:" + host + ":" + std::to_string(port);
+        case Kind::hidraw:
+            return "hidraw:" + path;
+        case Kind::usb: {
+            char ids[16];
+            std::snprintf(ids, sizeof ids, "%04x:%04x", vendor_id, product_id);
+            return "usb:" + std::string(ids) + (serial.empty() ? "" : ":" + serial);
+        }
     }
     return "sim:" + profile;
 }

@@ -18,6 +18,7 @@
 #include <functional>
 #include <optional>
 
+#include "feel/transport/hidraw.hpp"
 #include "socket_util.hpp"
 
 namespace feel::transport {
@@ -112,6 +113,9 @@ std::unique_ptr<Connection> connect(const Address& address, std::chrono::millise
             return connect_unix(address, timeout);
         case Address::Kind::tcp:
             return connect_tcp(address, timeout);
+        case Address::Kind::hidraw:
+        case Address::Kind::usb:
+            return open_hidraw(address);
         case Address::Kind::sim:
             break;
     }

@@ -276,6 +276,11 @@ std::unique_ptr<Listener> listen(const Address& address, const ListenOptions& op
             return listen_unix(address, options);
         case Address::Kind::tcp:
             return listen_tcp(address, options);
+        case Address::Kind::hidraw:
+        case Address::Kind::usb:
+            throw std::invalid_argument("cannot listen at " + address.to_string() +
+                                        ": a hidraw or USB device is opened by a host, not listened on "
+                                        "(allowed unix:PATH or tcp:HOST:PORT)");
         case Address::Kind::sim:
             break;
     }

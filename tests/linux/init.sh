@@ -15,14 +15,17 @@ mount -t tmpfs tmpfs /run
 
 hs=1
 bridge=0
+pidhost=0
 for word in $(cat /proc/cmdline); do
     case $word in
         feel.hs=*) hs=${word#feel.hs=} ;;
         feel.bridge=*) bridge=${word#feel.bridge=} ;;
+        feel.pidhost=*) pidhost=${word#feel.pidhost=} ;;
     esac
 done
 
 mark() { echo "==== $* t=$(cut -d' ' -f1 /proc/uptime)"; }
+. /etc/feel/pid_host_case.sh
 finish() {
     mark "end"
     sync
@@ -77,6 +80,7 @@ mark "hidraw probe"
 timeout 30 hidraw_probe /dev/hidraw0 > /tmp/hidraw.log 2>&1
 cat /tmp/hidraw.log
 cat /tmp/hidraw.log >> /tmp/probe.log
+pid_host_run /dev/hidraw0
 if [ -z "$event" ]; then
     mark "no force-feedback event device"
 else
@@ -110,6 +114,7 @@ echo "==== feel device.log end"
 echo "==== probe begin"
 cat /tmp/probe.log 2>/dev/null
 echo "==== probe end"
+pid_host_print
 for judge in fftest testhaptic; do
     echo "==== $judge spy begin"
     cat /tmp/$judge.spy 2>/dev/null

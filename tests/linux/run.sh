@@ -108,6 +108,9 @@ add_program() {  # add_program PATH [NAME_IN_VM]
 add_program "$feel" feel
 add_program "$probe" ff_probe
 add_program "$(dirname "$probe")/hidraw_probe" hidraw_probe
+add_program "$(dirname "$probe")/pid_host_probe" pid_host_probe
+mkdir -p "$root/etc/feel"
+cp "$here/pid_host_case.sh" "$root/etc/feel/pid_host_case.sh"
 fftest=$(command -v fftest || true)
 testhaptic=/usr/libexec/installed-tests/SDL2/testhaptic
 [[ -x $fftest ]] || { say "fftest is missing (Debian package joystick: scripts/install-deps.sh)"; exit 1; }
@@ -123,15 +126,16 @@ say "initramfs $(du -h "$work/initramfs.gz" | cut -f1), kernel $kver"
 
 # --- boot, once per speed ---------------------------------------------------------------
 boot() {  # boot SPEED: high or full
-    local speed=$1 hs=1 bridge=0
+    local speed=$1 hs=1 bridge=0 pidhost=0
     [[ $speed == full ]] && hs=0
     [[ $speed == "$first" ]] && bridge=1  # feel bridge needs no USB: one run is enough
+    [[ $speed == "$first" ]] && pidhost=1  # the host API over hidraw: one speed is enough
     local console=$out/console-$speed.log
     local t0
     t0=$(date +%s%N)
     timeout 600 qemu-system-x86_64 -accel tcg -m 512M -smp 2 -nographic -no-reboot -nic none \
         -kernel "$vmlinuz" -initrd "$work/initramfs.gz" \
-        -append "console=ttyS0 panic=-1 quiet loglevel=4 feel.hs=$hs feel.bridge=$bridge usbhid.dyndbg=+p" \
+        -append "console=ttyS0 panic=-1 quiet loglevel=4 feel.hs=$hs feel.bridge=$bridge feel.pidhost=$pidhost usbhid.dyndbg=+p" \
         > "$console" 2>&1 </dev/null || { say "qemu failed ($speed speed), see $console"; return 1; }
     say "$speed speed: the VM ran $(seconds_since "$t0") s"
     # The VM writes its device log between markers on the console.
@@ -148,6 +152,8 @@ boot() {  # boot SPEED: high or full
         > "$out/bridge-events-$speed.txt"
     sed -n '/^==== bridge invalid begin/,/^==== bridge invalid end/p' "$console" | sed '1d;$d' | tr -d '\r' \
         > "$out/bridge-invalid-$speed.txt"
+    sed -n '/^==== pid host log begin/,/^==== pid host log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
+        > "$out/pid-host-$speed.txt"
 }
 speeds=${FEEL_LINUX_SPEEDS:-high full}
 first=${speeds%% *}
@@ -171,6 +177,12 @@ done
     --events "$out/bridge-events-$first.txt" --invalid "$out/bridge-invalid-$first.txt" \
     | tee "$out/check-bridge.txt" || status=1
 read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-bridge.txt" | tail -1) || true
+passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
+# The host API over hidraw (tests/linux/pid_host_case.sh), in the first speed's VM: what
+# feel::host::PidDevice asked for against what the device received.
+"$(dirname "$checker")/feel_check_pid_host_log" --probe "$out/pid-host-$first.txt" --device-log "$out/device-$first.log" \
+    | tee "$out/check-pid-host.txt" || status=1
+read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-pid-host.txt" | tail -1) || true
 passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 say "done in $(seconds_since "$started") s (console: $out/console.log, device log: $out/device.log)"
 echo "linux: $passed passed, $failed failed"

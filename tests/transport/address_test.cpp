@@ -80,7 +80,8 @@ TEST(Address, RefusesEveryMalformedFormNamingTheProblem) {
     };
     const Case cases[] = {
         {"", "it is empty"},
-        {"usb:0", "the scheme \"usb\" is unknown"},
+        {"serial:0", "the scheme \"serial\" is unknown"},
+        {"usb:0", "the product ID is missing"},
         {"http://localhost:80", "the scheme \"http\" is unknown"},
         {"sim:", "the profile name is empty"},
         {"unix:", "the socket path is empty"},
@@ -109,7 +110,7 @@ TEST(Address, RefusesEveryMalformedFormNamingTheProblem) {
         EXPECT_NE(message.find(c.why), std::string::npos) << c.text << ": " << message;
         // Every refusal quotes the text and lists the allowed forms.
         EXPECT_NE(message.find("\"" + std::string(c.text) + "\" is not an address"), std::string::npos) << message;
-        EXPECT_NE(message.find("sim:PROFILE, unix:PATH or tcp:HOST:PORT with PORT 1..65535"), std::string::npos)
+        EXPECT_NE(message.find("sim:PROFILE, unix:PATH, tcp:HOST:PORT with PORT 1..65535, hidraw:/dev/hidrawN or usb:VID:PID"), std::string::npos)
             << message;
     }
 }
@@ -161,6 +162,31 @@ TEST(DefaultSocketDir, IsUnderTheRuntimeDirElseTmpPerUser) {
     } else {
         ::unsetenv("XDG_RUNTIME_DIR");
     }
+}
+
+TEST(Address, ParsesTheHidrawAndUsbForms) {
+    const Address hidraw = Address::parse("hidraw:/dev/hidraw3");
+    EXPECT_EQ(hidraw.kind, Address::Kind::hidraw);
+    EXPECT_EQ(hidraw.path, "/dev/hidraw3");
+    EXPECT_EQ(hidraw.to_string(), "hidraw:/dev/hidraw3");
+
+    const Address usb = Address::parse("usb:1209:FFB0");
+    EXPECT_EQ(usb.kind, Address::Kind::usb);
+    EXPECT_EQ(usb.vendor_id, 0x1209);
+    EXPECT_EQ(usb.product_id, 0xFFB0);
+    EXPECT_TRUE(usb.serial.empty());
+    EXPECT_EQ(usb.to_string(), "usb:1209:ffb0");
+    const Address with_serial = Address::parse("usb:045e:001b:A1B2");
+    EXPECT_EQ(with_serial.serial, "A1B2");
+    EXPECT_EQ(with_serial.to_string(), "usb:045e:001b:A1B2");
+
+    EXPECT_NE(parse_error("hidraw:").find("path is empty"), std::string::npos);
+    EXPECT_NE(parse_error("usb:1209").find("product ID is missing"), std::string::npos);
+    EXPECT_NE(parse_error("usb:12G9:ffb0").find("vendor ID \"12G9\" is not 4 hex digits"), std::string::npos);
+    EXPECT_NE(parse_error("usb:1209:ffb").find("product ID \"ffb\" is not 4 hex digits"), std::string::npos);
+    EXPECT_NE(parse_error("usb:1209:ffb0:").find("serial number"), std::string::npos);
+    EXPECT_NE(parse_error("hidraw:/dev/hidraw0", true).find("not a place to listen"), std::string::npos);
+    EXPECT_NE(parse_error("usb:1209:ffb0", true).find("not a place to listen"), std::string::npos);
 }
 
 }  // namespace

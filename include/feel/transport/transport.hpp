@@ -11,6 +11,11 @@
 //   unix:PATH           a framed byte stream over a Unix domain socket
 //   tcp:HOST:PORT       the same framed stream over TCP (loopback by default; any other
 //                       address needs the device's shared secret, see `hello` below)
+//   hidraw:/dev/hidrawN a USB (or Bluetooth) HID device through Linux's hidraw: output
+//                       reports written, input reports read, feature reports and the
+//                       descriptor through its ioctls (feel/transport/hidraw.hpp)
+//   usb:VID:PID[:SERIAL] the same, the hidraw node found through sysfs by the device's
+//                       USB vendor and product IDs (hex) and, when given, serial number
 // On a byte stream each frame is [kind: u8][length: u16 little-endian][payload: length
 // bytes], length <= kMaxFramePayload. A frame of an unknown kind or an oversized length is
 // a protocol violation: the receiver closes the connection (a device never trusts its host).
@@ -114,18 +119,23 @@ private:
     Kind kind_;
 };
 
-// Where a device is. Parsed from and printed as "sim:PROFILE", "unix:PATH" or
-// "tcp:HOST:PORT" (every command's --device and `feel device --listen`).
+// Where a device is. Parsed from and printed as "sim:PROFILE", "unix:PATH",
+// "tcp:HOST:PORT", "hidraw:PATH" or "usb:VID:PID[:SERIAL]" (every command's --device;
+// `feel device --listen` takes the first three).
 struct Address {
-    enum class Kind : uint8_t { sim, unix_socket, tcp };
+    enum class Kind : uint8_t { sim, unix_socket, tcp, hidraw, usb };
     Kind kind = Kind::sim;
     std::string profile = "iforce2";  // sim: a device profile name (feel devices)
-    std::string path;                 // unix_socket: the socket's file path
+    std::string path;                 // unix_socket: the socket's file path; hidraw: the node's
     std::string host = "127.0.0.1";   // tcp: a host name or address
     uint16_t port = 0;                // tcp: 1..65535 (0 only to listen on any free port)
     // tcp: the device's shared secret, from "tcp:HOST:PORT?token=TOKEN" (empty: none, or
     // the environment's, see kTokenEnvironmentVariable). Never printed by to_string().
     std::string token;
+    // usb: the device's USB IDs, and its serial number (empty: any; the first found).
+    uint16_t vendor_id = 0;
+    uint16_t product_id = 0;
+    std::string serial;
 
     // Throws std::invalid_argument naming what is wrong and the forms allowed, e.g.
     //   "tcp:localhost" is not an address: the port is missing (allowed sim:PROFILE,
@@ -134,7 +144,8 @@ struct Address {
     // here (the device checks it when it is built).
     [[nodiscard]] static Address parse(std::string_view text);
     // The same forms for a place to listen (`feel device --listen`): tcp port 0 is allowed
-    // and means "any free port" (Listener::address() then says which).
+    // and means "any free port" (Listener::address() then says which); hidraw: and usb:
+    // are devices, not places to listen, and are refused.
     [[nodiscard]] static Address parse_listen(std::string_view text);
     [[nodiscard]] std::string to_string() const;
 
@@ -212,8 +223,9 @@ struct ListenOptions {
 // string when it is one, else a sentence saying what is wrong and what is allowed.
 [[nodiscard]] std::string check_token(std::string_view token);
 
-// Connects to a unix: or tcp: address, waiting up to `timeout`. Throws
-// TransportError(refused or timeout) naming the address; std::invalid_argument for sim:
+// Connects to a unix:, tcp:, hidraw: or usb: address, waiting up to `timeout`. Throws
+// TransportError(refused or timeout) naming the address (for hidraw, also a node this user
+// may not open, with the udev rule that would allow it); std::invalid_argument for sim:
 // (open those with feel::peripheral, see feel/host/device.hpp).
 [[nodiscard]] std::unique_ptr<Connection> connect(const Address& address,
                                                   std::chrono::milliseconds timeout);

@@ -1,0 +1,116 @@
+// feel::host — the host API on any USB HID PID force-feedback device.
+//
+// Device (device.hpp) speaks feel's protocol: PID plus feel's vendor reports (sequence
+// numbers, answers, Dynamics, walls, device info). A wheel or stick from anywhere speaks
+// PID alone, in its own layout. PidDevice drives those: it reads the device's own report
+// descriptor, maps it (protocol::pid::PidLayout: report IDs, fields, logical ranges, as
+// Linux's hid-pidff does), and plays every effect type the descriptor lists natively, with
+// the reports a standard PID host sends (pid_effect_reports.hpp). It sends feel's vendor
+// reports never: on a feel device Device gives all of feel (capabilities().feel_device
+// says when).
+//
+//   auto wheel = feel::host::PidDevice::open("usb:1209:ffb0");   // or "hidraw:/dev/hidraw3"
+//   if (!wheel) { log(wheel.status().message); return; }
+//   auto block = wheel->create_effect(feel::iforce::x_spring(...));
+//   wheel->start(*block);
+//
+// What the device supports is in capabilities(): its effect types from the descriptor
+// (which a host emulation layer may complete), and its pool from the PID Pool report.
+//
+// A standard PID device answers no command: the host knows an effect is loaded from PID
+// Block Load (after Create New Effect) and that is all it can know. Everything else is
+// checked before it is sent (validate_effect, then the device's field ranges), and a
+// refused value is an error naming the field and what the device can hold.
+//
+// Threads. One thread at a time (calls are serialized inside). An I/O thread reads the
+// device's input reports and hands feature replies to the waiting call.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "feel/effect.hpp"
+#include "feel/host/device.hpp"
+#include "feel/host/result.hpp"
+#include "feel/protocol/pid_effect_reports.hpp"
+#include "feel/protocol/pid_layout.hpp"
+#include "feel/runtime/runtime_messages.hpp"
+#include "feel/transport/hidraw.hpp"
+
+namespace feel::host {
+
+struct PidDeviceCore;  // private
+
+struct PidCaps {
+    std::string address;
+    bool feel_device = false;     // its descriptor is feel's protocol: Device::open gives all of feel
+    uint64_t supported_types = 0; // effect_type_bit(t) of every type the device plays itself
+    std::vector<protocol::pid::EffectTypeEntry> effect_types;  // as its descriptor lists them
+    std::vector<Axis> axes;       // Set Effect's Axes Enable
+    int32_t max_effects = 0;      // PID Pool's Simultaneous Effects Max, else the block index range
+    int32_t pool_bytes = 0;       // PID Pool's RAM Pool Size, bytes; 0 when the device does not say
+    bool device_managed_pool = true;
+    bool has_pool_report = false;
+
+    [[nodiscard]] bool supports(EffectType t) const noexcept { return (supported_types & effect_type_bit(t)) != 0; }
+};
+
+class PidDevice {
+public:
+    // Opens "hidraw:/dev/hidrawN", "usb:VID:PID[:SERIAL]", or any of Device::open's
+    // addresses (sim:, unix:, tcp: — a feel device driven as a standard PID one). Reads the
+    // descriptor and maps it, then reads PID Pool. Errors: invalid_parameter (bad address),
+    // disconnected (absent, no permission — the message has the udev rule — or gone),
+    // not_supported (not a PID device, or one without the reports a host needs), timeout.
+    [[nodiscard]] static Result<PidDevice> open(std::string_view address, const OpenOptions& options = {});
+    [[nodiscard]] static Result<PidDevice> attach(std::unique_ptr<transport::Connection> connection, std::string name,
+                                                  const OpenOptions& options = {});
+
+    [[nodiscard]] const PidCaps& capabilities() const noexcept;
+    [[nodiscard]] const protocol::pid::PidLayout& layout() const noexcept;
+    [[nodiscard]] std::string address() const;
+
+    // Create New Effect, PID Block Load, then the effect's reports. Returns the device's
+    // effect block. not_supported for a type the device does not play; device_full when
+    // Block Load says full; invalid_parameter naming the field otherwise.
+    [[nodiscard]] Result<uint16_t> create_effect(const EffectParams& params);
+    // Sends the effect's reports again with new parameters (the same type).
+    Status set_effect(uint16_t block, const EffectParams& params);
+    // iterations: runtime::kEffectIterations (0) for the effect's own, 1.., or
+    // kInfiniteIterations. solo: Op Effect Start Solo.
+    Status start(uint16_t block, int32_t iterations = runtime::kEffectIterations, bool solo = false);
+    Status stop(uint16_t block);
+    Status free_effect(uint16_t block);
+    Status set_gain(int32_t gain);                   // 0..10000
+    Status command(runtime::DeviceControl control);  // PID Device Control
+    [[nodiscard]] Result<protocol::pid::Pool> pool();
+    // The blocks this host created and has not freed.
+    [[nodiscard]] std::vector<uint16_t> effects() const;
+
+    [[nodiscard]] bool connected() const noexcept;
+    // Frees this host's effects, closes the connection. Harmless twice.
+    void close();
+
+private:
+    explicit PidDevice(std::shared_ptr<PidDeviceCore> core) : core_(std::move(core)) {}
+    std::shared_ptr<PidDeviceCore> core_;
+};
+
+// A HID PID device present on this machine (the hidraw nodes whose report descriptor uses
+// the PID page, 0x0F).
+struct PidDeviceInfo {
+    std::string address;      // "hidraw:/dev/hidraw3"
+    std::string usb_address;  // "usb:1209:ffb0" (with ":SERIAL" when it has one); empty off USB
+    std::string name;
+    uint16_t vendor_id = 0, product_id = 0;
+    bool feel_device = false;       // speaks feel's protocol (Device::open)
+    uint64_t supported_types = 0;   // from its descriptor; 0 with `problem` when unusable
+    std::string problem;            // why PidDevice cannot drive it (empty: it can)
+};
+[[nodiscard]] std::vector<PidDeviceInfo> enumerate_pid_devices(const transport::HidrawRoots& roots = {});
+
+}  // namespace feel::host

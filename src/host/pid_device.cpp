@@ -1,0 +1,396 @@
+// PidDevice: any HID PID device, driven by the layout of its own descriptor
+// (feel/host/pid_device.hpp).
+//
+// Design. The caller's thread sends and, for the two gets a PID host makes (PID Block Load
+// after Create New Effect, PID Pool), waits on a condition variable for the reply the I/O
+// thread files. The I/O thread is the only reader of the connection: it files replies and
+// drops input reports (a PID device streams its joystick state; this class does not read
+// it). A device that goes away wakes every wait with the transport's reason.
+#include "feel/host/pid_device.hpp"
+
+#include <atomic>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "descriptor_check.hpp"
+#include "feel/effect_validation.hpp"
+#include "feel/peripheral/peripheral.hpp"
+#include "feel/protocol/pid_effect_reports.hpp"
+#include "feel/transport/transport.hpp"
+
+namespace feel::host {
+
+using protocol::pid::PidLayout;
+using protocol::pid::PidReport;
+using transport::Frame;
+using transport::FrameKind;
+
+struct PidDeviceCore {
+    PidDeviceCore(std::unique_ptr<transport::Connection> c, std::string name, OpenOptions o)
+        : connection(std::move(c)), address(std::move(name)), options(std::move(o)) {}
+    ~PidDeviceCore() { close(); }
+
+    std::unique_ptr<transport::Connection> connection;
+    const std::string address;
+    const OpenOptions options;
+    PidLayout layout;
+    PidCaps caps;
+
+    std::mutex call_mu;  // one caller at a time
+    mutable std::mutex mu;
+    std::condition_variable cv;
+    // Guarded by mu.
+    bool connected = true;
+    std::string gone_reason;
+    FrameKind wanted_kind = FrameKind::busy;  // busy: nothing awaited
+    int wanted_id = -1;
+    std::optional<std::vector<uint8_t>> reply;
+    std::map<uint16_t, EffectParams> effects;
+
+    std::thread io;
+    std::atomic<bool> stopping{false};
+
+    void start() {
+        io = std::thread([this] { run(); });
+    }
+
+    void run() noexcept {
+        while (!stopping) {
+            try {
+                std::optional<Frame> f = connection->receive(std::chrono::milliseconds(50));
+                if (!f) continue;
+                if (f->kind == FrameKind::busy) {
+                    mark_gone("the device " + address + " is in use by another host");
+                    return;
+                }
+                if (f->kind != FrameKind::feature_reply && f->kind != FrameKind::descriptor_reply) continue;
+                std::lock_guard lock(mu);
+                const bool id_matches = f->kind == FrameKind::descriptor_reply ||
+                                        (!f->payload.empty() && f->payload[0] == wanted_id);
+                if (f->kind == wanted_kind && id_matches) {
+                    reply = std::move(f->payload);
+                    cv.notify_all();
+                }
+            } catch (const std::exception& e) {
+                mark_gone(std::string("the device is gone: ") + e.what());
+                return;
+            }
+        }
+    }
+
+    void mark_gone(std::string why) {
+        std::lock_guard lock(mu);
+        if (connected) gone_reason = std::move(why);
+        connected = false;
+        cv.notify_all();
+    }
+
+    Status gone(const std::string& what) const {
+        std::lock_guard lock(mu);
+        return Status::failure(ErrorKind::disconnected,
+                               what + ": " + (gone_reason.empty() ? "the device at " + address + " went away" : gone_reason));
+    }
+
+    Status send(FrameKind kind, std::vector<uint8_t> bytes, const std::string& what) {
+        {
+            std::lock_guard lock(mu);
+            if (!connected) return Status::failure(ErrorKind::disconnected, what + ": " + gone_reason);
+        }
+        try {
+            connection->send(Frame{kind, std::move(bytes)});
+            return Status::success();
+        } catch (const transport::TransportError& e) {
+            mark_gone(e.what());
+            return gone(what);
+        } catch (const std::exception& e) {
+            return Status::failure(ErrorKind::protocol, what + ": " + e.what());
+        }
+    }
+
+    // A get: sends `request`, waits for the reply of that kind (and report id).
+    Result<std::vector<uint8_t>> get(FrameKind request, FrameKind reply_kind, int id, const std::string& what) {
+        {
+            std::lock_guard lock(mu);
+            wanted_kind = reply_kind;
+            wanted_id = id;
+            reply.reset();
+        }
+        std::vector<uint8_t> payload;
+        if (id >= 0) payload.push_back(static_cast<uint8_t>(id));
+        if (Status s = send(request, std::move(payload), what); !s.ok()) return s;
+        std::unique_lock lock(mu);
+        cv.wait_for(lock, options.timeout, [&] { return reply.has_value() || !connected; });
+        wanted_kind = FrameKind::busy;
+        if (reply) {
+            std::vector<uint8_t> out = std::move(*reply);
+            reply.reset();
+            return out;
+        }
+        if (!connected) {
+            lock.unlock();
+            return gone(what);
+        }
+        return Status::failure(ErrorKind::timeout, what + ": the device at " + address + " did not answer within " +
+                                                       std::to_string(options.timeout.count()) + " ms");
+    }
+
+    Result<std::vector<uint8_t>> get_feature(PidReport r, const std::string& what) {
+        return get(FrameKind::get_feature, FrameKind::feature_reply, layout.report(r).id, what);
+    }
+
+    void close() noexcept {
+        stopping = true;
+        if (connection) connection->close();
+        if (io.joinable()) io.join();
+        std::lock_guard lock(mu);
+        connected = false;
+        if (gone_reason.empty()) gone_reason = "the device was closed";
+    }
+};
+
+namespace {
+
+Status encode_error(const std::string& what, const std::string& error, ErrorKind kind = ErrorKind::invalid_parameter) {
+    return Status::failure(kind, what + ": " + error);
+}
+
+}  // namespace
+
+Result<PidDevice> PidDevice::open(std::string_view address, const OpenOptions& options) {
+    transport::Address parsed;
+    try {
+        parsed = transport::Address::parse(address);
+    } catch (const std::invalid_argument& e) {
+        return Status::failure(ErrorKind::invalid_parameter, std::string("open: ") + e.what());
+    }
+    const std::string name = parsed.to_string();
+    std::unique_ptr<transport::Connection> connection;
+    try {
+        if (parsed.kind == transport::Address::Kind::sim) {
+            peripheral::PeripheralOptions po;
+            po.profile = parsed.profile;
+            po.hand = options.sim_hand;
+            po.motion = options.sim_motion;
+            po.runtime.lock_memory = false;
+            connection = peripheral::open_in_process(po);
+        } else {
+            connection = transport::connect(parsed, options.timeout);
+        }
+    } catch (const transport::TransportError& e) {
+        return Status::failure(e.kind() == transport::TransportError::Kind::timeout ? ErrorKind::timeout
+                                                                                    : ErrorKind::disconnected,
+                               "open " + name + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        return Status::failure(ErrorKind::invalid_parameter, "open " + name + ": " + e.what());
+    } catch (const std::exception& e) {
+        return Status::failure(ErrorKind::disconnected, "open " + name + ": " + e.what());
+    }
+    return attach(std::move(connection), name, options);
+}
+
+Result<PidDevice> PidDevice::attach(std::unique_ptr<transport::Connection> connection, std::string name,
+                                    const OpenOptions& options) {
+    if (!connection) return Status::failure(ErrorKind::invalid_parameter, "open " + name + ": no connection");
+    auto core = std::make_shared<PidDeviceCore>(std::move(connection), name, options);
+    core->start();
+    const std::string what = "open " + name;
+    std::lock_guard call(core->call_mu);
+    Result<std::vector<uint8_t>> descriptor =
+        core->get(FrameKind::get_descriptor, FrameKind::descriptor_reply, -1, what + ": read the report descriptor");
+    if (!descriptor) return descriptor.status();
+    std::string error;
+    std::optional<PidLayout> layout = PidLayout::from_bytes(descriptor.value(), error);
+    if (!layout) return Status::failure(ErrorKind::not_supported, what + ": " + error);
+    core->layout = std::move(*layout);
+    PidCaps& caps = core->caps;
+    caps.address = name;
+    caps.feel_device = check_report_descriptor(descriptor.value()).empty();
+    caps.supported_types = core->layout.supported_types();
+    caps.effect_types = core->layout.effect_types();
+    caps.axes = core->layout.axes();
+    caps.max_effects = static_cast<int32_t>(std::min<int64_t>(core->layout.max_block_index(), INT32_MAX));
+    if (core->layout.report(PidReport::pool).present) {
+        Result<std::vector<uint8_t>> pool = core->get_feature(PidReport::pool, what + ": get PID Pool");
+        if (!pool) return pool.status();
+        const protocol::pid::Pool p = protocol::pid::read_pool(core->layout, pool.value());
+        caps.has_pool_report = true;
+        if (p.simultaneous_effects_max && *p.simultaneous_effects_max > 0)
+            caps.max_effects = static_cast<int32_t>(std::min<int64_t>(*p.simultaneous_effects_max, caps.max_effects));
+        if (p.ram_pool_size) caps.pool_bytes = static_cast<int32_t>(std::min<int64_t>(*p.ram_pool_size, INT32_MAX));
+        if (p.device_managed_pool) caps.device_managed_pool = *p.device_managed_pool;
+    }
+    return PidDevice(std::move(core));
+}
+
+const PidCaps& PidDevice::capabilities() const noexcept { return core_->caps; }
+const PidLayout& PidDevice::layout() const noexcept { return core_->layout; }
+std::string PidDevice::address() const { return core_->address; }
+
+bool PidDevice::connected() const noexcept {
+    std::lock_guard lock(core_->mu);
+    return core_->connected;
+}
+
+Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
+    const std::string what = "create " + std::string(effect_type_name(params.type));
+    if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    if (!core_->caps.supports(params.type)) {
+        return Status::failure(ErrorKind::not_supported, what + ": the device at " + core_->address +
+                                                             " does not play " + std::string(effect_type_name(params.type)) +
+                                                             " (its descriptor's Effect Type does not list it)");
+    }
+    std::string error;
+    // Everything is encoded before the device is asked for a block, so that a refusal
+    // leaves no block behind (block 1 stands in; the layout is the same for any block).
+    if (protocol::pid::effect_reports(core_->layout, 1, params, error).empty()) return encode_error(what, error);
+    std::lock_guard call(core_->call_mu);
+    std::optional<std::vector<uint8_t>> create = protocol::pid::create_new_effect(core_->layout, params.type, error);
+    if (!create) return encode_error(what, error, ErrorKind::not_supported);
+    if (Status s = core_->send(FrameKind::set_feature, std::move(*create), what + ": Create New Effect"); !s.ok()) return s;
+    Result<std::vector<uint8_t>> load = core_->get_feature(PidReport::block_load, what + ": get PID Block Load");
+    if (!load) return load.status();
+    const std::optional<protocol::pid::BlockLoad> block = protocol::pid::read_block_load(core_->layout, load.value());
+    if (!block) return Status::failure(ErrorKind::protocol, what + ": PID Block Load from " + core_->address + " is too short");
+    using BlockStatus = protocol::pid::BlockLoad::Status;
+    if (block->status == BlockStatus::full)
+        return Status::failure(ErrorKind::device_full, what + ": the device's effect memory is full (PID Block Load: full)");
+    if (block->status != BlockStatus::success || block->block == 0) {
+        return Status::failure(ErrorKind::protocol, what + ": PID Block Load says " +
+                                                        (block->status == BlockStatus::error ? "error" : "no status") +
+                                                        " (block " + std::to_string(block->block) + ")");
+    }
+    for (const protocol::pid::OutgoingReport& r : protocol::pid::effect_reports(core_->layout, block->block, params, error)) {
+        if (Status s = core_->send(FrameKind::output_report, r.bytes,
+                                   what + ": " + std::string(protocol::pid::pid_report_name(r.report)));
+            !s.ok()) {
+            return s;
+        }
+    }
+    std::lock_guard lock(core_->mu);
+    core_->effects[block->block] = params;
+    return block->block;
+}
+
+Status PidDevice::set_effect(uint16_t block, const EffectParams& params) {
+    const std::string what = "set effect " + std::to_string(block);
+    if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    std::lock_guard call(core_->call_mu);
+    {
+        std::lock_guard lock(core_->mu);
+        auto it = core_->effects.find(block);
+        if (it == core_->effects.end())
+            return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
+        if (it->second.type != params.type) {
+            return Status::failure(ErrorKind::invalid_parameter,
+                                   what + ": type " + std::string(effect_type_name(params.type)) + " differs from the effect's " +
+                                       std::string(effect_type_name(it->second.type)) + " (create a new effect)");
+        }
+    }
+    std::string error;
+    const std::vector<protocol::pid::OutgoingReport> reports = protocol::pid::effect_reports(core_->layout, block, params, error);
+    if (reports.empty()) return encode_error(what, error);
+    for (const protocol::pid::OutgoingReport& r : reports) {
+        if (Status s = core_->send(FrameKind::output_report, r.bytes, what); !s.ok()) return s;
+    }
+    std::lock_guard lock(core_->mu);
+    core_->effects[block] = params;
+    return Status::success();
+}
+
+Status PidDevice::start(uint16_t block, int32_t iterations, bool solo) {
+    const std::string what = "start effect " + std::to_string(block);
+    int32_t loops = iterations;
+    {
+        std::lock_guard lock(core_->mu);
+        auto it = core_->effects.find(block);
+        if (it == core_->effects.end())
+            return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
+        if (loops == runtime::kEffectIterations) loops = it->second.iterations;
+    }
+    if (loops != kInfiniteIterations && loops < 1) {
+        return Status::failure(ErrorKind::invalid_parameter,
+                               what + ": iterations " + std::to_string(iterations) + " (allowed 0 for the effect's own, 1.., or infinite)");
+    }
+    std::string error;
+    std::optional<std::vector<uint8_t>> op = protocol::pid::effect_operation(
+        core_->layout, block, solo ? protocol::pid::Operation::start_solo : protocol::pid::Operation::start, loops, error);
+    if (!op) return encode_error(what, error);
+    std::lock_guard call(core_->call_mu);
+    return core_->send(FrameKind::output_report, std::move(*op), what);
+}
+
+Status PidDevice::stop(uint16_t block) {
+    const std::string what = "stop effect " + std::to_string(block);
+    std::string error;
+    std::optional<std::vector<uint8_t>> op =
+        protocol::pid::effect_operation(core_->layout, block, protocol::pid::Operation::stop, 1, error);
+    if (!op) return encode_error(what, error);
+    std::lock_guard call(core_->call_mu);
+    return core_->send(FrameKind::output_report, std::move(*op), what);
+}
+
+Status PidDevice::free_effect(uint16_t block) {
+    const std::string what = "free effect " + std::to_string(block);
+    {
+        std::lock_guard lock(core_->mu);
+        if (core_->effects.erase(block) == 0)
+            return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
+    }
+    std::string error;
+    std::optional<std::vector<uint8_t>> report = protocol::pid::block_free(core_->layout, block, error);
+    if (!report) return encode_error(what, error);
+    std::lock_guard call(core_->call_mu);
+    return core_->send(FrameKind::output_report, std::move(*report), what);
+}
+
+Status PidDevice::set_gain(int32_t gain) {
+    std::string error;
+    if (!core_->layout.report(PidReport::device_gain).present)
+        return Status::failure(ErrorKind::not_supported, "set gain: the device declares no Device Gain report");
+    std::optional<std::vector<uint8_t>> report = protocol::pid::device_gain(core_->layout, gain, error);
+    if (!report) return encode_error("set gain", error);
+    std::lock_guard call(core_->call_mu);
+    return core_->send(FrameKind::output_report, std::move(*report), "set gain");
+}
+
+Status PidDevice::command(runtime::DeviceControl control) {
+    std::string error;
+    if (!core_->layout.report(PidReport::device_control).present)
+        return Status::failure(ErrorKind::not_supported, "device control: the device declares no PID Device Control report");
+    std::optional<std::vector<uint8_t>> report = protocol::pid::device_control(core_->layout, control, error);
+    if (!report) return encode_error("device control", error, ErrorKind::not_supported);
+    std::lock_guard call(core_->call_mu);
+    if (Status s = core_->send(FrameKind::output_report, std::move(*report), "device control"); !s.ok()) return s;
+    if (control == runtime::DeviceControl::reset) {
+        std::lock_guard lock(core_->mu);
+        core_->effects.clear();  // a reset frees every block (PID 1.0, DC Device Reset)
+    }
+    return Status::success();
+}
+
+Result<protocol::pid::Pool> PidDevice::pool() {
+    if (!core_->layout.report(PidReport::pool).present)
+        return Status::failure(ErrorKind::not_supported, "pool: the device declares no PID Pool report");
+    std::lock_guard call(core_->call_mu);
+    Result<std::vector<uint8_t>> bytes = core_->get_feature(PidReport::pool, "get PID Pool");
+    if (!bytes) return bytes.status();
+    return protocol::pid::read_pool(core_->layout, bytes.value());
+}
+
+std::vector<uint16_t> PidDevice::effects() const {
+    std::lock_guard lock(core_->mu);
+    std::vector<uint16_t> out;
+    for (const auto& [block, params] : core_->effects) out.push_back(block);
+    return out;
+}
+
+void PidDevice::close() {
+    if (!core_) return;
+    for (const uint16_t block : effects()) (void)free_effect(block);
+    core_->close();
+}
+
+}  // namespace feel::host

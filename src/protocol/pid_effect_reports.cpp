@@ -1,0 +1,296 @@
+// EffectParams and device commands as a PID device's own reports (pid_effect_reports.hpp).
+#include "feel/protocol/pid_effect_reports.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "hid_usages.hpp"
+
+namespace feel::protocol::pid {
+namespace {
+
+namespace u = usage::pid;
+
+std::optional<std::vector<uint8_t>> finish(const PidReportWriter& w, std::string& error) {
+    if (!w.ok()) {
+        error = w.error();
+        return std::nullopt;
+    }
+    return w.bytes();
+}
+
+bool has_periodic_block(EffectType t) { return is_periodic(t); }
+bool has_condition_block(EffectType t) {
+    return t == EffectType::spring || t == EffectType::damper || t == EffectType::inertia || t == EffectType::friction;
+}
+
+// The polar angle (hundredths of a degree, compass: from +y clockwise) of a 2-axis vector.
+int32_t polar_of(int32_t x, int32_t y) {
+    double degrees = std::atan2(static_cast<double>(x), static_cast<double>(y)) * 180.0 / 3.14159265358979323846;
+    if (degrees < 0) degrees += 360.0;
+    const auto centi = static_cast<int32_t>(std::lround(degrees * 100.0));
+    return centi >= 36000 ? 0 : centi;
+}
+
+bool set_effect_report(const PidLayout& layout, uint16_t block, const EffectParams& p, uint32_t type_usage,
+                       std::vector<OutgoingReport>& out, std::string& error) {
+    PidReportWriter w(layout, PidReport::set_effect);
+    w.set(u::kEffectBlockIndex, block, Scale::raw);
+    w.select(u::kEffectType, type_usage);
+    w.set_time_or_infinite(u::kDuration, p.duration_us);
+    w.set(u::kGain, p.gain, Scale::level);
+    // Optional fields: absent is fine when the value is their default.
+    w.set(u::kStartDelay, p.start_delay_us, Scale::time, p.start_delay_us != 0);
+    w.set(u::kTriggerRepeatInterval, 0, Scale::time, false);
+    w.set(u::kSamplePeriod, 0, Scale::time, false);
+    // Axes Enable: the effect's axes.
+    for (int i = 0; i < p.axis_count && i < kMaxAxes; ++i) {
+        const uint32_t axis_usage = usage::gd::kX + static_cast<uint32_t>(p.axes[i]);
+        const std::vector<Axis>& named = layout.axes();
+        if (!named.empty() && std::find(named.begin(), named.end(), p.axes[i]) == named.end()) {
+            error = "axes[" + std::to_string(i) + "]: the device's Axes Enable does not name axis " +
+                    std::string(axis_name(p.axes[i]));
+            return false;
+        }
+        if (!w.set(axis_usage, 1, Scale::raw, false, u::kAxesEnable)) break;
+    }
+    // Direction: PID's polar angle (Ordinal 1 of Direction), from where the force comes,
+    // clockwise from +y in hundredths of a degree, as feel's polar direction is (§6.5).
+    int32_t angle = 0;
+    bool directed = true;
+    switch (p.direction.kind) {
+        case DirectionKind::none: directed = false; break;
+        case DirectionKind::polar: angle = p.direction.value[0]; break;
+        case DirectionKind::cartesian:
+            if (p.axis_count != 2) {
+                error = "direction: a cartesian direction on " + std::to_string(p.axis_count) +
+                        " axes has no PID polar angle (allowed: 2 axes, or a polar direction)";
+                return false;
+            }
+            angle = polar_of(p.direction.value[0], p.direction.value[1]);
+            break;
+        case DirectionKind::spherical:
+        case DirectionKind::moments:
+            error = "direction: spherical and moment directions are feel's; a standard PID device takes a polar angle";
+            return false;
+    }
+    w.set(u::kDirectionEnable, directed ? 1 : 0, Scale::raw, directed);
+    if (directed) w.set(usage::ordinal(1), angle, Scale::angle, true, u::kDirection);
+    if (!w.ok()) {
+        error = w.error();
+        return false;
+    }
+    out.push_back({PidReport::set_effect, w.bytes()});
+    return true;
+}
+
+bool condition_reports(const PidLayout& layout, uint16_t block, const EffectParams& p,
+                       std::vector<OutgoingReport>& out, std::string& error) {
+    // With a direction, one block applies along it (§3.1): axis 0's alone.
+    const int blocks = is_directed_condition(p) ? 1 : p.axis_count;
+    for (int i = 0; i < blocks; ++i) {
+        const ConditionBlock& c = p.conditions[i];
+        const std::string where = "conditions[" + std::to_string(i) + "]";
+        if (c.offset_mode == OffsetMode::relative) {
+            error = where + ".offset_mode: relative offsets are feel's; a standard PID device measures from the center";
+            return false;
+        }
+        PidReportWriter w(layout, PidReport::set_condition);
+        w.set(u::kEffectBlockIndex, block, Scale::raw);
+        // The axis: Parameter Block Offset (hid-pidff's way), or Type Specific Block Offset.
+        if (layout.find(PidReport::set_condition, u::kParameterBlockOffset)) {
+            w.set(u::kParameterBlockOffset, i, Scale::raw);
+        } else if (i > 0) {
+            error = where + ": the device's Set Condition names no axis (no Parameter Block Offset): one block only";
+            return false;
+        }
+        w.set(u::kCpOffset, c.offset, Scale::level);
+        w.set(u::kPositiveCoefficient, c.pos_coefficient, Scale::level);
+        w.set(u::kPositiveSaturation, c.pos_saturation, Scale::level, c.pos_saturation != kFullScale);
+        w.set(u::kDeadBand, c.deadband, Scale::level, c.deadband != 0);
+        // A device without the negative side plays the positive one on both.
+        w.set(u::kNegativeCoefficient, c.neg_coefficient, Scale::level, c.neg_coefficient != c.pos_coefficient);
+        w.set(u::kNegativeSaturation, c.neg_saturation, Scale::level, c.neg_saturation != c.pos_saturation);
+        if (!w.ok()) {
+            error = where + ": " + w.error();
+            return false;
+        }
+        out.push_back({PidReport::set_condition, w.bytes()});
+    }
+    return true;
+}
+
+}  // namespace
+
+std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, EffectType type, std::string& error) {
+    const std::optional<uint32_t> type_usage = pid_type_usage(type);
+    if (!type_usage || !layout.supports(type)) {
+        error = "the device does not play " + std::string(effect_type_name(type)) + " (its descriptor's Effect Type lists " +
+                std::to_string(layout.effect_types().size()) + " types)";
+        return std::nullopt;
+    }
+    PidReportWriter w(layout, PidReport::create_new_effect);
+    w.select(u::kEffectType, *type_usage);
+    w.set(usage::gd::kByteCount, 0, Scale::raw, false);
+    return finish(w, error);
+}
+
+std::vector<OutgoingReport> effect_reports(const PidLayout& layout, uint16_t block, const EffectParams& p,
+                                           std::string& error) {
+    std::vector<OutgoingReport> out;
+    const std::optional<uint32_t> type_usage = pid_type_usage(p.type);
+    if (!type_usage || !layout.supports(p.type)) {
+        error = "type: the device does not play " + std::string(effect_type_name(p.type));
+        return {};
+    }
+    if (p.trigger.kind != TriggerKind::none) {
+        error = "trigger: reflexes are not sent to a standard PID device (PID's Trigger Button is not mapped by this host)";
+        return {};
+    }
+    auto writer_error = [&](const PidReportWriter& w, std::string_view where) {
+        error = std::string(where) + ": " + w.error();
+        return std::vector<OutgoingReport>{};
+    };
+    if (has_condition_block(p.type)) {
+        if (!condition_reports(layout, block, p, out, error)) return {};
+    } else if (has_periodic_block(p.type)) {
+        PidReportWriter w(layout, PidReport::set_periodic);
+        w.set(u::kEffectBlockIndex, block, Scale::raw);
+        w.set(u::kMagnitude, p.periodic.magnitude, Scale::level);
+        w.set(u::kOffset, p.periodic.offset, Scale::level, p.periodic.offset != 0);
+        w.set(u::kPhase, p.periodic.phase, Scale::angle, p.periodic.phase != 0);
+        w.set(u::kPeriod, p.periodic.period_us, Scale::time);
+        if (!w.ok()) return writer_error(w, "periodic");
+        out.push_back({PidReport::set_periodic, w.bytes()});
+    } else if (p.type == EffectType::constant) {
+        PidReportWriter w(layout, PidReport::set_constant_force);
+        w.set(u::kEffectBlockIndex, block, Scale::raw);
+        w.set(u::kMagnitude, p.constant.magnitude, Scale::level);
+        if (!w.ok()) return writer_error(w, "constant");
+        out.push_back({PidReport::set_constant_force, w.bytes()});
+    } else if (p.type == EffectType::ramp) {
+        PidReportWriter w(layout, PidReport::set_ramp_force);
+        w.set(u::kEffectBlockIndex, block, Scale::raw);
+        w.set(u::kRampStart, p.ramp.start, Scale::level);
+        w.set(u::kRampEnd, p.ramp.end, Scale::level);
+        if (!w.ok()) return writer_error(w, "ramp");
+        out.push_back({PidReport::set_ramp_force, w.bytes()});
+    }
+    if (supports_envelope(p.type) && !has_condition_block(p.type)) {
+        const bool present = layout.report(PidReport::set_envelope).present;
+        if (p.has_envelope && !present) {
+            error = "envelope: the device declares no Set Envelope report";
+            return {};
+        }
+        if (present) {
+            // Always sent, so that a block reused from an effect with an envelope loses it:
+            // times 0 are no envelope.
+            const Envelope e = p.has_envelope ? p.envelope : Envelope{};
+            PidReportWriter w(layout, PidReport::set_envelope);
+            w.set(u::kEffectBlockIndex, block, Scale::raw);
+            w.set(u::kAttackLevel, e.impulse_level, Scale::level);
+            w.set(u::kAttackTime, e.settle_time_us, Scale::time);
+            w.set(u::kFadeLevel, e.fade_level, Scale::level);
+            w.set(u::kFadeTime, e.fade_time_us, Scale::time);
+            if (!w.ok()) return writer_error(w, "envelope");
+            out.push_back({PidReport::set_envelope, w.bytes()});
+        }
+    }
+    if (!set_effect_report(layout, block, p, *type_usage, out, error)) return {};
+    return out;
+}
+
+std::optional<std::vector<uint8_t>> effect_operation(const PidLayout& layout, uint16_t block, Operation operation,
+                                                     int32_t loop_count, std::string& error) {
+    PidReportWriter w(layout, PidReport::effect_operation);
+    w.set(u::kEffectBlockIndex, block, Scale::raw);
+    const uint32_t op = operation == Operation::start        ? u::kOpEffectStart
+                        : operation == Operation::start_solo ? u::kOpEffectStartSolo
+                                                             : u::kOpEffectStop;
+    w.select(u::kEffectOperation, op);
+    if (operation != Operation::stop) {
+        const FieldPlace loop = layout.find(PidReport::effect_operation, u::kLoopCount);
+        if (loop_count == kInfiniteIterations) {
+            if (!loop) {
+                error = "Effect Operation: the device has no Loop Count, so it cannot play until stopped";
+                return std::nullopt;
+            }
+            const uint32_t size = std::min<uint32_t>(loop.field->report_size, 62);
+            const int64_t all_ones = (int64_t{1} << size) - 1;
+            // The field's null when it has one (out of range), else its maximum: PID's 8-bit
+            // Loop Count reads 255 as "until stopped".
+            if (all_ones > loop.field->logical_max) {
+                w.set_time_or_infinite(u::kLoopCount, kInfiniteUs);
+            } else {
+                w.set(u::kLoopCount, loop.field->logical_max, Scale::raw);
+            }
+        } else {
+            if (loop && loop_count >= loop.field->logical_max && (int64_t{1} << loop.field->report_size) - 1 ==
+                                                                      loop.field->logical_max) {
+                error = "iterations: " + std::to_string(loop_count) + " on this device's Loop Count (0.." +
+                        std::to_string(loop.field->logical_max) + ", whose maximum means until stopped): allowed 1.." +
+                        std::to_string(loop.field->logical_max - 1) + " or infinite";
+                return std::nullopt;
+            }
+            w.set(u::kLoopCount, loop_count, Scale::raw, loop_count != 1);
+        }
+    }
+    return finish(w, error);
+}
+
+std::optional<std::vector<uint8_t>> block_free(const PidLayout& layout, uint16_t block, std::string& error) {
+    PidReportWriter w(layout, PidReport::block_free);
+    w.set(u::kEffectBlockIndex, block, Scale::raw);
+    return finish(w, error);
+}
+
+std::optional<std::vector<uint8_t>> device_control(const PidLayout& layout, runtime::DeviceControl control,
+                                                   std::string& error) {
+    uint32_t usage_value = u::kDcStopAllEffects;
+    switch (control) {
+        case runtime::DeviceControl::actuators_on: usage_value = u::kDcEnableActuators; break;
+        case runtime::DeviceControl::actuators_off: usage_value = u::kDcDisableActuators; break;
+        case runtime::DeviceControl::stop_all: usage_value = u::kDcStopAllEffects; break;
+        case runtime::DeviceControl::reset: usage_value = u::kDcDeviceReset; break;
+        case runtime::DeviceControl::pause: usage_value = u::kDcDevicePause; break;
+        case runtime::DeviceControl::resume: usage_value = u::kDcDeviceContinue; break;
+    }
+    PidReportWriter w(layout, PidReport::device_control);
+    w.select(u::kPidDeviceControl, usage_value);
+    return finish(w, error);
+}
+
+std::optional<std::vector<uint8_t>> device_gain(const PidLayout& layout, int32_t gain, std::string& error) {
+    if (gain < 0 || gain > kFullScale) {
+        error = "gain " + std::to_string(gain) + " is out of range (allowed 0..10000)";
+        return std::nullopt;
+    }
+    PidReportWriter w(layout, PidReport::device_gain);
+    w.set(u::kDeviceGain, gain, Scale::level);
+    return finish(w, error);
+}
+
+std::optional<BlockLoad> read_block_load(const PidLayout& layout, std::span<const uint8_t> bytes) {
+    const std::optional<int64_t> block = read_field(layout, PidReport::block_load, bytes, u::kEffectBlockIndex);
+    if (!block || *block < 0 || *block > 0xFFFF) return std::nullopt;
+    BlockLoad out;
+    out.block = static_cast<uint16_t>(*block);
+    const std::optional<uint32_t> status = read_selection(layout, PidReport::block_load, bytes, u::kBlockLoadStatus);
+    if (status == u::kBlockLoadSuccess) out.status = BlockLoad::Status::success;
+    else if (status == u::kBlockLoadFull) out.status = BlockLoad::Status::full;
+    else if (status == u::kBlockLoadError) out.status = BlockLoad::Status::error;
+    out.ram_pool_available = read_field(layout, PidReport::block_load, bytes, u::kRamPoolAvailable);
+    return out;
+}
+
+Pool read_pool(const PidLayout& layout, std::span<const uint8_t> bytes) {
+    Pool out;
+    out.ram_pool_size = read_field(layout, PidReport::pool, bytes, u::kRamPoolSize);
+    out.simultaneous_effects_max = read_field(layout, PidReport::pool, bytes, u::kSimultaneousEffectsMax);
+    if (auto v = read_field(layout, PidReport::pool, bytes, u::kDeviceManagedPool)) out.device_managed_pool = *v != 0;
+    if (auto v = read_field(layout, PidReport::pool, bytes, u::kSharedParameterBlocks)) out.shared_parameter_blocks = *v != 0;
+    return out;
+}
+
+}  // namespace feel::protocol::pid
