@@ -9,6 +9,8 @@
 #include "device_info.hpp"
 #include "effect_checks.hpp"
 #include "effect_download.hpp"
+#include "emulation/emulation_config.hpp"
+#include "emulation/host_emulation.hpp"
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/codec.hpp"
@@ -223,7 +225,10 @@ Result<Effect> Device::create_effect(const EffectParams& params, std::span<const
         if (Status s = check_effect(params, samples, core_->caps, what); !s.ok()) return s;
         if (!core_->is_connected()) return core_->disconnected_status(what);
         record = core_->add_record(params, std::vector<int16_t>(samples.begin(), samples.end()));
-        if (Status s = download_effect(*core_, *record, what); !s.ok()) {
+        record->host_rendered = emulation::host_renders(core_->caps, params.type);
+        if (Status s = record->host_rendered ? emulation::download(*core_, *record, what)
+                                             : download_effect(*core_, *record, what);
+            !s.ok()) {
             core_->remove_record(record->key);
             return s;
         }
@@ -263,6 +268,7 @@ Status Device::command(runtime::DeviceControl control) {
     protocol::DeviceControlReport r;
     r.control = control_op(control);
     Status s = core_->command(r, what);
+    if (s.ok()) emulation::on_device_command(*core_, control);
     if (s.ok() && control == runtime::DeviceControl::reset) {
         // DISFFC_RESET frees every effect on the device: the host keeps their parameters
         // and the game downloads them again.
