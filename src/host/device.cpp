@@ -101,6 +101,7 @@ Result<Device> Device::open(std::string_view address, const OpenOptions& options
         po.profile = parsed.profile;
         po.hand = options.sim_hand;
         po.motion = options.sim_motion;
+        po.pid_effects_only = options.sim_pid_effects_only;
         // The in-process device's loop shares the game's process: it may ask for SCHED_FIFO
         // for its own thread, but must not lock every page of the whole process in memory
         // (mlockall), which is the game's decision, not a library's.
