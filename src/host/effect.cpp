@@ -166,6 +166,7 @@ Status Effect::start(int32_t iterations, bool solo) {
         std::lock_guard lock(core_->mu);
         record_->host_started = false;  // the game's own start: the device plays it
     }
+    if (s.ok() && solo) emulation::on_device_command(*core_, runtime::DeviceControl::stop_all);
     return s;
 }
 

@@ -162,6 +162,12 @@ Status unload(DeviceCore& core, EffectRecord& record) {
 Status start(DeviceCore& core, EffectRecord& record, int32_t iterations, bool solo, const std::string& what) {
     Held h = held(core, record, what);
     if (!h.status.ok()) return h.status;
+    if (solo) {
+        // DIES_SOLO stops every other effect: the device's too.
+        protocol::DeviceControlReport r;
+        r.control = protocol::DeviceControlOp::stop_all_effects;
+        if (Status s = core.command(r, what); !s.ok()) return s;
+    }
     std::lock_guard lock(h.emulation->mu);
     return status_from_error(h.emulation->renderer.start(h.id, iterations, solo), what);
 }
