@@ -15,6 +15,10 @@ using namespace feel::host::emulation;
 
 namespace {
 
+// The handle meets the wall at 0.05 m/s at the grip (10000 units/s), pushed on by 30% of
+// the motor's force: a brisk contact that the wall must stop and then hold.
+constexpr double kContactSpeed = 10000.0;
+
 // The stiffest hardness (of a ladder falling 5% a step from 10000) that settles, with the
 // next two lower rungs settling too (a lone stable rung above unstable ones is luck).
 int32_t stiffest_stable(const sim::DeviceProfile& profile, const EngineConfig& config, const LoopLink& link) {
@@ -22,7 +26,7 @@ int32_t stiffest_stable(const sim::DeviceProfile& profile, const EngineConfig& c
     int run = 0;
     for (double h = 10000; h >= 10; h *= 0.95) {
         const auto hardness = static_cast<int32_t>(std::lround(h));
-        const bool ok = settled(run_pressed_wall(profile, config, hardness, link, 3000, 0, 5.0), profile);
+        const bool ok = settled(run_pressed_wall(profile, config, hardness, link, 3000, kContactSpeed, 5.0), profile);
         if (ok) {
             if (run == 0) best = hardness;
             if (++run == 3) return best;
@@ -39,7 +43,7 @@ struct RampError {
 
 RampError ramp_error(const sim::DeviceProfile& profile, const EngineConfig& config, const LoopLink& link,
                      int32_t hardness, double v) {
-    const double k_h = config.wall_stiffness * hardness / 10000.0;
+    const double k_h = config.wall_stiffness * static_cast<double>(hardness) / 10000.0;
     const WallRun run = run_ramp_into_wall(profile, config, hardness, link, -200.0, v, 0.4);
     RampError e;
     double sq = 0;

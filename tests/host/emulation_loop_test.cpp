@@ -8,7 +8,10 @@
 //    Flórez, "Stability analysis of a 1 DOF haptic interface using the Routh-Hurwitz
 //    criterion", 2004, for the delay). With the passivity controller off and the
 //    mechanism's dry friction removed (friction hides small cycles), a wall at half the
-//    bound settles and a wall at twice the bound does not.
+//    bound rings down (the swing of the last second is under a tenth of the first's) and a
+//    wall at twice the bound does not (its swing grows until the motor's limit holds it).
+//    Without friction the sensor's counts leave a cycle of a few counts, so "rung down" is
+//    judged against the first swing, not against zero.
 //  * Lag. With the handle moved kinematically at speed v into a wall of stiffness K_h, the
 //    force the handle meets at time t is K_h times its penetration at some t − τ, with
 //    τ ∈ [L, L + T): the error against K_h·p(t) is at most K_h·v·(L + T), plus the
@@ -54,8 +57,10 @@ TEST(EmulatedWallLoop, NaiveHostWallFollowsTheDelayedSampledDataBound) {
         ASSERT_LE(hard, 10000);
         const WallRun below = run_pressed_wall(frictionless, config, soft, link, 3000, 0, 8.0);
         const WallRun above = run_pressed_wall(frictionless, config, hard, link, 3000, 0, 8.0);
-        EXPECT_TRUE(settled(below, frictionless)) << rate.name << ": hardness " << soft << " (0.5x the bound)";
-        EXPECT_FALSE(settled(above, frictionless)) << rate.name << ": hardness " << hard << " (2x the bound)";
+        EXPECT_LT(swing(below, 7.0, 8.0), 0.1 * swing(below, 0.0, 1.0))
+            << rate.name << ": hardness " << soft << " (0.5x the bound)";
+        EXPECT_GE(swing(above, 7.0, 8.0), swing(above, 0.0, 1.0))
+            << rate.name << ": hardness " << hard << " (2x the bound)";
     }
 }
 

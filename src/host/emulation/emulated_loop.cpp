@@ -112,6 +112,14 @@ WallRun run_ramp_into_wall(const sim::DeviceProfile& profile, const EngineConfig
                sim::TargetMotion::parse(spec, duration_s, profile.axis_count), 0.0, x0, 0.0, duration_s);
 }
 
+double swing(const WallRun& run, double from_s, double to_s) {
+    const auto from = static_cast<std::ptrdiff_t>(std::clamp(from_s / kStepS, 0.0, double(run.position.size())));
+    const auto to = static_cast<std::ptrdiff_t>(std::clamp(to_s / kStepS, 0.0, double(run.position.size())));
+    if (to <= from) return 0.0;
+    const auto [lo, hi] = std::minmax_element(run.position.begin() + from, run.position.begin() + to);
+    return *hi - *lo;
+}
+
 bool settled(const WallRun& run, const sim::DeviceProfile& profile) {
     if (run.position.size() < 1000) return false;
     const auto from = run.position.end() - 1000;

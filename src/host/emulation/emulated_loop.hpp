@@ -57,4 +57,7 @@ struct WallRun {
 // below two sensor counts (a handle at rest may sit across one count boundary).
 [[nodiscard]] bool settled(const WallRun& run, const sim::DeviceProfile& profile);
 
+// The handle's peak-to-peak swing over [from_s, to_s) of a run, normalized units.
+[[nodiscard]] double swing(const WallRun& run, double from_s, double to_s);
+
 }  // namespace feel::host::emulation
