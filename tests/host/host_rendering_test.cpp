@@ -19,10 +19,10 @@
 #include <thread>
 
 #include "../support/valid_effects.hpp"
+#include "emulation/emulated_loop.hpp"
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/sim/device_profile.hpp"
-#include "feel/transport/transport.hpp"
 #include "host_test_support.hpp"
 
 namespace feel::host::test {
@@ -30,32 +30,10 @@ namespace {
 
 // A rig whose device has only PID's effect types when `pid_only`.
 SimRig make_rig(const std::string& profile, bool pid_only, const std::string& hand, const std::string& motion) {
-    peripheral::PeripheralOptions po;
-    po.profile = profile;
-    po.hand = hand;
-    po.motion = motion;
-    po.pid_effects_only = pid_only;
-    po.runtime.realtime_priority = false;
-    po.runtime.lock_memory = false;
-    SimRig rig;
-    rig.device = std::make_unique<peripheral::Peripheral>(po);
-    transport::ConnectionPair pair = transport::in_process_pair("sim:" + profile);
-    rig.device->attach(std::move(pair.device));
-    Result<Device> opened = Device::attach(std::move(pair.host), "sim:" + profile);
-    if (!opened) ADD_FAILURE() << opened.status().message;
-    else rig.host.emplace(std::move(opened.value()));
-    return rig;
+    return SimRig::make(profile, hand, motion, {}, pid_only);
 }
 
-EffectParams wall_x(int32_t hardness) {
-    EffectParams p;
-    p.type = EffectType::axis_wall;
-    p.axis_count = 1;
-    p.axes[0] = Axis::x;
-    p.wall.hardness = hardness;
-    p.wall.sense = WallSense::positive;  // free for x < 0, resists beyond 0
-    return p;
-}
+EffectParams wall_x(int32_t hardness) { return emulation::wall_on_x(hardness); }
 
 // The motor force on x once it has settled: after the safety fade-in and the stream's
 // first ramp (half a second), 50 state rounds in a row within 1 unit of each other.

@@ -12,21 +12,11 @@ namespace {
 
 constexpr double kStepS = 1e-3;  // the device's physics step, 1 ms
 
-EffectParams wall_x(int32_t hardness) {
-    EffectParams p;
-    p.type = EffectType::axis_wall;
-    p.axis_count = 1;
-    p.axes[0] = Axis::x;
-    p.wall.hardness = hardness;
-    p.wall.sense = WallSense::positive;
-    return p;
-}
-
 // One loop: the renderer, the link's queues, the held motor force.
 class Loop {
 public:
     Loop(const EngineConfig& config, int32_t hardness, const LoopLink& link) : renderer_(config), link_(link) {
-        const CreateResult r = renderer_.create(wall_x(hardness));
+        const CreateResult r = renderer_.create(wall_on_x(hardness));
         (void)renderer_.start(r.id, HostRenderer::kOwnIterations, false);
         // Reports in flight, one per ms, oldest first (L_up of them ahead of now).
         for (int i = 0; i < link.latency_up_ms; ++i) up_.push_back(0.0f);
@@ -97,6 +87,16 @@ WallRun run(const sim::DeviceProfile& profile, const EngineConfig& config, int32
 }
 
 }  // namespace
+
+EffectParams wall_on_x(int32_t hardness) {
+    EffectParams p;
+    p.type = EffectType::axis_wall;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    p.wall.hardness = hardness;
+    p.wall.sense = WallSense::positive;
+    return p;
+}
 
 WallRun run_pressed_wall(const sim::DeviceProfile& profile, const EngineConfig& config, int32_t hardness,
                          const LoopLink& link, double push, double kick_speed, double duration_s) {

@@ -40,6 +40,9 @@ struct WallRun {
     std::vector<double> sensed;    // the sensed x per ms
 };
 
+// A wall on x at 0, free for x < 0, of this hardness (the wall of the runs below).
+[[nodiscard]] EffectParams wall_on_x(int32_t hardness);
+
 // A free handle (no grip) resting on a wall at 0 (free side x < 0) with `push` of force
 // toward it (a weight), started `kick_speed` units/s into the wall from the surface, run for
 // `duration_s`. The push is added at the motor, outside the wall's loop.
