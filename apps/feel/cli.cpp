@@ -191,6 +191,9 @@ void add_device(CLI::App& app, DeviceArgs& a, UsbDeviceArgs& u) {
     cmd->add_option("--motion", a.motion, "The hand's target motion, as for feel render")->capture_default_str();
     cmd->add_option("--rate", a.rate_hz, "Loop rate, a whole number of Hz 100..the profile's maximum "
                                          "(default: the profile's rate)");
+    cmd->add_flag("--pid-effects-only", a.pid_effects_only,
+                  "Play only HID PID 1.0's effect types, like a standard PID device: a feel host renders the "
+                  "others itself (host emulation, docs/real-devices.md)");
     cmd->add_flag("--allow-remote", a.allow_remote,
                   "Allow a tcp: address that is not loopback (hosts on other machines); needs a token");
     cmd->add_option("--token-file", a.token_file,

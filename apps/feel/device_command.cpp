@@ -139,6 +139,7 @@ peripheral::PeripheralOptions peripheral_options(const DeviceArgs& args) {
     options.hand = args.hand;
     options.motion = args.motion;
     options.loop_rate_hz = checked_rate(args.rate_hz, profile);
+    options.pid_effects_only = args.pid_effects_only;
     return options;
 }
 

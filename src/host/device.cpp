@@ -10,6 +10,8 @@
 #include "device_info.hpp"
 #include "effect_checks.hpp"
 #include "effect_download.hpp"
+#include "emulation/emulation_config.hpp"
+#include "emulation/host_emulation.hpp"
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/codec.hpp"
@@ -100,6 +102,7 @@ Result<Device> Device::open(std::string_view address, const OpenOptions& options
         po.profile = parsed.profile;
         po.hand = options.sim_hand;
         po.motion = options.sim_motion;
+        po.pid_effects_only = options.sim_pid_effects_only;
         // The in-process device's loop shares the game's process: it may ask for SCHED_FIFO
         // for its own thread, but must not lock every page of the whole process in memory
         // (mlockall), which is the game's decision, not a library's.
@@ -231,7 +234,10 @@ Result<Effect> Device::create_effect(const EffectParams& params, std::span<const
         if (Status s = check_effect(params, samples, core_->caps, what); !s.ok()) return s;
         if (!core_->is_connected()) return core_->disconnected_status(what);
         record = core_->add_record(params, std::vector<int16_t>(samples.begin(), samples.end()));
-        if (Status s = download_effect(*core_, *record, what); !s.ok()) {
+        record->host_rendered = emulation::host_renders(core_->caps, params.type);
+        if (Status s = record->host_rendered ? emulation::download(*core_, *record, what)
+                                             : download_effect(*core_, *record, what);
+            !s.ok()) {
             core_->remove_record(record->key);
             return s;
         }
@@ -271,6 +277,7 @@ Status Device::command(runtime::DeviceControl control) {
     protocol::DeviceControlReport r;
     r.control = control_op(control);
     Status s = core_->command(r, what);
+    if (s.ok()) emulation::on_device_command(*core_, control);
     if (s.ok() && control == runtime::DeviceControl::reset) {
         // DISFFC_RESET frees every effect on the device: the host keeps their parameters
         // and the game downloads them again.

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "emulation/host_emulation.hpp"
 #include "feel/protocol/codec.hpp"
 #include "feel/protocol/effect_reports.hpp"
 #include "host_errors.hpp"
@@ -521,6 +522,7 @@ void DeviceCore::on_joystick(const protocol::JoystickInputReport& r) {
         collect_repeats(now, starts);
     }
     send_emulated_starts(starts);
+    emulation::on_joystick(*this, r);
 }
 
 void DeviceCore::collect_repeats(Clock::time_point now, std::vector<uint16_t>& blocks) {

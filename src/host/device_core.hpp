@@ -44,6 +44,10 @@
 #include "feel/protocol/reports.hpp"
 #include "feel/transport/transport.hpp"
 
+namespace feel::host::emulation {
+class HostEmulation;
+}
+
 namespace feel::host {
 
 using Clock = std::chrono::steady_clock;
@@ -71,6 +75,11 @@ struct EffectRecord {
 
     // What the device last said of it (PidState, DeviceStatus pages). Guarded by mu.
     bool device_playing = false;
+
+    // Host rendering (§1.2.c, emulation/host_emulation.hpp): the device does not play this
+    // type, so the host's engine does. Fixed at creation, like `type`.
+    bool host_rendered = false;
+    EffectId host_id{};               // the host engine's effect while resident; guarded by mu
 };
 
 struct Subscriber {
@@ -185,6 +194,8 @@ struct DeviceCore {
     std::optional<Status> stream_error;  // a refused force sample, for the next call
     uint64_t unexpected_frames = 0;      // frames that were not the protocol (ignored)
     std::string last_protocol_problem;
+    // The host-rendered effects (emulation/host_emulation.hpp), made at the first one.
+    std::shared_ptr<emulation::HostEmulation> emulation;
 
     // Guarded by dispatch_mu.
     std::map<uint64_t, Subscriber> subscribers;

@@ -4,6 +4,7 @@
 #include "device_core.hpp"
 #include "effect_checks.hpp"
 #include "effect_download.hpp"
+#include "emulation/host_emulation.hpp"
 #include "feel/host/device.hpp"
 #include "feel/protocol/effect_reports.hpp"
 #include "host_errors.hpp"
@@ -54,7 +55,7 @@ bool Effect::valid() const noexcept {
 bool Effect::downloaded() const noexcept {
     if (!core_ || !record_) return false;
     std::lock_guard lock(core_->mu);
-    return !record_->closed && record_->block != 0;
+    return !record_->closed && (record_->block != 0 || record_->host_id.valid());
 }
 
 EffectType Effect::type() const noexcept { return record_ ? record_->type : EffectType::constant; }
@@ -73,7 +74,7 @@ uint16_t Effect::block() const noexcept {
 bool Effect::emulated() const noexcept {
     if (!core_ || !record_) return false;
     std::lock_guard lock(core_->mu);
-    return record_->emulate_trigger;
+    return record_->emulate_trigger || record_->host_rendered;
 }
 
 // The checks every call about a downloaded effect starts with: a live handle, an open
@@ -109,9 +110,10 @@ Status Effect::download() {
     {
         std::lock_guard lock(core_->mu);
         if (record_->closed) return Status::failure(ErrorKind::invalid_handle, what + ": its device was closed");
-        if (record_->block != 0) return Status::success();  // already there
+        if (record_->block != 0 || record_->host_id.valid()) return Status::success();  // already there
     }
     if (!core_->is_connected()) return core_->disconnected_status(what);
+    if (record_->host_rendered) return emulation::download(*core_, *record_, what);
     return download_effect(*core_, *record_, what);
 }
 
@@ -119,6 +121,7 @@ Status Effect::unload() {
     if (!core_ || !record_) return empty_effect("unload");
     const std::string what = "unload " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
+    if (record_->host_rendered) return emulation::unload(*core_, *record_);
     uint16_t block = 0;
     {
         std::lock_guard lock(core_->mu);
@@ -151,6 +154,7 @@ Status Effect::start(int32_t iterations, bool solo) {
                                e);
     }
     std::lock_guard call(core_->call_mu);
+    if (record_->host_rendered) return emulation::start(*core_, *record_, iterations, solo, what);
     const Live live = live_block(*core_, *record_, what);
     if (!live.status.ok()) return live.status;
     protocol::EffectOperationReport r;
@@ -162,6 +166,7 @@ Status Effect::start(int32_t iterations, bool solo) {
         std::lock_guard lock(core_->mu);
         record_->host_started = false;  // the game's own start: the device plays it
     }
+    if (s.ok() && solo) emulation::on_device_command(*core_, runtime::DeviceControl::stop_all);
     return s;
 }
 
@@ -169,6 +174,7 @@ Status Effect::stop() {
     if (!core_ || !record_) return empty_effect("stop");
     const std::string what = "stop " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
+    if (record_->host_rendered) return emulation::stop(*core_, *record_, what);
     const Live live = live_block(*core_, *record_, what);
     if (!live.status.ok()) return live.status;
     protocol::EffectOperationReport r;
@@ -186,6 +192,7 @@ Result<EffectStatusInfo> Effect::status() {
     if (!core_ || !record_) return empty_effect("status");
     const std::string what = "status of " + effect_label(record_->type);
     std::lock_guard call(core_->call_mu);
+    if (record_->host_rendered) return emulation::status(*core_, *record_, what);
     const Live live = live_block(*core_, *record_, what);
     if (!live.status.ok()) return live.status;
     protocol::EffectStatusRequestReport q;
@@ -245,7 +252,7 @@ Status Effect::set_parameters(const EffectParams& params, uint32_t field_mask, b
     {
         std::lock_guard lock(core_->mu);
         if (record_->closed) return Status::failure(ErrorKind::invalid_handle, what + ": its device was closed");
-        if (record_->block == 0) {
+        if (record_->block == 0 && !record_->host_id.valid()) {
             // Not on the device: keep the parameters for the next download().
             if (restart) {
                 return Status::failure(ErrorKind::invalid_handle, what + ": cannot restart: " +
@@ -257,6 +264,9 @@ Status Effect::set_parameters(const EffectParams& params, uint32_t field_mask, b
         }
     }
     if (!core_->is_connected()) return core_->disconnected_status(what);
+    if (record_->host_rendered) {
+        return emulation::update(*core_, *record_, merged, merged_samples, field_mask, restart, what);
+    }
     return update_effect(*core_, *record_, merged, merged_samples, field_mask, restart, what);
 }
 

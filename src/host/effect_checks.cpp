@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "emulation/emulation_config.hpp"
 #include "feel/effect_validation.hpp"
 #include "host_errors.hpp"
 
@@ -39,9 +40,8 @@ std::string supported_list(const DeviceCaps& caps) {
 std::string effect_label(EffectType type) { return std::string(effect_type_name(type)); }
 
 bool can_create(const DeviceCaps& caps, EffectType type) noexcept {
-    // Host emulation today covers reflexes only, so a type is creatable when the device
-    // plays it itself.
-    return caps.supports(type);
+    // A type the device does not play is rendered by the host (emulation/).
+    return caps.supports(type) || emulation::host_renders(caps, type);
 }
 
 Status check_effect(const EffectParams& p, std::span<const int16_t> samples, const DeviceCaps& caps,

@@ -151,10 +151,37 @@ void refuse_busy(transport::Connection& connection) noexcept {
 
 }  // namespace
 
+namespace {
+
+// The profile as the device presents it: with pid_effects_only, a standard PID device's
+// effect set and no local reflexes.
+sim::DeviceProfile presented_profile(const PeripheralOptions& o) {
+    sim::DeviceProfile p = profile_named(o.profile);
+    if (o.pid_effects_only) {
+        p.supported_types &= pid_effect_types();
+        p.local_reflexes = false;
+    }
+    return p;
+}
+
+}  // namespace
+
+uint64_t pid_effect_types() noexcept {
+    uint64_t bits = 0;
+    for (const EffectType t : {EffectType::constant, EffectType::ramp, EffectType::sine, EffectType::square,
+                               EffectType::triangle, EffectType::saw_up, EffectType::saw_down, EffectType::spring,
+                               EffectType::damper, EffectType::inertia, EffectType::friction,
+                               EffectType::force_profile}) {
+        bits |= effect_type_bit(t);
+    }
+    return bits;
+}
+
 struct Peripheral::Impl {
     explicit Impl(const PeripheralOptions& o)
         : options(o),
-          profile(&profile_named(o.profile)),
+          presented(presented_profile(o)),
+          profile(&presented),
           caps(runtime::capabilities_for(*profile)),
           config(config_for(*profile, o.loop_rate_hz, o.host_watchdog)) {
         const sim::Grip grip = grip_named(o.hand);
@@ -167,6 +194,7 @@ struct Peripheral::Impl {
     }
 
     PeripheralOptions options;
+    sim::DeviceProfile presented;  // the profile, as pid_effects_only presents it
     const sim::DeviceProfile* profile;
     runtime::Capabilities caps;
     runtime::RuntimeConfig config;

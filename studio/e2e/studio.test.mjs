@@ -139,7 +139,7 @@ const quantile = (list, p) => {
 };
 const kLatencyMoves = Number(process.env.FEEL_STUDIO_LATENCY_MOVES ?? 200);
 
-test('1. the palette lists every type on iforce2 and no Dynamics on iforce1', async () => {
+test('1. the palette lists every type on iforce2, and on iforce1 too (its Dynamics host-emulated)', async () => {
   const page = await open();
   const types = await page.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.equal(types.length, 33, `iforce2 palette: ${types}`);
@@ -148,8 +148,9 @@ test('1. the palette lists every type on iforce2 and no Dynamics on iforce1', as
   const p1 = await open(iforce1.url);
   const types1 = await p1.$$eval('#palette li.type', (l) => l.map((e) => e.dataset.type));
   assert.ok(types1.length > 0);
-  assert.equal(types1.filter((t) => t.startsWith('dynamic_')).length, 0, `iforce1 palette: ${types1}`);
-  assert.equal(await p1.locator('#palette details[data-class="dynamic"]').count(), 0);
+  // iforce1 plays no Dynamics itself; the host renders them (docs/real-devices.md, "Host emulation").
+  assert.equal(types1.length, 33, `iforce1 palette: ${types1}`);
+  assert.equal(types1.filter((t) => t.startsWith('dynamic_')).length, 8, `iforce1 palette: ${types1}`);
   await p1.close();
   await page.close();
 });

@@ -242,6 +242,9 @@ struct OpenOptions {
     // (peripheral::PeripheralOptions).
     std::string sim_hand = "firm";
     std::string sim_motion = "hold:0";
+    // sim: only, peripheral::PeripheralOptions::pid_effects_only: the in-process device
+    // plays only HID PID 1.0's effect types, and the host renders the others (emulated).
+    bool sim_pid_effects_only = false;
 };
 
 // An open device. A shared handle: copies refer to the same device, which closes when the

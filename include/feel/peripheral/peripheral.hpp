@@ -45,7 +45,19 @@ struct PeripheralOptions {
     // silent host nor the runtime's fade. A standard PID host (hid-pidff) sends nothing
     // while its effects play and has no keep-alive.
     bool host_watchdog = true;
+    // true: the device plays only the effect types HID PID 1.0 has (constant, ramp, the
+    // five periodic waves, spring, damper, inertia, friction, custom force), as a standard
+    // PID wheel or stick does; it refuses every other type (walls, barriers, textures,
+    // sweeps, smart pop, vector force, angle conditions, Dynamics) with not_supported, its
+    // Device Info says so, and it runs no reflexes. A feel host then renders those types
+    // itself (host emulation, docs/real-devices.md). The session's own vendor reports
+    // (sequence, Command Status, Device Info, Device Status, force streaming) stay: a host
+    // that drives a device through PID's reports alone is issue 13's hidraw mapping.
+    bool pid_effects_only = false;
 };
+
+// The effect types of HID PID 1.0 (effect_type_bit() of each).
+[[nodiscard]] uint64_t pid_effect_types() noexcept;
 
 struct PeripheralStats {
     runtime::DeviceRuntimeStats runtime{};

@@ -1,0 +1,155 @@
+// Host rendering (§1.2.c, src/host/emulation): effect types the device does not play are
+// rendered by the host's engine on the positions the device reports and streamed back as a
+// force. Against the in-process simulated device: the I-FORCE 1.x class (no Dynamics) and
+// a device with only HID PID 1.0's effect types (pid_effects_only: no walls, textures...).
+//
+// Truth. A wall's force is the spring law of §3.7: F = −K·(h/10000)·penetration, with K the
+// profile's hardness-10000 stiffness (sim::engine_config_for, docs/stability.md) and the
+// penetration measured from the surface. The handle here is held still by a kinematic hand,
+// so the lag of the host's loop (an update period plus the link's latency) costs nothing
+// and what remains is resolution: the device senses the position in whole sensor counts q
+// (both renderings see that same count), and the host reads it from the Joystick Input
+// report rounded to a whole unit (≤ 0.5 unit), then rounds its force to a whole unit
+// (≤ 0.5). So |F_host − K_h·p_sensed| ≤ K_h·0.5 + 0.5 + the device's own rounding, and
+// |F − K_h·p_true| ≤ K_h·q/2 plus those, where p_true is the hand's position.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "../support/valid_effects.hpp"
+#include "emulation/emulated_loop.hpp"
+#include "feel/host/device.hpp"
+#include "feel/peripheral/peripheral.hpp"
+#include "feel/sim/device_profile.hpp"
+#include "host_test_support.hpp"
+
+namespace feel::host::test {
+namespace {
+
+// A rig whose device has only PID's effect types when `pid_only`.
+SimRig make_rig(const std::string& profile, bool pid_only, const std::string& hand, const std::string& motion) {
+    return SimRig::make(profile, hand, motion, {}, pid_only);
+}
+
+EffectParams wall_x(int32_t hardness) { return emulation::wall_on_x(hardness); }
+
+// The motor force on x once it has settled: after the safety fade-in and the stream's
+// first ramp (half a second), 50 state rounds in a row within 1 unit of each other.
+double settled_force_x(Device& dev) {
+    std::this_thread::sleep_for(500ms);
+    double last = 1e9;
+    int same = 0;
+    for (int i = 0; i < 2000 && same < 50; ++i) {
+        Result<InputState> in = dev.wait_input(200ms);
+        if (!in) continue;
+        const double f = in->force[0];
+        same = std::abs(f - last) <= 1.0 ? same + 1 : 0;
+        last = f;
+    }
+    return last;
+}
+
+TEST(HostRendering, Iforce1DynamicsAreCreatedAndPlayedByTheHost) {
+    SimRig rig = make_rig("iforce1", false, "firm", "hold:0");
+    Device& dev = *rig.host;
+    ASSERT_FALSE(dev.capabilities().supports(EffectType::dynamic_recoil));
+    // EnumEffects lists what the host can create: the device's types and the host's.
+    bool listed = false;
+    for (const EffectSupport& s : dev.effects(EffectClass::dynamic)) listed |= s.type == EffectType::dynamic_recoil;
+    EXPECT_TRUE(listed);
+
+    Result<Effect> recoil = dev.create_effect(feel::test::valid_effect(EffectType::dynamic_recoil));
+    ASSERT_TRUE(recoil) << recoil.status().message;
+    EXPECT_TRUE(recoil->emulated());
+    EXPECT_TRUE(recoil->downloaded());
+    EXPECT_EQ(recoil->block(), 0);  // no device block: the host holds it
+    EXPECT_EQ(recoil->status()->state, runtime::ReportedEffectState::stopped);
+
+    ASSERT_TRUE(recoil->start().ok());
+    EffectStatusInfo st = recoil->status().value();
+    EXPECT_TRUE(st.emulated);
+    EXPECT_EQ(st.state, runtime::ReportedEffectState::emulated);
+    // The blast pushes from 180° (south): the force reaches the device's motors. Every
+    // state round is watched until the recoil ends by itself.
+    float peak = 0;
+    const auto deadline = std::chrono::steady_clock::now() + 3s;
+    while (std::chrono::steady_clock::now() < deadline &&
+           recoil->status()->state != runtime::ReportedEffectState::stopped) {
+        if (Result<InputState> in = dev.wait_input(50ms)) peak = std::max(peak, std::abs(in->force[1]));
+    }
+    EXPECT_GT(peak, 100.0f) << "the host's force never reached the device";
+    // The host then sends one zero and the motors rest.
+    EXPECT_EQ(recoil->status()->state, runtime::ReportedEffectState::stopped);
+    EXPECT_EQ(recoil->status()->last_end, PlayEnd::finished);
+    EXPECT_TRUE(wait_until([&] { return std::abs(dev.input().force[1]) < 1.0f; }));
+}
+
+TEST(HostRendering, TypesTheDevicePlaysStayOnTheDevice) {
+    SimRig rig = make_rig("iforce1", false, "firm", "hold:0");
+    Result<Effect> spring = rig.host->create_effect(feel::test::valid_effect(EffectType::spring));
+    ASSERT_TRUE(spring) << spring.status().message;
+    EXPECT_FALSE(spring->emulated());
+    EXPECT_NE(spring->block(), 0);
+    ASSERT_TRUE(spring->start().ok());
+    EXPECT_EQ(spring->status()->state, runtime::ReportedEffectState::playing);
+}
+
+TEST(HostRendering, PidOnlyDeviceRefusesAWallItselfAndTheHostRendersIt) {
+    SimRig rig = make_rig("iforce2", true, "kinematic", "hold:400");
+    Device& dev = *rig.host;
+    EXPECT_FALSE(dev.capabilities().supports(EffectType::axis_wall));
+    EXPECT_FALSE(dev.capabilities().supports(EffectType::texture));
+    EXPECT_TRUE(dev.capabilities().supports(EffectType::spring));
+    Result<Effect> wall = dev.create_effect(wall_x(1000));
+    ASSERT_TRUE(wall) << wall.status().message;
+    EXPECT_TRUE(wall->emulated());
+}
+
+// The same wall rendered by the device (iforce2) and by the host (iforce2 with PID's
+// effect types only), against the spring law. Both devices are the joystick's mechanics.
+TEST(HostRendering, HostWallMatchesTheDeviceWallAndTheSpringLaw) {
+    const sim::DeviceProfile& profile = *sim::find_device_profile("iforce2");
+    const double k = sim::engine_config_for(profile).wall_stiffness;  // hardness 10000
+    const int32_t hardness = 2000;
+    const double k_h = k * hardness / 10000.0;
+    const double p_true = 400.0;                     // the kinematic hand's x
+    const double q = 20000.0 / profile.axes[0].sensor_counts;  // one sensor count
+    const double expected = -k_h * p_true;          // the wall pushes toward −x
+
+    double force[2] = {};
+    for (int host = 0; host < 2; ++host) {
+        SimRig rig = make_rig("iforce2", host == 1, "kinematic", "hold:400");
+        Result<Effect> wall = rig.host->create_effect(wall_x(hardness));
+        ASSERT_TRUE(wall) << wall.status().message;
+        EXPECT_EQ(wall->emulated(), host == 1);
+        ASSERT_TRUE(wall->start().ok());
+        force[host] = settled_force_x(*rig.host);
+    }
+    // Each against the law: the sensed position is within half a count of the hand's
+    // (a count is K_h·q of force), plus the reports' and the host's rounding.
+    const double law_tolerance = k_h * q / 2 + k_h * 0.5 + 1.0;
+    EXPECT_NEAR(force[0], expected, law_tolerance) << "device-side wall";
+    EXPECT_NEAR(force[1], expected, law_tolerance) << "host-rendered wall";
+    // Against each other: the same sensed count; the host reads it rounded to a unit.
+    EXPECT_NEAR(force[1], force[0], k_h * 0.5 + 1.0);
+}
+
+TEST(HostRendering, ResetFreesHostEffectsAndDownloadBringsThemBack) {
+    SimRig rig = make_rig("iforce1", false, "firm", "hold:0");
+    Device& dev = *rig.host;
+    Result<Effect> e = dev.create_effect(feel::test::valid_effect(EffectType::dynamic_recoil));
+    ASSERT_TRUE(e) << e.status().message;
+    ASSERT_TRUE(dev.command(runtime::DeviceControl::reset).ok());
+    EXPECT_FALSE(e->downloaded());
+    Status s = e->start();
+    EXPECT_EQ(s.kind, ErrorKind::invalid_handle) << s.message;
+    EXPECT_NE(s.message.find("reset"), std::string::npos) << s.message;
+    ASSERT_TRUE(e->download().ok());
+    EXPECT_TRUE(e->downloaded());
+    EXPECT_TRUE(e->start().ok());
+}
+
+}  // namespace
+}  // namespace feel::host::test
