@@ -294,7 +294,7 @@ ConditionBlock read_condition(Reader& r, const std::string& where, Axis axis, bo
 }
 
 void read_type_specific(Reader& r, DiType type, const DiEffect& di, const std::vector<Axis>& axes,
-                        format::EffectSpec& spec, Reader& effect_reader) {
+                        format::EffectSpec& spec, Reader& effect_reader, std::vector<std::string>& notes) {
     const std::string& where = r.where();
     EffectParams& p = spec.params;
     auto expect_size = [&](size_t want, const char* structure) {
@@ -344,7 +344,17 @@ void read_type_specific(Reader& r, DiType type, const DiEffect& di, const std::v
                      std::to_string(24 * axes.size()) + " (one per axis)");
             }
             const bool per_axis = blocks == axes.size();
-            for (size_t i = 0; i < blocks; ++i) p.conditions[i] = read_condition(r, where, axes[i], per_axis);
+            for (size_t i = 0; i < blocks; ++i) {
+                p.conditions[i] = read_condition(r, where, axes[i], per_axis);
+                const ConditionBlock& c = p.conditions[i];
+                if (c.pos_saturation == 0 && c.neg_saturation == 0 && (c.pos_coefficient != 0 || c.neg_coefficient != 0)) {
+                    // Force Editor writes 0; drivers without saturation support ignore it, feel does not.
+                    notes.push_back(where + ": DICONDITION[" + std::to_string(i) +
+                                    "] has both saturations 0, so the condition gives no force in feel (DirectInput "
+                                    "drivers without saturation support ignore them); raise pos_saturation and "
+                                    "neg_saturation to feel it");
+                }
+            }
             // One block on several axes acts along the direction (a directed condition); one
             // block per axis acts on each axis, and DirectInput ignores the direction then.
             if (per_axis) p.direction = Direction{};
@@ -483,7 +493,7 @@ NamedEffect read_effect(std::string_view bytes, size_t begin, size_t end, size_t
     }
     if (di.cb_type_specific != 0) {
         Reader t = n.data_chunk(di.cb_type_specific, "the type-specific parameters");
-        read_type_specific(t, type, di, axes, out.spec, n);
+        read_type_specific(t, type, di, axes, out.spec, n, notes);
     } else {
         fail(where + ": cbTypeSpecificParams = 0: " + kDiTypeNames[static_cast<size_t>(type)] +
              " needs its type-specific structure");
