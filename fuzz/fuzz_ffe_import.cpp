@@ -1,0 +1,30 @@
+// libFuzzer target: arbitrary bytes as a DirectInput effect file (.ffe) must never crash
+// the importer (src/import/ffe_import.cpp): it either throws ImportError with a message or
+// gives a sensation, and every sensation it gives can be written and read back.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "feel/format/sensation_file.hpp"
+#include "feel/import/import.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+    feel::import::ImportResult result;
+    try {
+        result = feel::import::import_ffe(bytes, {});
+    } catch (const feel::import::ImportError& e) {
+        if (std::string_view(e.what()).empty()) std::abort();  // every refusal says why
+        return 0;
+    }
+    feel::format::SensationFile file;
+    file.sensations.push_back(result.sensation);
+    const std::string text = feel::format::write_sensation_file(file);
+    if (!(feel::format::parse_sensation_file(text, "fuzz.json") == file)) {
+        std::fprintf(stderr, "the imported sensation does not survive a round trip:\n%s\n", text.c_str());
+        std::abort();
+    }
+    return 0;
+}
