@@ -1,6 +1,8 @@
 // libFuzzer target: arbitrary bytes as a DirectInput effect file (.ffe) must never crash
 // the importer (src/import/ffe_import.cpp): it either throws ImportError with a message or
-// gives a sensation, and every sensation it gives can be written and read back.
+// gives a sensation, and every sensation it gives can be written and read back with the
+// same parameters and samples (the reader also records which optional fields the text
+// spelled out, which the importer leaves empty, so whole models are not compared).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +24,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     feel::format::SensationFile file;
     file.sensations.push_back(result.sensation);
     const std::string text = feel::format::write_sensation_file(file);
-    if (!(feel::format::parse_sensation_file(text, "fuzz.json") == file)) {
+    const feel::format::SensationFile back = feel::format::parse_sensation_file(text, "fuzz.json");
+    bool same = back.sensations.size() == 1 && back.sensations[0].effects.size() == result.sensation.effects.size();
+    for (size_t i = 0; same && i < result.sensation.effects.size(); ++i) {
+        same = back.sensations[0].effects[i].params == result.sensation.effects[i].params &&
+               back.sensations[0].effects[i].samples == result.sensation.effects[i].samples;
+    }
+    if (!same) {
         std::fprintf(stderr, "the imported sensation does not survive a round trip:\n%s\n", text.c_str());
         std::abort();
     }

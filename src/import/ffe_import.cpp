@@ -344,6 +344,10 @@ void read_type_specific(Reader& r, DiType type, const DiEffect& di, const std::v
                      std::to_string(24 * axes.size()) + " (one per axis)");
             }
             const bool per_axis = blocks == axes.size();
+            if (!per_axis && p.direction.kind == DirectionKind::none) {
+                fail(where + ": one DICONDITION on " + std::to_string(axes.size()) +
+                     " axes acts along a direction, and the effect has none (rglDirection)");
+            }
             for (size_t i = 0; i < blocks; ++i) {
                 p.conditions[i] = read_condition(r, where, axes[i], per_axis);
                 const ConditionBlock& c = p.conditions[i];
