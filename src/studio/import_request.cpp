@@ -65,9 +65,12 @@ nlohmann::json import_into_workspace(Workspace& workspace, const nlohmann::json&
                                  " bytes (1 MiB): use `feel import` for larger ones");
     }
     import::ImportOptions options;
-    if (m.contains("axis")) options.axis = axis_from_name(m["axis"].get<std::string>());
+    // The axis belongs to AHAP and WAV: the file bar always sends its choice, and a .ffe,
+    // whose effects name their own axes, does not use it.
+    if (m.contains("axis") && import::detect_format(bytes, file_name) != import::SourceFormat::ffe) {
+        options.axis = axis_from_name(m["axis"].get<std::string>());
+    }
     import::ImportResult result = import::import_sensation(bytes, file_name, options);
-    // --axis belongs to AHAP and WAV; the Studio's axis choice is simply unused for .ffe.
     format::SensationFile file;
     const std::string name = result.sensation.name;
     file.sensations.push_back(std::move(result.sensation));
