@@ -59,7 +59,7 @@ test-studio: build
 # Every parser and decoder under libFuzzer (clang), each for a bounded time: the
 # sensation-file reader, the protocol's report decoder and the device's protocol session.
 # New inputs go to the build tree; the committed seeds in fuzz/corpus/<target> are only read.
-FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session usb_requests ff_translation
+FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session usb_requests ff_translation ffe_import ahap_import
 fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DFEEL_WERROR=$(WERROR) -DFEEL_BUILD_FUZZ=ON -DFEEL_BUILD_TESTS=OFF -DFEEL_BUILD_BENCH=OFF

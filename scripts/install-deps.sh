@@ -19,6 +19,7 @@ packages=(
   libaio-dev           # feel device --usb: FunctionFS endpoints' asynchronous I/O
   qemu-system-x86 cpio kmod  # make test-linux: boot Debian's kernel in a VM (initramfs, depmod)
   joystick libsdl2-tests     # make test-linux: the judges fftest and SDL2's testhaptic, copied into the VM
+  libsndfile1-dev      # feel import: decoding WAV files (src/import/wav_import.cpp)
 )
 
 missing=()

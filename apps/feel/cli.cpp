@@ -11,6 +11,7 @@
 #include "bridge_command.hpp"
 #include "cli.hpp"
 #include "device_command.hpp"
+#include "import_command.hpp"
 #include "feel/format/sensation_file.hpp"
 #include "feel/version.h"
 #include "studio_command.hpp"
@@ -231,7 +232,7 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(exit_codes("the loop cannot run"));
 }
 
-constexpr const char* kCommands = "render, check, schema, devices, caps, descriptor, play, stream, monitor, device, bench, studio, bridge";
+constexpr const char* kCommands = "render, check, schema, import, devices, caps, descriptor, play, stream, monitor, device, bench, studio, bridge";
 
 void add_bridge(CLI::App& app, BridgeArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -358,6 +359,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     add_render(app, render_args, duration_s, duration);
     add_check(app, check_args);
     add_schema(app);
+    ImportArgs import_args;
+    add_import(app, import_args);
     add_devices(app, devices_args);
     add_caps(app, caps_args);
     add_descriptor(app, descriptor_args);
@@ -398,6 +401,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_render(render_args, out, err);
         } else if (app.got_subcommand("check")) {
             run_check(check_args, out, err);
+        } else if (app.got_subcommand("import")) {
+            run_import(import_args, out, err);
         } else if (app.got_subcommand("schema")) {
             out << format::json_schema();
         } else if (app.got_subcommand("devices")) {

@@ -8,6 +8,7 @@
 
 #include "feel/effect_type.hpp"
 #include "feel/engine.hpp"
+#include "import_request.hpp"
 #include "protocol_check.hpp"
 
 namespace feel::studio {
@@ -117,6 +118,10 @@ std::vector<json> LiveSession::handle(std::string_view text) {
     const std::string type = m["type"].get<std::string>();
     try {
         if (type == "set_sensation") return {set_sensation(m)};
+        if (type == "import_file") {
+            if (!workspace_) return {error_reply("import_file: this session has no workspace to import into", type)};
+            return {import_into_workspace(*workspace_, m)};
+        }
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
             pointer_received_ = std::chrono::steady_clock::now();

@@ -32,6 +32,7 @@
 namespace feel::studio {
 
 class ProtocolSchema;
+class Workspace;
 
 class LiveSession {
 public:
@@ -42,6 +43,8 @@ public:
 
     // Handles one message (a WebSocket text frame); returns the replies. Never throws.
     std::vector<nlohmann::json> handle(std::string_view text);
+    // Where `import_file` saves what it imports (docs/import.md); without one it is refused.
+    void set_workspace(Workspace* workspace) noexcept { workspace_ = workspace; }
     // The next state frame: the device's reports since the last frame.
     nlohmann::json state_frame();
     // Whether the device has reported since the last frame.
@@ -68,6 +71,7 @@ private:
     std::shared_ptr<StudioDevice> device_;
     const ProtocolSchema& schema_;
     std::vector<Slot> slots_;
+    Workspace* workspace_ = nullptr;
     uint64_t last_sample_ = 0;
     uint32_t buttons_ = 0;
     uint32_t hats_ = 0;

@@ -210,6 +210,7 @@ public:
         ws_.async_accept(request_, [self = shared_from_this()](beast::error_code ec) {
             if (ec) return;
             self->session_.emplace(self->shared_.device, self->shared_.schema);
+            self->session_->set_workspace(&self->shared_.workspace);
             ++self->shared_.sessions;
             json hello = self->shared_.hello;
             hello["grip"] = self->shared_.device->grip();

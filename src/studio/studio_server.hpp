@@ -25,7 +25,7 @@ struct StudioOptions {
 
 // Bounds (docs/studio.md, "Safety").
 inline constexpr size_t kMaxHttpBodyBytes = 3u << 20;     // a JSON request with a 1 MiB file in it
-inline constexpr size_t kMaxWebSocketMessageBytes = 256u << 10;
+inline constexpr size_t kMaxWebSocketMessageBytes = 1536u << 10;  // an import_file with a 1 MiB file (base64) in it
 inline constexpr size_t kMaxQueuedFrames = 64;             // per browser; state frames are skipped past 4
 // State frames: 60 a second at rest; while the browser interacts (any message in the last
 // kInteractiveWindow) a frame goes as soon as the device has reported something new, at

@@ -35,6 +35,14 @@ export const schema = {
     hat: { hat: { type: 'integer', min: 1, max: 4 }, down: { type: 'boolean' } },
     grip: { grip: { type: 'string', maxLength: 16, enum: ['loose', 'firm', 'stiff'] } },
     gain: { gain: { type: 'integer', min: 0, max: 10000 } },
+    // a .ffe, .ahap or .wav file to import into the workspace (docs/import.md): its name and
+    // its bytes in base64, at most 1 MiB (1048576 bytes, 1398104 characters); the axis
+    // AHAP and WAV drive
+    import_file: {
+      name: { type: 'string', maxLength: 200 },
+      data: { type: 'string', maxLength: 1398104 },
+      axis: { type: 'string', maxLength: 2, enum: ['x', 'y', 'z', 'rx', 'ry', 'rz'], optional: true },
+    },
   },
   // server -> browser
   server: {
@@ -66,6 +74,13 @@ export const schema = {
       errors: { type: 'array', maxItems: 64 },
       apply_us: { type: 'number' },
       restarted: { type: 'array', maxItems: 32 },
+    },
+    // the answer to import_file: the new workspace file, its text, what was not mapped
+    imported: {
+      file: { type: 'string', maxLength: 200 },
+      sensation: { type: 'string', maxLength: 64 },
+      text: { type: 'string', maxLength: 1048576 },
+      notes: { type: 'array', maxItems: 64 },
     },
     error: {
       message: { type: 'string', maxLength: 2000 },

@@ -6,6 +6,7 @@ import { type Doc, emptyDoc, fileText, parseFile } from '../document';
 import { api } from '../files';
 import type { Live } from '../live';
 import type { State, Store } from '../store';
+import { importView } from './import';
 
 export function filebarView(root: HTMLElement, store: Store, live: Live, status: (t: string) => void) {
   const run = (f: () => Promise<void>) => () => f().catch((e: Error) => status(e.message));
@@ -36,6 +37,7 @@ export function filebarView(root: HTMLElement, store: Store, live: Live, status:
     }
   };
   let gainTimer = 0;
+  const importer = importView(store, live, status);
   return (s: State) => {
     const doc = s.doc;
     const title = `${doc.file ?? (doc.readOnly ? 'example (read-only)' : 'unsaved')}${s.dirty ? ' •' : ''}`;
@@ -75,6 +77,7 @@ export function filebarView(root: HTMLElement, store: Store, live: Live, status:
         store.load(parseFile(r.text, to, false));
         status(`combined into ${to}`);
       }) }, 'Combine…'),
+      importer,
       h('span', { class: 'sep' }),
       h('select', { id: 'sensation', onchange: (e: Event) => {
         const i = Number((e.target as HTMLSelectElement).value);
