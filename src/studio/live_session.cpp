@@ -8,6 +8,7 @@
 
 #include "feel/effect_type.hpp"
 #include "feel/engine.hpp"
+#include "export_request.hpp"
 #include "protocol_check.hpp"
 
 namespace feel::studio {
@@ -117,6 +118,7 @@ std::vector<json> LiveSession::handle(std::string_view text) {
     const std::string type = m["type"].get<std::string>();
     try {
         if (type == "set_sensation") return {set_sensation(m)};
+        if (type == "export_code") return {export_reply(m)};  // export_request.hpp
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
             pointer_received_ = std::chrono::steady_clock::now();

@@ -35,6 +35,14 @@ export const schema = {
     hat: { hat: { type: 'integer', min: 1, max: 4 }, down: { type: 'boolean' } },
     grip: { grip: { type: 'string', maxLength: 16, enum: ['loose', 'firm', 'stiff'] } },
     gain: { gain: { type: 'integer', min: 0, max: 10000 } },
+    // code export (views/export.ts): the current sensation as set_sensation sends it, as code
+    export_code: {
+      seq: { type: 'integer', min: 0, max: 2147483647 },
+      lang: { type: 'string', maxLength: 16, enum: ['cpp', 'c', 'library'] },
+      name: { type: 'string', maxLength: 64 },
+      file: { type: 'string', maxLength: 200, optional: true },
+      effects: { type: 'array', maxItems: 32 },
+    },
   },
   // server -> browser
   server: {
@@ -66,6 +74,13 @@ export const schema = {
       errors: { type: 'array', maxItems: 64 },
       apply_us: { type: 'number' },
       restarted: { type: 'array', maxItems: 32 },
+    },
+    // the answer to export_code (src/studio/export_request.cpp, src/codegen)
+    exported: {
+      seq: { type: 'integer', min: 0, max: 2147483647 },
+      lang: { type: 'string', maxLength: 16, enum: ['cpp', 'c', 'library'] },
+      filename: { type: 'string', maxLength: 100 },
+      code: { type: 'string', maxLength: 8000000 },
     },
     error: {
       message: { type: 'string', maxLength: 2000 },
