@@ -67,8 +67,8 @@ static bool create(feel_device* device, const feel_effect_params* params, const 
             body += "    if (!create(device, &p, " + string_literal(what) + ", " + samples + ")) return false;\n";
         }
         out += decls;
-        out += "\n/* \"" + comment_text(s.name) + "\"" +
-               (s.description ? ": " + comment_text(*s.description) : std::string()) + " */\n";
+        out += "\n/*\n" + comment_lines("\"" + s.name + "\"" + (s.description ? ": " + *s.description : std::string()), " * ") +
+               " */\n";
         out += "static bool create_" + es.ident + "(feel_device* device) {\n    feel_effect_params p;\n"
                "    FEEL_INIT(p);\n" + body + "    return true;\n}\n";
         table += "    {" + string_literal(s.name) + ", create_" + es.ident + ", " + std::to_string(first) + ", " +

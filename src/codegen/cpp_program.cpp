@@ -300,8 +300,7 @@ feel::host::Effect create(feel::host::Device& device, const feel::EffectParams& 
             body += effect_statements(spec, what, samples_name);
         }
         out += samples_decls;
-        out += "\n// \"" + comment_text(s.name) + "\"" +
-               (s.description ? ": " + comment_text(*s.description) : std::string()) + "\n";
+        out += "\n" + comment_lines("\"" + s.name + "\"" + (s.description ? ": " + *s.description : std::string()), "// ");
         out += "std::vector<feel::host::Effect> create_" + es.ident + "(feel::host::Device& device) {\n";
         out += "    std::vector<feel::host::Effect> effects;\n" + body + "    return effects;\n}\n";
     }

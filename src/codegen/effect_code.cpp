@@ -245,6 +245,26 @@ std::string comment_text(std::string_view text) {
     return out;
 }
 
+std::string comment_lines(std::string_view text, std::string_view lead, size_t width) {
+    const std::string flat = comment_text(text);
+    std::string out;
+    std::string line(lead);
+    size_t at = 0;
+    while (at < flat.size()) {
+        const size_t space = flat.find(' ', at);
+        const std::string_view word = std::string_view(flat).substr(at, space == std::string::npos ? std::string::npos : space - at);
+        at = space == std::string::npos ? flat.size() : space + 1;
+        if (word.empty()) continue;
+        if (line.size() > lead.size() && line.size() + 1 + word.size() > width) {
+            out += line + "\n";
+            line = lead;
+        }
+        if (line.size() > lead.size()) line += ' ';
+        line += word;
+    }
+    return out + line + "\n";
+}
+
 std::string string_literal(std::string_view text) {
     std::string out = "\"";
     for (char c : text) {

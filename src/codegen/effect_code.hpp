@@ -40,6 +40,10 @@ struct Assignment {
 // Text for a // or /* */ comment: one line, no comment terminators.
 [[nodiscard]] std::string comment_text(std::string_view text);
 
+// comment_text(text) in lines of at most `width` characters (a longer word stays whole), each
+// starting with `lead` ("// ", " * ") and ending with a newline.
+[[nodiscard]] std::string comment_lines(std::string_view text, std::string_view lead, size_t width = 100);
+
 // A string literal for C and C++ (sensation names and paths: escapes quotes and backslashes).
 [[nodiscard]] std::string string_literal(std::string_view text);
 

@@ -22,7 +22,7 @@ format::SensationFile parse(const std::string& sensations) {
 std::string cpp(const format::SensationFile& file) { return export_code(Language::cpp, file, {}, "test.feel.json"); }
 std::string c(const format::SensationFile& file) { return export_code(Language::c, file, {}, "test.feel.json"); }
 
-constexpr const char* kSpring = R"("stick": {"type": "spring", "axes": ["x"],
+constexpr const char* kSpring = R"("stick": {"type": "spring", "axes": ["x"], "duration_us": "infinite",
     "conditions": [{"pos_coefficient": 1000, "neg_coefficient": 1000, "pos_saturation": 10000,
                     "neg_saturation": 10000}]})";
 
@@ -67,7 +67,7 @@ TEST(CExport, FillsTheParameterStructFromItsTypesDefaults) {
 TEST(CExport, NamesTheFieldsTheCStructNamesDifferently) {
     const std::string code = c(parse(R"("slope": {"type": "ramp", "axes": ["x"], "duration_us": 1000000,
         "ramp": {"start": -3000, "end": 3000}},
-        "gate": {"type": "axis_barrier", "axes": ["y"], "barrier": {"pos_hardness": 8000, "neg_hardness": 8000,
+        "gate": {"type": "axis_barrier", "axes": ["y"], "duration_us": "infinite", "barrier": {"pos_hardness": 8000, "neg_hardness": 8000,
         "thickness": 500, "offset_mode": "relative"}})"));
     EXPECT_NE(code.find("p.ramp_start = -3000;"), std::string::npos) << code;
     EXPECT_NE(code.find("p.ramp_end = 3000;"), std::string::npos) << code;
@@ -76,9 +76,9 @@ TEST(CExport, NamesTheFieldsTheCStructNamesDifferently) {
 }
 
 TEST(Export, SensationNamesBecomeDistinctIdentifiers) {
-    const format::SensationFile file = parse(std::string(R"("a-b": )") + R"({"type": "friction", "axes": ["x"],
-        "conditions": [{"pos_coefficient": 100, "neg_coefficient": 100}]}, "a.b": {"type": "friction", "axes": ["x"],
-        "conditions": [{"pos_coefficient": 100, "neg_coefficient": 100}]}, "9lives": {"type": "friction", "axes": ["x"],
+    const format::SensationFile file = parse(std::string(R"("a-b": )") + R"({"type": "friction", "axes": ["x"], "duration_us": "infinite",
+        "conditions": [{"pos_coefficient": 100, "neg_coefficient": 100}]}, "a.b": {"type": "friction", "axes": ["x"], "duration_us": "infinite",
+        "conditions": [{"pos_coefficient": 100, "neg_coefficient": 100}]}, "9lives": {"type": "friction", "axes": ["x"], "duration_us": "infinite",
         "conditions": [{"pos_coefficient": 100, "neg_coefficient": 100}]})");
     for (const std::string& code : {cpp(file), c(file)}) {
         EXPECT_NE(code.find("create_a_b("), std::string::npos);
@@ -89,7 +89,7 @@ TEST(Export, SensationNamesBecomeDistinctIdentifiers) {
 
 TEST(Export, ADescriptionCannotCloseTheComment) {
     const std::string code = c(parse(R"("x": {"description": "ends here */ int evil; /* and\nnext line",
-        "type": "friction", "axes": ["x"], "conditions": [{"pos_coefficient": 1, "neg_coefficient": 1}]})"));
+        "type": "friction", "axes": ["x"], "duration_us": "infinite", "conditions": [{"pos_coefficient": 1, "neg_coefficient": 1}]})"));
     EXPECT_EQ(code.find("*/ int evil"), std::string::npos) << code;
     EXPECT_EQ(code.find("\nnext line"), std::string::npos) << code;
 }

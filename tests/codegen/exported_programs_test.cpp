@@ -174,7 +174,7 @@ TEST_P(ExportedPrograms, GiveTheDeviceTheEffectsOfTheFile) {
     ASSERT_EQ(from_file.size(), effects_in_file);
     ASSERT_EQ(exported.size(), from_file.size());
     for (size_t i = 0; i < exported.size(); ++i) {
-        SCOPED_TRACE("slot " + std::to_string(from_file[i].index) + ", a " +
+        SCOPED_TRACE("slot " + std::to_string(from_file[i].index) + ": " +
                      std::string(effect_type_name(from_file[i].params.type)));
         EXPECT_EQ(exported[i].index, from_file[i].index);
         EXPECT_TRUE(exported[i].params == from_file[i].params)
@@ -186,8 +186,8 @@ TEST_P(ExportedPrograms, GiveTheDeviceTheEffectsOfTheFile) {
 INSTANTIATE_TEST_SUITE_P(EveryExample, ExportedPrograms,
                          ::testing::Combine(::testing::Values("conditions", "dynamics", "primer", "walls"),
                                             ::testing::Values("cpp", "c")),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param)) + "_" + std::get<1>(info.param);
+                         [](const auto& param_info) {
+                             return std::string(std::get<0>(param_info.param)) + "_" + std::get<1>(param_info.param);
                          });
 
 }  // namespace

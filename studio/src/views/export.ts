@@ -45,7 +45,7 @@ export function exportView(root: HTMLElement, store: Store, live: Live, status: 
     if (!code) return;
     const a = h('a', { href: URL.createObjectURL(new Blob([code], { type: 'text/plain' })), download: filename });
     a.click();
-    URL.revokeObjectURL(a.href);
+    window.setTimeout(() => URL.revokeObjectURL(a.href), 10000); // after the browser has read it
     status(`downloaded ${filename}`);
   };
   const tabs = kLangs.map(([l, title]) =>
