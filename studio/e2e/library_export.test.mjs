@@ -89,7 +89,7 @@ function exampleSensations() {
 
 test('library: every example under its class, read-only; duplicate copies one into the workspace', async () => {
   const page = await open();
-  await page.waitForSelector('#library li.example');
+  await page.waitForSelector('#library li.example', { state: 'attached' });
   const expected = exampleSensations();
   const shown = await page.$$eval('#library details', (ds) =>
     ds.map((d) => ({ group: d.dataset.group, names: [...d.querySelectorAll('li.example')].map((li) => li.dataset.name) })));
@@ -130,7 +130,7 @@ test('library: every example under its class, read-only; duplicate copies one in
   await page.click('#library li.example[data-name="vortex"] .duplicate');
   await page.waitForFunction(() => /exists/.test(document.getElementById('status').textContent));
   assert.deepEqual(JSON.parse(readFileSync(join(workspace, 'vortex_copy.feel.json'), 'utf8')), copy);
-  await page.screenshot({ path: join(shots, 'library.png'), timeout: kTimeout });
+  await page.locator('#library').screenshot({ path: join(shots, 'library.png'), timeout: kTimeout });
 });
 
 test('a preset under a user heading: any effect, kept in favorites.feel.json', async () => {
@@ -173,7 +173,14 @@ test('code export: C++, C and the SensationLibrary snippet of the current sensat
   const cpp = await shownCode('cpp');
   assert.equal(cpp, cli('cpp'));
   assert.match(cpp, /fi::(x_)?spring\(4321, /);
-  await page.screenshot({ path: join(shots, 'export.png'), timeout: kTimeout });
+  // the picture shows the sensation's function, not the program's opening lines
+  await page.evaluate(() => {
+    const pre = document.getElementById('export-code');
+    const lines = pre.textContent.split('\n');
+    const at = lines.findIndex((l) => l.startsWith('std::vector<feel::host::Effect> create_'));
+    pre.scrollTop = (pre.scrollHeight * Math.max(0, at - 2)) / lines.length;
+  });
+  await page.locator('#export').screenshot({ path: join(shots, 'export.png'), timeout: kTimeout });
   const c = await shownCode('c');
   assert.equal(c, cli('c'));
   assert.match(c, /p\.conditions\[0\]\.pos_coefficient = 4321;/);
