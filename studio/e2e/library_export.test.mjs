@@ -10,14 +10,12 @@
 //   FEEL=build/apps/feel/feel node --test studio/e2e/   (make test-studio)
 import { test, before, after, afterEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn, execFileSync } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import { chromium } from 'playwright-core';
+import { feel, launchBrowser, repo, startStudio } from './harness.mjs';
 
-const repo = resolve(import.meta.dirname, '../..');
-const feel = resolve(repo, process.env.FEEL ?? 'build/apps/feel/feel');
 const shots = resolve(repo, 'out/studio');
 mkdirSync(shots, { recursive: true });
 const kTimeout = 90000; // ms: a loaded 2-core machine can stall a step for seconds
@@ -27,31 +25,11 @@ const kConditions = ['spring', 'damper', 'inertia', 'friction', 'angle_spring', 
   'axis_wall', 'angle_wall', 'texture'];
 const classOf = (type) => (kConditions.includes(type) ? 'condition' : type.startsWith('dynamic_') ? 'dynamic' : 'wave');
 
-function startStudio(workspace) {
-  return new Promise((ok, fail) => {
-    const p = spawn(feel, ['studio', '--workspace', workspace, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
-    let out = '';
-    p.stdout.on('data', (d) => {
-      out += d;
-      const m = out.match(/open (http:\/\/\S+)/);
-      if (m) ok({ url: m[1], proc: p });
-    });
-    p.on('exit', (code) => fail(new Error(`feel studio exited ${code}: ${out}`)));
-  });
-}
-
 let browser, workspace, studio;
 before(async () => {
   workspace = mkdtempSync(join(tmpdir(), 'feel-library-'));
   studio = await startStudio(workspace);
-  browser = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'feel-chromium-')), {
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    acceptDownloads: true,
-    viewport: { width: 1400, height: 1100 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
+  browser = await launchBrowser({ width: 1400, height: 1100 });
 });
 after(async () => {
   await browser?.close();
