@@ -27,7 +27,7 @@ std::string c_program(const ExportPlan& plan) {
 
 )";
     out += "#define EFFECT_COUNT " + std::to_string(total) + "\n";
-    out += R"(static feel_effect* effects[EFFECT_COUNT];
+    out += R"(static feel_effect* effects[EFFECT_COUNT > 0 ? EFFECT_COUNT : 1];
 static int effect_count;
 
 /* CreateEffect + Download; a refusal is printed (the field and its range). */
@@ -59,7 +59,7 @@ static bool create(feel_device* device, const feel_effect_params* params, const 
             const std::string what = s.compound ? s.name + ", effect " + std::to_string(i) : s.name;
             std::string samples = "NULL, 0";
             if (!spec.samples.empty()) {
-                const std::string name = es.ident + "_samples_" + std::to_string(i);
+                const std::string name = "samples_" + es.ident + "_" + std::to_string(i);
                 decls += "\n/* The force profile's samples (§6.6.d), interleaved by channel, ±10000. */\n"
                          "static const int16_t " + name + "[] = {\n" + sample_initializer(spec.samples, "    ") + "\n};\n";
                 samples = name + ", (int32_t)(sizeof " + name + " / sizeof " + name + "[0])";

@@ -64,6 +64,9 @@ std::string export_code(Language language, const format::SensationFile& file, st
         taken.insert(ident);
         plan.sensations.push_back({&s, ident});
     }
+    if (plan.sensations.empty()) {
+        throw std::invalid_argument("export: " + std::string(file_path) + " has no sensations to export");
+    }
     switch (language) {
         case Language::cpp: return cpp_program(plan);
         case Language::c: return c_program(plan);

@@ -104,6 +104,17 @@ TEST(Export, AnUnknownSensationIsRefusedWithTheFilesNames) {
     }
 }
 
+TEST(Export, AFileWithoutSensationsHasNothingToExport) {
+    for (Language language : {Language::cpp, Language::c, Language::library}) {
+        try {
+            (void)export_code(language, format::SensationFile{}, {}, "empty.feel.json");
+            FAIL() << "no error";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "export: empty.feel.json has no sensations to export");
+        }
+    }
+}
+
 TEST(LibraryExport, IsTheTwoCallsOfSection95) {
     const std::vector<std::string> names = {"stick"};
     const std::string code = export_code(Language::library, parse(kSpring), names, "my/stick.feel.json");
