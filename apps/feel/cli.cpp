@@ -14,6 +14,7 @@
 #include "import_command.hpp"
 #include "feel/format/sensation_file.hpp"
 #include "feel/version.h"
+#include "export_command.hpp"
 #include "studio_command.hpp"
 #include "usb_device_command.hpp"
 #include "interrupt.hpp"
@@ -232,7 +233,7 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
     loop->footer(exit_codes("the loop cannot run"));
 }
 
-constexpr const char* kCommands = "render, check, schema, import, devices, caps, descriptor, play, stream, monitor, device, bench, studio, bridge";
+constexpr const char* kCommands = "render, check, schema, import, export, devices, caps, descriptor, play, stream, monitor, device, bench, studio, bridge";
 
 void add_bridge(CLI::App& app, BridgeArgs& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -245,6 +246,18 @@ void add_bridge(CLI::App& app, BridgeArgs& a) {
     cmd->add_flag("--verbose", a.verbose, "Print one line per request of the game: each effect it uploads (in "
                                           "evdev's terms), erase, play, stop, gain and autocenter");
     cmd->footer(exit_codes("uinput missing or not permitted, a device that cannot be reached"));
+}
+
+void add_export(CLI::App& app, ExportArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "export", "Write the code that recreates sensations of a file: a C++ program on the §8 wrappers "
+                  "and the host API, a C program on feel.h, or the two SensationLibrary calls (docs/cli.md)");
+    cmd->add_option("FILE", a.file, "Sensation file (feel/1 JSON)")->required();
+    cmd->add_option("--lang", a.lang, "cpp, c or library")->required();
+    cmd->add_option("--sensation", a.sensations, "A sensation to export, repeatable (default: all; library: "
+                                                 "the file's only one)");
+    cmd->add_option("-o,--output", a.output, "Write the code to this file (default: standard output)");
+    cmd->footer(exit_codes("an unreadable or invalid file, an unwritable output"));
 }
 
 void add_studio(CLI::App& app, StudioArgs& a) {
@@ -373,6 +386,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
     add_bench(app, bench_loop_args);
     BridgeArgs bridge_args;
     add_bridge(app, bridge_args);
+    ExportArgs export_args;
+    add_export(app, export_args);
 
     // Progress is redrawn in place only on a terminal (live_output.hpp).
     const bool terminal = &out == &std::cout && ::isatty(STDOUT_FILENO) == 1;
@@ -403,6 +418,8 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err)
             run_check(check_args, out, err);
         } else if (app.got_subcommand("import")) {
             run_import(import_args, out, err);
+        } else if (app.got_subcommand("export")) {
+            run_export(export_args, out);
         } else if (app.got_subcommand("schema")) {
             out << format::json_schema();
         } else if (app.got_subcommand("devices")) {

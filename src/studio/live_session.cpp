@@ -9,6 +9,7 @@
 #include "feel/effect_type.hpp"
 #include "feel/engine.hpp"
 #include "import_request.hpp"
+#include "export_request.hpp"
 #include "protocol_check.hpp"
 
 namespace feel::studio {
@@ -122,6 +123,7 @@ std::vector<json> LiveSession::handle(std::string_view text) {
             if (!workspace_) return {error_reply("import_file: this session has no workspace to import into", type)};
             return {import_into_workspace(*workspace_, m)};
         }
+        if (type == "export_code") return {export_reply(m)};  // export_request.hpp
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
             pointer_received_ = std::chrono::steady_clock::now();

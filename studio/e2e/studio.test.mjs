@@ -10,47 +10,24 @@
 //   FEEL=build/apps/feel/feel node --test studio/e2e/   (make test-studio)
 import { test, before, after, afterEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn, execFileSync } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, writeFileSync, readFileSync, symlinkSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import http from 'node:http';
-import { chromium } from 'playwright-core';
+import { launchBrowser, startStudio } from './harness.mjs';
 
 const repo = resolve(import.meta.dirname, '../..');
 const feel = resolve(repo, process.env.FEEL ?? 'build/apps/feel/feel');
 const shots = resolve(repo, 'out/studio');
 mkdirSync(shots, { recursive: true });
 
-// Starts `feel studio` on a free port; resolves with its URL.
-function startStudio(workspace, device = 'sim:iforce2') {
-  return new Promise((ok, fail) => {
-    const p = spawn(feel, ['studio', '--workspace', workspace, '--device', device, '--port', '0'], {
-      stdio: ['ignore', 'pipe', 'inherit'],
-    });
-    let out = '';
-    p.stdout.on('data', (d) => {
-      out += d;
-      const m = out.match(/open (http:\/\/\S+)/);
-      if (m) ok({ url: m[1], proc: p });
-    });
-    p.on('exit', (code) => fail(new Error(`feel studio exited ${code}: ${out}`)));
-  });
-}
-
 let browser, workspace, studio, iforce1;
 before(async () => {
   workspace = mkdtempSync(join(tmpdir(), 'feel-studio-'));
   studio = await startStudio(workspace);
   iforce1 = await startStudio(workspace, 'sim:iforce1');
-  // a fresh profile (--user-data-dir, which playwright passes for a persistent context)
-  browser = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'feel-chromium-')), {
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    viewport: { width: 1400, height: 1000 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
+  browser = await launchBrowser();
 });
 after(async () => {
   await browser?.close();

@@ -9,7 +9,9 @@ import { ApiError, api } from './files';
 import { Live } from './live';
 import { type FieldError, Store } from './store';
 import { designView, type EffectLive } from './views/design';
+import { exportView } from './views/export';
 import { filebarView } from './views/filebar';
+import { libraryView } from './views/library';
 import { Pad } from './views/pad';
 import { paletteView, type Preset } from './views/palette';
 import { Plot } from './views/plot';
@@ -71,6 +73,8 @@ store.subscribe(designView(el('design'), store, live, () => liveStates, addType)
 store.subscribe(triggersView(el('triggers'), store, live));
 store.subscribe((s) => editorFor(s, el('editor'), store)(s));
 store.subscribe(() => pad.draw());
+store.subscribe(libraryView(el('library'), store, status));
+store.subscribe(exportView(el('export'), store, live, status));
 
 // Every change of the document sends the current sensation; the server answers with the
 // errors at their fields (the device keeps the last valid parameters) or applies it.

@@ -43,6 +43,14 @@ export const schema = {
       data: { type: 'string', maxLength: 1398104 },
       axis: { type: 'string', maxLength: 2, enum: ['x', 'y', 'z', 'rx', 'ry', 'rz'], optional: true },
     },
+    // code export (views/export.ts): the current sensation as set_sensation sends it, as code
+    export_code: {
+      seq: { type: 'integer', min: 0, max: 2147483647 },
+      lang: { type: 'string', maxLength: 16, enum: ['cpp', 'c', 'library'] },
+      name: { type: 'string', maxLength: 64 },
+      file: { type: 'string', maxLength: 200, optional: true },
+      effects: { type: 'array', maxItems: 32 },
+    },
   },
   // server -> browser
   server: {
@@ -81,6 +89,13 @@ export const schema = {
       sensation: { type: 'string', maxLength: 64 },
       text: { type: 'string', maxLength: 1048576 },
       notes: { type: 'array', maxItems: 64 },
+    },
+    // the answer to export_code (src/studio/export_request.cpp, src/codegen)
+    exported: {
+      seq: { type: 'integer', min: 0, max: 2147483647 },
+      lang: { type: 'string', maxLength: 16, enum: ['cpp', 'c', 'library'] },
+      filename: { type: 'string', maxLength: 100 },
+      code: { type: 'string', maxLength: 8000000 },
     },
     error: {
       message: { type: 'string', maxLength: 2000 },
