@@ -16,7 +16,7 @@ import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 const kW = 420;
 const kH = 200;
 const kGrating = { t: 24, b: 110 }; // the bumps' lane, px
-const kRough = { y: 150, half: 150 }; // the roughness arrows: their row, the longest arrow's length
+const kRough = { y: 168, half: 150 }; // the roughness arrows: their row, the longest arrow's length
 
 export function textureEditor(store: Store, live: LiveFeed): GraphicEditor {
   const canvas = canvasOf(kW, kH, 'texture');

@@ -121,6 +121,13 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
     const base = G.px(0);
     g.strokeStyle = '#c5cad3';
     g.beginPath(); g.moveTo(kLane.l, base); g.lineTo(kW - kLane.r + 20, base); g.stroke();
+    // the time axis: 0 and the end of what is shown
+    g.fillStyle = '#7a8394';
+    g.font = '10px system-ui';
+    g.fillText('0', x.px(0) + 10, base + 14);
+    g.textAlign = 'right';
+    g.fillText(us(span), kW - kLane.r, base + 14);
+    g.textAlign = 'left';
     // the start delay
     g.fillStyle = '#e6e8ee';
     g.fillRect(x.px(0), G.px(10000), x.px(t.delay) - x.px(0), base - G.px(10000));
