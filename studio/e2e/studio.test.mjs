@@ -607,7 +607,9 @@ test('14. texture, barrier and timing: dragged handles show in their fields', as
   await dragHandle(page, 'barrier.thickness', 20, 0);
   const thick = await fieldNumber(page, 'barrier.thickness');
   assert.ok(thick > 1000, `thicker: ${thick}`);
-  // the timing panel: the first iteration's end is the duration
+  // the timing panel: the first iteration's end is the duration (a finite one)
+  await page.uncheck('#editor .field[data-path="duration_us"] input.infinite');
+  await synced(page);
   await setField(page, 'duration_us', 1000000);
   await dragHandle(page, 'timing.duration_us', -40, 0);
   const duration = await fieldNumber(page, 'duration_us');
@@ -616,19 +618,44 @@ test('14. texture, barrier and timing: dragged handles show in their fields', as
   await page.close();
 });
 
-test('15. every condition editor, live: screenshots', async () => {
+test('15. every condition editor, live: screenshots, and a strip of them for the docs', async () => {
   const page = await open();
   const types = ['spring', 'damper', 'inertia', 'friction', 'angle_spring', 'texture', 'axis_wall', 'angle_wall', 'axis_barrier', 'angle_barrier'];
+  const strip = [];
   for (const type of types) {
     await addType(page, type);
     await page.click('#design .icon[data-effect="0"] button.play');
     await playing(page, 0);
-    await dragTo(page, 3000, type === 'texture' ? 2500 : 1500, [-2000, -1000], 12);
-    await deviceAfter(page, await deviceNow(page), 150);
+    // the hand swept back and forth while the pictures are taken (pointer events from the
+    // page itself, 100 a second), so the damper's, inertia's and friction's dots move too
+    await dragTo(page, 0, 0, [0, 0], 1);
+    await page.evaluate(() => {
+      const c = document.getElementById('pad-canvas');
+      const r = c.getBoundingClientRect();
+      const kind = 'onpointerrawupdate' in window ? 'pointerrawupdate' : 'pointermove';
+      const t0 = performance.now();
+      window.__sweep = setInterval(() => {
+        const phase = ((performance.now() - t0) / 500) * 2 * Math.PI;
+        c.dispatchEvent(new PointerEvent(kind, { clientX: r.left + r.width * (0.5 + 0.3 * Math.sin(phase)), clientY: r.top + r.height * (0.5 - 0.2 * Math.sin(phase)) }));
+      }, 10);
+    });
+    await deviceAfter(page, await deviceNow(page), 400);
     await page.locator('#editor').screenshot({ path: join(shots, `editor-${type}.png`), timeout: kTimeout });
+    strip.push({ type, png: (await page.locator('#editor .graphic-host').screenshot({ timeout: kTimeout })).toString('base64') });
+    await page.evaluate(() => clearInterval(window.__sweep));
     await page.mouse.up();
     await page.click('#design .icon[data-effect="0"] button.remove');
     await synced(page);
   }
+  // the strip (docs/studio.md): the pictures at half size, two a row
+  const sheet = await browser.newPage();
+  pages.push(sheet);
+  await sheet.setViewportSize({ width: 620, height: 400 });
+  await sheet.setContent(`<body style="margin:0;background:#fff;font:11px system-ui">
+    <div id="strip" style="display:grid;grid-template-columns:repeat(2,300px);gap:6px;padding:6px;width:612px">
+    ${strip.map((s) => `<figure style="margin:0"><img style="width:300px" src="data:image/png;base64,${s.png}"><figcaption>${s.type}</figcaption></figure>`).join('')}
+    </div></body>`);
+  await sheet.locator('#strip').screenshot({ path: join(shots, 'condition-editors-strip.png'), timeout: kTimeout });
+  await sheet.close();
   await page.close();
 });

@@ -316,7 +316,8 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
     readout.textContent = st.input === null
       ? st.note
       : `device: ${inputName()} ${f(st.input)} · force ${f(st.force)} · the curve says ${f(conditionForce(family(), b, st.input))}` +
-        (b.offset_mode === 'relative' ? ' (the centre is relative: where the handle was at the start)' : '');
+        (b.offset_mode === 'relative' ? ' (the centre is relative: where the handle was at the start)' : '') +
+        (family() === 'friction' ? ' (at rest the bristle holds up to the coefficient: stiction)' : '');
   }
 
   // Redraws the live part only (the curve under it is redrawn with it: it is cheap).
