@@ -24,7 +24,7 @@ import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { type ConditionFamily, drawConditionIcon } from './condition_icon';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, type LiveFeed, motion } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, motion } from './editor';
 import { dial } from './widgets/dial';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
@@ -156,13 +156,14 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
     const db = num(b, 'deadband');
     const y0 = Y.px(0);
     const list: Handle[] = [];
-    const inputAt = (px: number) => Math.round(clamp(X.value(px), -10000, 10000));
+    const lim = (name: string, v: number) => limit(s, e.type, name, v);
+    const inputAt = (px: number) => lim('offset', X.value(px));
     const forceAt = (py: number) => clamp(Y.value(py), -10000, 10000);
     list.push({ id: 'condition.offset', x: X.px(off), y: y0, cursor: 'ew-resize', drag: (px) => edit((bb) => (bb.offset = inputAt(px))) });
     for (const side of [1, -1]) {
       list.push({
         id: `condition.deadband${side > 0 ? '+' : '-'}`, x: X.px(off + side * db), y: y0 + 12, cursor: 'ew-resize',
-        drag: (px) => edit((bb) => (bb.deadband = Math.round(clamp(Math.abs(X.value(px) - num(bb, 'offset')), 0, 10000)))),
+        drag: (px) => edit((bb) => (bb.deadband = lim('deadband', Math.abs(X.value(px) - num(bb, 'offset'))))),
       });
       const coef = side > 0 ? 'pos_coefficient' : 'neg_coefficient';
       const sat = side > 0 ? 'pos_saturation' : 'neg_saturation';
@@ -179,7 +180,7 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
         id: `condition.${coef}`, x: X.px(at), y: Y.px(fy), cursor: 'ns-resize',
         drag: (_px, py) => edit((bb) => {
           const f = forceAt(py);
-          bb[coef] = Math.round(clamp(fam === 'friction' ? -side * f : (-f * 10000) / lever, -10000, 10000));
+          bb[coef] = lim(coef, fam === 'friction' ? -side * f : (-f * 10000) / lever);
         }),
       });
       const sv = num(b, sat, 10000);
@@ -188,7 +189,7 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
       list.push({
         id: `condition.${sat}`, x: X.px(sx), y: Y.px(sign * sv), cursor: 'ns-resize',
         hit: (px, py) => (Math.abs(px - X.px(sx)) < 24 ? Math.abs(py - Y.px(sign * sv)) : Infinity),
-        drag: (_px, py) => edit((bb) => (bb[sat] = Math.round(clamp(Math.abs(forceAt(py)), 0, 10000)))),
+        drag: (_px, py) => edit((bb) => (bb[sat] = lim(sat, Math.abs(forceAt(py))))),
       });
     }
     return list;

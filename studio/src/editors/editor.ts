@@ -102,3 +102,10 @@ export function commitDraft(store: Store, i: number, before: EffectJson | null, 
 // A dial on a one-axis effect picks its axis: east (9000) is x, north (0) is y.
 export const axisOfAngle = (angle: number): 'x' | 'y' => (Math.abs(((angle + 18000) % 18000) - 9000) < 4500 ? 'x' : 'y');
 export const angleOfAxis = (axis: string | undefined): number | null => (axis === 'x' ? 9000 : axis === 'y' ? 0 : null);
+
+// A dragged value kept within its field's range, as the field description gives it (the
+// validator's own range: no range is written twice), rounded to the file's integer unit.
+export function limit(s: State | null, type: string, name: string, v: number): number {
+  const f = s ? fieldOf(s, type, name) : undefined;
+  return Math.round(Math.max(f?.min ?? -Infinity, Math.min(f?.max ?? Infinity, v)));
+}

@@ -9,7 +9,7 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, type LiveFeed } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed } from './editor';
 import { dial } from './widgets/dial';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
@@ -68,22 +68,23 @@ export function textureEditor(store: Store, live: LiveFeed): GraphicEditor {
     const x = S();
     const spacing = t.spacing ?? 1;
     const w = (spacing * (t.density ?? 0)) / 10000;
+    const lim = (name: string, v: number) => limit(s, 'texture', name, v);
     return [
       {
         id: 'texture.spacing', x: x.px(spacing), y: bumpY.px(1), cursor: 'ew-resize',
-        drag: (px) => edit((b) => (b.spacing = Math.round(clamp(x.value(px), 1, 10000)))),
+        drag: (px) => edit((b) => (b.spacing = lim('spacing', x.value(px)))),
       },
       {
         id: 'texture.density', x: x.px(w / 2), y: bumpY.px(0), cursor: 'ew-resize',
-        drag: (px) => edit((b) => (b.density = Math.round(clamp((2 * x.value(px) * 10000) / (b.spacing || 1), 1, 10000)))),
+        drag: (px) => edit((b) => (b.density = lim('density', (2 * x.value(px) * 10000) / (b.spacing || 1)))),
       },
       {
         id: 'texture.pos_roughness', x: R.px(t.pos_roughness ?? 0), y: kRough.y - 8, cursor: 'ew-resize',
-        drag: (px) => edit((b) => (b.pos_roughness = Math.round(clamp(R.value(px), 1, 10000)))),
+        drag: (px) => edit((b) => (b.pos_roughness = lim('pos_roughness', R.value(px)))),
       },
       {
         id: 'texture.neg_roughness', x: R.px(-(t.neg_roughness ?? 0)), y: kRough.y + 8, cursor: 'ew-resize',
-        drag: (px) => edit((b) => (b.neg_roughness = Math.round(clamp(-R.value(px), 1, 10000)))),
+        drag: (px) => edit((b) => (b.neg_roughness = lim('neg_roughness', -R.value(px)))),
       },
     ];
   };

@@ -10,7 +10,7 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { canvasOf, commitDraft, fieldOf, type LiveFeed } from './editor';
+import { canvasOf, commitDraft, limit, type LiveFeed } from './editor';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
 const kW = 480;
@@ -56,10 +56,6 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
   };
   const T = () => linear(0, span, kLane.l, kW - kLane.r);
   const G = linear(0, 10000, kH - kLane.b, kLane.t);
-  const rangeOf = (name: string) => {
-    const f = s && fx ? fieldOf(s, fx.type, name) : undefined;
-    return [f?.min ?? 0, f?.max ?? 65000000];
-  };
   const edit = (change: (e: EffectJson) => void) => {
     if (!draft && fx) draft = structuredClone(fx);
     if (draft) change(draft);
@@ -75,8 +71,7 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
       {
         id: 'timing.start_delay_us', x: x.px(t.delay), y: kH - kLane.b + 8, cursor: 'ew-resize',
         drag: (px) => edit((d) => {
-          const [lo, hi] = rangeOf('start_delay_us');
-          const v = Math.round(clamp(x.value(px), lo, hi) / 1000) * 1000;
+          const v = limit(s, e.type, 'start_delay_us', Math.round(x.value(px) / 1000) * 1000);
           if (v === 0) delete d.start_delay_us;
           else d.start_delay_us = v;
         }),
@@ -86,8 +81,7 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
       list.push({
         id: 'timing.duration_us', x: x.px(t.delay + t.duration), y: G.px(t.gain / 2), cursor: 'ew-resize',
         drag: (px) => edit((d) => {
-          const [lo, hi] = rangeOf('duration_us');
-          d.duration_us = Math.round(clamp(x.value(px) - t.delay, Math.max(lo, 1000), hi) / 1000) * 1000;
+          d.duration_us = limit(s, e.type, 'duration_us', Math.max(1000, Math.round((x.value(px) - t.delay) / 1000) * 1000));
         }),
       });
     }
@@ -95,7 +89,7 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
     list.push({
       id: 'timing.gain', x: x.px((t.delay + Math.min(end, span)) / 2), y: G.px(t.gain), cursor: 'ns-resize',
       drag: (_px, py) => edit((d) => {
-        const v = Math.round(clamp(G.value(py), 0, 10000) / 100) * 100;
+        const v = limit(s, e.type, 'gain', Math.round(G.value(py) / 100) * 100);
         if (v === 10000) delete d.gain;
         else d.gain = v;
       }),

@@ -18,9 +18,9 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, type LiveFeed } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed } from './editor';
 import { dial } from './widgets/dial';
-import { attachHandles, clamp, type Handle } from './widgets/drag';
+import { attachHandles, type Handle } from './widgets/drag';
 
 const kSize = 260;
 const kMargin = 12;
@@ -81,7 +81,7 @@ export function wallEditor(store: Store, live: LiveFeed): GraphicEditor {
     const [ox, oy] = at(off, -6000);
     list.push({
       id: `${key(e)}.offset`, x: ox, y: oy, hit: lineDistance(off), cursor: 'move',
-      drag: (px, py) => edit((bb) => (bb.offset = Math.round(clamp(sOf(px, py), -10000, 10000)))),
+      drag: (px, py) => edit((bb) => (bb.offset = limit(s, e.type, 'offset', sOf(px, py)))),
     });
     if (key(e) === 'wall') {
       const into = b.sense === 'negative' ? -1 : 1;
@@ -99,7 +99,7 @@ export function wallEditor(store: Store, live: LiveFeed): GraphicEditor {
       const [tx, ty] = at(off + half, 6000);
       list.push({
         id: 'barrier.thickness', x: tx, y: ty, cursor: 'ew-resize',
-        drag: (px, py) => edit((bb) => (bb.thickness = Math.round(clamp(2 * Math.abs(sOf(px, py) - num(bb, 'offset')), 1, 10000)))),
+        drag: (px, py) => edit((bb) => (bb.thickness = limit(s, e.type, 'thickness', 2 * Math.abs(sOf(px, py) - num(bb, 'offset'))))),
       });
     }
     return list;
