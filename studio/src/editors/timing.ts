@@ -164,7 +164,7 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
     const trig = t.trigger === undefined ? 'no trigger' : `trigger ${String(t.trigger)}${t.repeat ? `, repeats every ${us(t.repeat)}` : ''}`;
     text.textContent = `delay ${us(t.delay)} · duration ${t.duration === null ? '∞' : us(t.duration)} · ` +
       `${t.iterations === Infinity ? '∞' : t.iterations} iteration${t.iterations === 1 ? '' : 's'} · gain ${t.gain} · ${trig}` +
-      (st ? ` · ${st.state}` : '');
+      (st ? ` · ${st.state}` : '') + (st?.state === 'playing' && typeof st.elapsed_us === 'number' ? ` ${us(st.elapsed_us)}` : '');
   }
 
   return {
