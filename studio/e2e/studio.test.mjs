@@ -231,8 +231,9 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await deviceAfter(page, t0, 2000); // held for 2 s of the device's time
   await page.keyboard.up('2');
   await deviceAfter(page, await deviceNow(page), 1500);
+  // the 5 s window read before the screenshot, which can take seconds on a loaded machine
+  const rows = await page.evaluate(() => window.__studio.plot.window().slice());
   await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: kTimeout });
-  const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0);
   // onsets (device time): the first sample with |force| above half the magnitude after at
   // least 100 ms of quiet; the reflex started after the sample before it (`lo`). The

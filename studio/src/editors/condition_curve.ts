@@ -24,7 +24,7 @@ import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { type ConditionFamily, drawConditionIcon } from './condition_icon';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, motion } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, motion, perAnimationFrame } from './editor';
 import { dial } from './widgets/dial';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
@@ -321,16 +321,10 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
         (family() === 'friction' ? ' (at rest the bristle holds up to the coefficient: stiction)' : '');
   }
 
-  // Redraws the live part only (the curve under it is redrawn with it: it is cheap).
-  let pending = false;
-  const frame = () => {
-    if (pending) return;
-    pending = true;
-    requestAnimationFrame(() => {
-      pending = false;
-      paint();
-    });
-  };
+  // The live dot moves with the curve redrawn under it (it is cheap), once per animation frame.
+  const frame = perAnimationFrame(() => {
+    if (!draft) paint();
+  });
 
   return {
     el,

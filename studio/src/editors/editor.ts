@@ -109,3 +109,17 @@ export function limit(s: State | null, type: string, name: string, v: number): n
   const f = s ? fieldOf(s, type, name) : undefined;
   return Math.round(Math.max(f?.min ?? -Infinity, Math.min(f?.max ?? Infinity, v)));
 }
+
+// Coalesces repaints to one per animation frame, however many state frames arrive (up to
+// 250 a second while the browser interacts): the page's one thread stays free for them.
+export function perAnimationFrame(paint: () => void): () => void {
+  let pending = false;
+  return () => {
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => {
+      pending = false;
+      paint();
+    });
+  };
+}

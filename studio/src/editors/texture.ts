@@ -9,7 +9,7 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, perAnimationFrame } from './editor';
 import { dial } from './widgets/dial';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
@@ -187,8 +187,8 @@ export function textureEditor(store: Store, live: LiveFeed): GraphicEditor {
         paint();
       }
     },
-    frame() {
+    frame: perAnimationFrame(() => {
       if (!draft) paint();
-    },
+    }),
   };
 }

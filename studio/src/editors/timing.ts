@@ -10,7 +10,7 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { canvasOf, commitDraft, limit, type LiveFeed } from './editor';
+import { canvasOf, commitDraft, limit, type LiveFeed, perAnimationFrame } from './editor';
 import { attachHandles, clamp, type Handle, linear } from './widgets/drag';
 
 const kW = 480;
@@ -178,8 +178,8 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
         paint();
       }
     },
-    frame() {
+    frame: perAnimationFrame(() => {
       if (!draft) paint();
-    },
+    }),
   };
 }

@@ -18,7 +18,7 @@
 import { h } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
-import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed } from './editor';
+import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, perAnimationFrame } from './editor';
 import { dial } from './widgets/dial';
 import { attachHandles, type Handle } from './widgets/drag';
 
@@ -281,8 +281,8 @@ export function wallEditor(store: Store, live: LiveFeed): GraphicEditor {
       angleDial.set(axial ? angleOfAxis(((effect.axes as string[]) ?? [])[0]) : num(blockOf(effect), 'angle'), !axial || deviceAxes(state).length > 1);
       if (!draft) paint();
     },
-    frame() {
+    frame: perAnimationFrame(() => {
       if (!draft) paint();
-    },
+    }),
   };
 }
