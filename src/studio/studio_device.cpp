@@ -5,6 +5,7 @@
 
 #include "feel/effect_type.hpp"
 #include "feel/peripheral/peripheral.hpp"
+#include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
 #include "feel/transport/transport.hpp"
 
@@ -134,7 +135,7 @@ json StudioDevice::describe() const {
     for (const host::EffectSupport& e : device_->effects()) {
         types[std::string(class_key(e.effect_class))].push_back(effect_type_name(e.type));
     }
-    return {{"address", device_->address()},
+    json out = {{"address", device_->address()},
             {"name", c.device},
             {"description", c.description},
             {"class", c.class_name},
@@ -145,6 +146,15 @@ json StudioDevice::describe() const {
             {"loop_rate_hz", c.loop_rate_hz},
             {"effect_slots", c.effect_slots},
             {"types", types}};
+    // A simulated device's input scales (EngineConfig): a damper reads velocity_ref
+    // units/s as 10000, an inertia acceleration_ref units/s² (docs/conditions.md); the
+    // condition editors plot their curves against these.
+    if (const sim::DeviceProfile* p = peripheral_ ? sim::find_device_profile(simulated_profile(device_->address())) : nullptr) {
+        const EngineConfig config = sim::engine_config_for(*p);
+        out["velocity_ref"] = config.velocity_ref;
+        out["acceleration_ref"] = config.acceleration_ref;
+    }
+    return out;
 }
 
 std::string StudioDevice::grip() const {

@@ -209,8 +209,9 @@ test('4. a square wave on button 2: plays while key 2 is held, repeats at the in
   await deviceAfter(page, t0, 2000); // held for 2 s of the device's time
   await page.keyboard.up('2');
   await deviceAfter(page, await deviceNow(page), 1500);
+  // the 5 s window read before the screenshot, which can take seconds on a loaded machine
+  const rows = await page.evaluate(() => window.__studio.plot.window().slice());
   await page.screenshot({ path: join(shots, 'trigger-square.png'), timeout: kTimeout });
-  const rows = await page.evaluate(() => window.__studio.plot.window());
   const held = rows.filter((r) => r[0] > t0);
   // onsets (device time): the first sample with |force| above half the magnitude after at
   // least 100 ms of quiet; the reflex started after the sample before it (`lo`). The
@@ -454,4 +455,186 @@ test('10. the wheel: a slider; a spring dragged to +4000 follows the spring law'
   } finally {
     wheel.proc.kill('SIGTERM');
   }
+});
+
+// --- The graphical editors of the condition families (issue 11 §1, §5) ---------------
+// A handle is dragged with the real mouse from where the page says it is; then the
+// typed field must show the number the drag made, and the device must behave by the
+// primer's law with that number (the spring law, a wall's surface), not by the old one.
+
+// Drags a graphical editor's handle by (dx, dy) CSS px, in steps, and releases it.
+async function dragHandle(page, id, dx, dy, steps = 8) {
+  const at = await page.evaluate((k) => window.__studio.handles()[k], id);
+  assert.ok(at, `the handle ${id} is shown`);
+  const before = await page.evaluate(() => JSON.stringify(window.__studio.store.effects()));
+  await page.mouse.move(at[0], at[1]);
+  await page.mouse.down();
+  for (let i = 1; i <= steps; ++i) await page.mouse.move(at[0] + (dx * i) / steps, at[1] + (dy * i) / steps);
+  await page.mouse.up();
+  await page.waitForFunction((b) => JSON.stringify(window.__studio.store.effects()) !== b, before);
+  await synced(page);
+}
+const fieldNumber = async (page, path) =>
+  Number(await page.inputValue(`#editor .field[data-path="${path}"] input[type=number]`));
+const errorAt = (page, path) => page.textContent(`#editor .field[data-path="${path}"] .error`);
+
+test('11. spring editor: drag the positive coefficient; the device follows the new slope; out of range refused', async () => {
+  const page = await open();
+  await addType(page, 'spring'); // x and y, coefficients 5000
+  await dragHandle(page, 'condition.pos_coefficient', 0, 10); // down: a steeper restoring slope
+  const k = await fieldNumber(page, 'conditions[0].pos_coefficient');
+  const fx = await page.evaluate(() => window.__studio.store.effects()[0]);
+  assert.equal(fx.conditions[0].pos_coefficient, k, 'the field shows the dragged coefficient');
+  assert.ok(k > 5500 && k <= 10000, `dragged down, the coefficient grew: ${k}`);
+  assert.equal(fx.conditions[0].neg_coefficient, 5000, 'the other side is unchanged');
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await playing(page, 0);
+  await dragTo(page, 4000, 0);
+  await settled(page);
+  // the spring law (§3.1, docs/conditions.md) with the dragged coefficient: F = -k/10000 · x
+  const check = async (what) => {
+    const s = await state(page);
+    const expected = (-k / 10000) * s.position[0];
+    assert.ok(s.position[0] > 1500, `the handle moved toward +4000: ${s.position[0]}`);
+    assert.ok(Math.abs(s.force[0] - expected) <= 200, `${what}: force ${s.force[0]} vs the spring law with k = ${k}: ${expected}`);
+  };
+  await check('after the drag');
+  await page.screenshot({ path: join(shots, 'editor-spring-dragged.png'), timeout: kTimeout });
+  // an out-of-range number: the validator's message at the field, the device unchanged
+  await setField(page, 'conditions[0].pos_coefficient', 20000);
+  assert.match(await errorAt(page, 'conditions[0].pos_coefficient'), /pos_coefficient = 20000 is out of range \(allowed -10000\.\.10000\)/);
+  await deviceAfter(page, await deviceNow(page), 300);
+  await settled(page);
+  await check('after the refused number');
+  await page.mouse.up();
+  await page.close();
+});
+
+test('12. wall editor: drag the wall to a new offset; the device stops the handle there', async () => {
+  const page = await open();
+  await addType(page, 'axis_wall'); // x, offset 5000, positive sense, clipping
+  await dragHandle(page, 'wall.offset', -40, 0); // 40 px to the left (-x)
+  const offset = await fieldNumber(page, 'wall.offset');
+  assert.equal((await page.evaluate(() => window.__studio.store.effects()[0])).wall.offset, offset);
+  assert.ok(offset < 3500 && offset > -2000, `dragged left of 5000: ${offset}`);
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await playing(page, 0);
+  await dragTo(page, 9500, 0);
+  await settled(page);
+  const check = async (what) => {
+    const s = await state(page);
+    // clipping (§3.7): the reported position stays on the surface while the hand pushes in
+    assert.ok(Math.abs(s.position[0] - offset) <= 150, `${what}: the handle is held at the wall's offset ${offset}: ${s.position[0]}`);
+    assert.ok(s.force[0] < -500, `${what}: the wall pushes back: ${s.force[0]}`);
+  };
+  await check('after the drag');
+  await page.screenshot({ path: join(shots, 'editor-wall-dragged.png'), timeout: kTimeout });
+  await page.mouse.up();
+  await setField(page, 'wall.offset', 12000);
+  assert.match(await errorAt(page, 'wall.offset'), /wall\.offset = 12000 is out of range \(allowed -10000\.\.10000\)/);
+  await deviceAfter(page, await deviceNow(page), 300);
+  await settled(page);
+  await check('after the refused number');
+  // the sense arrow (drawn where the last valid wall is) flips the wall's solid side
+  await setField(page, 'wall.offset', offset);
+  await dragHandle(page, 'wall.sense', 0, 0, 1);
+  assert.equal(await page.inputValue('#editor .field[data-path="wall.sense"] select'), 'negative');
+  await page.close();
+});
+
+test('13. angle spring: the dial turns the spring\'s line; the device pulls along it', async () => {
+  const page = await open();
+  await addType(page, 'angle_spring'); // polar 45°, coefficients 5000
+  const dialBox = await page.locator('#editor canvas[data-dial="direction"]').boundingBox();
+  const cx = dialBox.x + dialBox.width / 2, cy = dialBox.y + dialBox.height / 2;
+  const before = await page.evaluate(() => JSON.stringify(window.__studio.store.effects()));
+  await page.mouse.move(cx + 20, cy - 20);
+  await page.mouse.down();
+  await page.mouse.move(cx + 25, cy - 10);
+  await page.mouse.move(cx + 30, cy); // east: 90°
+  await page.mouse.up();
+  await page.waitForFunction((b) => JSON.stringify(window.__studio.store.effects()) !== b, before);
+  await synced(page);
+  assert.equal(await fieldNumber(page, 'direction.polar'), 90, 'the field shows 90°');
+  assert.deepEqual((await page.evaluate(() => window.__studio.store.effects()[0])).direction, { polar: 9000 });
+  await page.click('#design .icon[data-effect="0"] button.play');
+  await playing(page, 0);
+  await dragTo(page, 4000, 3000);
+  await settled(page);
+  const s = await state(page);
+  // at 90° (east) the angle spring is an x spring (docs/conditions.md): F = -0.5·x on x, 0 on y
+  assert.ok(Math.abs(s.force[0] - -0.5 * s.position[0]) <= 200, `force x ${s.force[0]} vs ${-0.5 * s.position[0]}`);
+  assert.ok(Math.abs(s.force[1]) <= 200, `no force across the line: ${s.force[1]}`);
+  await page.screenshot({ path: join(shots, 'editor-angle-spring-dial.png'), timeout: kTimeout });
+  await page.mouse.up();
+  await page.close();
+});
+
+test('14. texture, barrier and timing: dragged handles show in their fields', async () => {
+  const page = await open();
+  await addType(page, 'texture'); // y, spacing 2000, density 7500
+  await dragHandle(page, 'texture.spacing', 30, 0);
+  const spacing = await fieldNumber(page, 'texture.spacing');
+  assert.ok(spacing > 2000, `spacing grew: ${spacing}`);
+  await dragHandle(page, 'texture.pos_roughness', -40, 0);
+  const rough = await fieldNumber(page, 'texture.pos_roughness');
+  assert.ok(rough < 5000 && rough >= 1, `roughness toward + fell: ${rough}`);
+  const tex = (await page.evaluate(() => window.__studio.store.effects()[0])).texture;
+  assert.deepEqual([tex.spacing, tex.pos_roughness, tex.neg_roughness], [spacing, rough, 5000]);
+  await page.click('#design .icon[data-effect="0"] button.remove');
+  await addType(page, 'axis_barrier'); // x, thickness 1000, offset 3000
+  await dragHandle(page, 'barrier.thickness', 20, 0);
+  const thick = await fieldNumber(page, 'barrier.thickness');
+  assert.ok(thick > 1000, `thicker: ${thick}`);
+  // the timing panel: the first iteration's end is the duration (a finite one)
+  await page.uncheck('#editor .field[data-path="duration_us"] input.infinite');
+  await synced(page);
+  await setField(page, 'duration_us', 1000000);
+  await dragHandle(page, 'timing.duration_us', -40, 0);
+  const duration = await fieldNumber(page, 'duration_us');
+  assert.ok(duration < 1000000 && duration > 0 && duration % 1000 === 0, `shorter, whole ms: ${duration}`);
+  assert.deepEqual(await page.evaluate(() => window.__studio.store.state.errors), []);
+  await page.close();
+});
+
+test('15. every condition editor, live: screenshots, and a strip of them for the docs', async () => {
+  const page = await open();
+  const types = ['spring', 'damper', 'inertia', 'friction', 'angle_spring', 'texture', 'axis_wall', 'angle_wall', 'axis_barrier', 'angle_barrier'];
+  const strip = [];
+  for (const type of types) {
+    await addType(page, type);
+    await page.click('#design .icon[data-effect="0"] button.play');
+    await playing(page, 0);
+    // the hand swept back and forth while the pictures are taken (pointer events from the
+    // page itself, 100 a second), so the damper's, inertia's and friction's dots move too
+    await dragTo(page, 0, 0, [0, 0], 1);
+    await page.evaluate(() => {
+      const c = document.getElementById('pad-canvas');
+      const r = c.getBoundingClientRect();
+      const kind = 'onpointerrawupdate' in window ? 'pointerrawupdate' : 'pointermove';
+      const t0 = performance.now();
+      window.__sweep = setInterval(() => {
+        const phase = ((performance.now() - t0) / 500) * 2 * Math.PI;
+        c.dispatchEvent(new PointerEvent(kind, { clientX: r.left + r.width * (0.5 + 0.3 * Math.sin(phase)), clientY: r.top + r.height * (0.5 - 0.2 * Math.sin(phase)) }));
+      }, 10);
+    });
+    await deviceAfter(page, await deviceNow(page), 400);
+    await page.locator('#editor').screenshot({ path: join(shots, `editor-${type}.png`), timeout: kTimeout });
+    strip.push({ type, png: (await page.locator('#editor .graphic-host').screenshot({ timeout: kTimeout })).toString('base64') });
+    await page.evaluate(() => clearInterval(window.__sweep));
+    await page.mouse.up();
+    await page.click('#design .icon[data-effect="0"] button.remove');
+    await synced(page);
+  }
+  // the strip (docs/studio.md): the pictures at half size, two a row
+  const sheet = await browser.newPage();
+  pages.push(sheet);
+  await sheet.setViewportSize({ width: 620, height: 400 });
+  await sheet.setContent(`<body style="margin:0;background:#fff;font:11px system-ui">
+    <div id="strip" style="display:grid;grid-template-columns:repeat(2,300px);gap:6px;padding:6px;width:612px">
+    ${strip.map((s) => `<figure style="margin:0"><img style="width:300px" src="data:image/png;base64,${s.png}"><figcaption>${s.type}</figcaption></figure>`).join('')}
+    </div></body>`);
+  await sheet.locator('#strip').screenshot({ path: join(shots, 'condition-editors-strip.png'), timeout: kTimeout });
+  await sheet.close();
+  await page.close();
 });

@@ -1,10 +1,12 @@
 // The Studio's front end: wires the store (one-way state), the live session and the views.
-// Every editor family gets its module under editors/ (editors/registry.ts); today every
-// family uses the generated form, the graphical editors come next.
+// Every editor family gets its module under editors/ (editors/registry.ts): a graphical
+// editor, the shared timing panel and the generated form.
 import './style.css';
 import { type Doc, type EffectJson, parseFile, fileText } from './document';
 import type { FieldsDescription } from './editors/form';
-import { editorFor } from './editors/registry';
+import type { LiveFeed } from './editors/editor';
+import { editorFor, editorsFrame } from './editors/registry';
+import { handlePositions } from './editors/widgets/drag';
 import { ApiError, api } from './files';
 import { Live } from './live';
 import { type FieldError, Store } from './store';
@@ -71,7 +73,15 @@ store.subscribe(filebarView(el('filebar'), store, live, status));
 store.subscribe(paletteView(el('palette'), store, () => presets, addEffects));
 store.subscribe(designView(el('design'), store, live, () => liveStates, addType));
 store.subscribe(triggersView(el('triggers'), store, live));
-store.subscribe((s) => editorFor(s, el('editor'), store)(s));
+// what the editors see of the device: its newest report, the plot's window, the effects
+const liveFeed: LiveFeed = {
+  position: () => pad.state.position,
+  force: () => pad.state.force,
+  rows: () => plot.window(),
+  effects: () => liveStates,
+  target: () => pad.state.target,
+};
+store.subscribe((s) => editorFor(s, el('editor'), store, liveFeed)(s));
 store.subscribe(() => pad.draw());
 store.subscribe(libraryView(el('library'), store, status));
 store.subscribe(exportView(el('export'), store, live, status));
@@ -113,6 +123,7 @@ live.on((m) => {
       ++frames;
       plot.push(m.samples as number[][]);
       pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
+      editorsFrame();
       if ((m.effects as EffectLive[]).length || liveStates.length) {
         // redraw the views only when a state, a start count or an arming changed
         const key = (l: EffectLive[]) => JSON.stringify(l.map((e) => [e.state, e.starts, e.armed]));
@@ -213,6 +224,8 @@ document.addEventListener('keydown', (e) => {
   editSentAt: () => editSentAtDeviceMs,
   liveStates: () => liveStates,
   saveFavorite,
+  // where each graphical editor's handle is on the page (the tests drag them)
+  handles: handlePositions,
 };
 
 live.connect();

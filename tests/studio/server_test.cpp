@@ -190,6 +190,10 @@ TEST_F(ServerTest, LiveSessionAnswersMalformedMessagesAndAppliesValidSensations)
     const json hello = next(*ws, "hello");
     EXPECT_EQ(hello["device"]["name"], "iforce2");
     EXPECT_EQ(hello["fields"]["types"].size(), 33u);
+    // the input scales the condition editors plot against (docs/conditions.md: the stick's
+    // velocity_ref is 1e5 units/s, its acceleration_ref that speed reached in 50 ms)
+    EXPECT_DOUBLE_EQ(hello["device"]["velocity_ref"].get<double>(), 1e5);
+    EXPECT_DOUBLE_EQ(hello["device"]["acceleration_ref"].get<double>(), 1e5 / 0.05);
     for (const std::string bad : {"{", "[]", R"({"type": "nope"})", R"({"type": "pointer", "seq": 1, "x": 20000, "y": 0})",
                                   R"({"type": "play"})", R"({"type": "gain", "gain": 1.5})",
                                   R"({"type": "stop_all", "extra": 1})"}) {

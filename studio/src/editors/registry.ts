@@ -1,17 +1,79 @@
-// One editor module per family (conditions, walls and barriers, waves, profiles, dynamics).
-// The next issue adds the graphical editors; until then every family uses the generated
-// form, which already edits every field of every type.
+// One editor module per family: a graphical editor above the shared timing panel and the
+// generated form (editors/form.ts, which edits every field of every type, typed). A type
+// without a graphical editor yet gets the timing panel and the form.
+//
+//   conditions (spring, damper, inertia, friction, angle_spring)   condition_curve.ts
+//   texture                                                          texture.ts
+//   walls and barriers                                               wall.ts
 import type { State, Store } from '../store';
+import { conditionEditor } from './condition_curve';
+import type { EditorFactory, GraphicEditor, LiveFeed } from './editor';
 import { formEditor } from './form';
+import { textureEditor } from './texture';
+import { type TimingPanel, timingPanel } from './timing';
+import { wallEditor } from './wall';
+
+const families: [readonly string[], EditorFactory][] = [
+  [['spring', 'damper', 'inertia', 'friction', 'angle_spring'], conditionEditor],
+  [['texture'], textureEditor],
+  [['axis_wall', 'angle_wall', 'axis_barrier', 'angle_barrier'], wallEditor],
+];
 
 type Editor = (s: State) => void;
-const editors = new Map<HTMLElement, Editor>();
+interface Host {
+  view: Editor;
+  frame: () => void;
+}
+const hosts = new Map<HTMLElement, Host>();
 
-export function editorFor(_s: State, root: HTMLElement, store: Store): Editor {
-  let e = editors.get(root);
-  if (!e) {
-    e = formEditor(root, store);
-    editors.set(root, e);
+function makeHost(root: HTMLElement, store: Store, live: LiveFeed): Host {
+  const graphic = document.createElement('div');
+  graphic.className = 'graphic-host';
+  const timingHost = document.createElement('div');
+  const formRoot = document.createElement('div');
+  formRoot.className = 'form';
+  root.replaceChildren(graphic, timingHost, formRoot);
+  const form = formEditor(formRoot, store);
+  const timing: TimingPanel = timingPanel(store, live);
+  const made = new Map<EditorFactory, GraphicEditor>(); // one per family, kept for its drag state
+  let shown: GraphicEditor | null = null;
+  let timed = false;
+  return {
+    view: (s) => {
+      const fx = store.effects()[s.selected];
+      const factory = fx ? families.find(([types]) => types.includes(fx.type))?.[1] : undefined;
+      let editor: GraphicEditor | null = null;
+      if (factory) {
+        editor = made.get(factory) ?? factory(store, live);
+        made.set(factory, editor);
+      }
+      if (editor !== shown) graphic.replaceChildren(...(editor ? [editor.el] : []));
+      shown = editor;
+      if (fx && editor) editor.render(s, fx, s.selected);
+      timed = fx !== undefined && s.hello !== null;
+      if (timed) {
+        if (!timing.el.isConnected) timingHost.replaceChildren(timing.el);
+        timing.render(s, fx, s.selected);
+      } else timingHost.replaceChildren();
+      form(s);
+    },
+    frame: () => {
+      shown?.frame();
+      if (timed) timing.frame();
+    },
+  };
+}
+
+export function editorFor(_s: State, root: HTMLElement, store: Store, live: LiveFeed): Editor {
+  let host = hosts.get(root);
+  if (!host) {
+    host = makeHost(root, store, live);
+    hosts.set(root, host);
   }
-  return e;
+  return host.view;
+}
+
+// A state frame arrived: the editors shown move with the device.
+export function editorsFrame(): void {
+  for (const host of hosts.values()) host.frame();
 }

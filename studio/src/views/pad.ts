@@ -221,6 +221,21 @@ export class Pad {
       case 'spring': case 'damper': case 'inertia': case 'friction': case 'angle_spring': {
         const conds = (fx.conditions as Record<string, unknown>[]) ?? [];
         if (fx.type !== 'spring' && fx.type !== 'angle_spring') break;
+        const polar = (fx.direction as Record<string, unknown> | undefined)?.polar;
+        if (typeof polar === 'number' && conds.length === 1) {
+          // along a direction (an angle spring, a spring given one): the line it pulls
+          // along, through its centre at `offset` along u (docs/conditions.md)
+          const t = (polar / 100) * (Math.PI / 180);
+          const ux = Math.sin(t), uy = Math.cos(t), off = num(conds[0], 'offset');
+          c.strokeStyle = '#1b9e5a';
+          c.lineWidth = 2;
+          c.setLineDash([6, 4]);
+          line(ux * (off - 15000), uy * (off - 15000), ux * (off + 15000), uy * (off + 15000));
+          c.setLineDash([]);
+          const [sx, sy] = this.toScreen(ux * off, uy * off);
+          c.beginPath(); c.moveTo(sx - 8, sy); c.lineTo(sx + 8, sy); c.moveTo(sx, sy - 8); c.lineTo(sx, sy + 8); c.stroke();
+          break;
+        }
         const ox = axes.indexOf('x') >= 0 ? num(conds[fx.type === 'angle_spring' ? 0 : axes.indexOf('x')], 'offset') : 0;
         const oy = axes.indexOf('y') >= 0 && fx.type === 'spring' ? num(conds[axes.indexOf('y')], 'offset') : 0;
         const [sx, sy] = this.toScreen(ox, oy);
