@@ -74,14 +74,15 @@ fuzz: deps
 
 # Sanitizer trees: the tests only (no benchmarks, no fuzzers), built by clang at -O1 with
 # line tables for the reports: of the choices measured (docs/testing.md, "Time") the one
-# that compiles fastest under the sanitizers. Warnings are the plain build's job, so no
+# that compiles fastest under the sanitizers; the test files at -O0 with one precompiled
+# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the plain build's job, so no
 # -Werror here. Every finding stops its test (halt_on_error); leak reports go through
 # scripts/lsan.supp (third-party leaks only, each entry says why).
 # --fresh: the options above always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
 SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-    -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_BUILD_FUZZ=OFF
+    -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_BUILD_FUZZ=OFF -DFEEL_TEST_PCH=ON
 # Two tests at a time: every test is its own process, with its own temporary files and
 # socket paths and port 0 for TCP. The ASan run leaves out the firmware comparison (label
 # firmware): its other half runs on qemu, and its x86 half is the engine every suite covers.
