@@ -75,8 +75,8 @@ fuzz: deps
 # Sanitizer trees: the tests only (no benchmarks, no fuzzers), built by clang at -O1 with
 # line tables for the reports: of the choices measured (docs/testing.md, "Time") the one
 # that compiles fastest under the sanitizers; the test files at -O0 with one precompiled
-# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the plain build's job, so no
-# -Werror here. Every finding stops its test (halt_on_error); leak reports go through
+# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the
+# plain build's job, so no -Werror here. Every finding stops its test (halt_on_error); leak reports go through
 # scripts/lsan.supp (third-party leaks only, each entry says why).
 # --fresh: the options above always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
