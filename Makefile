@@ -75,9 +75,9 @@ fuzz: deps
 # Sanitizer trees: the tests only (no benchmarks, no fuzzers), built by clang at -O1 with
 # line tables for the reports: of the choices measured (docs/testing.md, "Time") the one
 # that compiles fastest under the sanitizers; the test files at -O0 with one precompiled
-# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the plain build's job, so no
-# -Werror here. Every finding stops its test (halt_on_error); leak reports go through
-# scripts/lsan.supp (third-party leaks only, each entry says why).
+# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the
+# plain build's job, so no -Werror here. Every finding stops its test (halt_on_error);
+# leak reports go through scripts/lsan.supp (third-party leaks only, each entry says why).
 # --fresh: the options above always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
 SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
