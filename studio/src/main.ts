@@ -5,6 +5,7 @@ import './style.css';
 import { type Doc, type EffectJson, parseFile, fileText } from './document';
 import type { FieldsDescription } from './editors/form';
 import { editorFor } from './editors/registry';
+import { liveFeed } from './editors/live_feed';
 import { ApiError, api } from './files';
 import { Live } from './live';
 import { type FieldError, Store } from './store';
@@ -107,6 +108,7 @@ live.on((m) => {
     }
     case 'state': {
       ++frames;
+      liveFeed.push(m);
       plot.push(m.samples as number[][]);
       pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
       if ((m.effects as EffectLive[]).length || liveStates.length) {
