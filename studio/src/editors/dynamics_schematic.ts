@@ -146,7 +146,7 @@ export class DynamicsSchematic implements Graphic {
       // the mass on its tether: the offset magnified so a few hundred units show
       const peak = Math.max(Math.abs(rel[0]), Math.abs(rel[1]));
       if (peak * this.scale > 80) this.scale = 80 / peak;
-      const rest = two ? 0 : 60; // a one-axis tether has a rest length drawn
+      const rest = 60; // the tether drawn with a rest length, along +x, so it shows
       const mx = hx + rest + rel[0] * this.scale, my = hy - rel[1] * this.scale;
       const law = ((d.control_law as Record<string, unknown>[]) ?? [])[0] ?? {};
       const play = type === 'dynamic_inertia' ? num(d, 'play') : type === 'dynamic_control_law' ? num(law, 'length') : 0;

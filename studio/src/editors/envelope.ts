@@ -25,8 +25,9 @@ export function envelopeLevel(env: EnvelopeJson | undefined, steady: number, tau
   return from + (((env.fade_level ?? 0) - from) * (tauUs - (durationUs - fade))) / fade;
 }
 
-// Outline (±S around the baseline) and handles. `steady` is S (≥ 0).
-export function envelopeParts(f: TimeFrame, env: EnvelopeJson | undefined, steady: number, baseline: number): SVGElement[] {
+// Outline and handles. `steady` is S (≥ 0), drawn on the `sign` side of the baseline, and
+// mirrored below it for a wave that swings both ways.
+export function envelopeParts(f: TimeFrame, env: EnvelopeJson | undefined, steady: number, baseline: number, mirror = true, sign = 1): SVGElement[] {
   const duration = f.infinite ? null : f.spanUs;
   const pts = (sign: number) => {
     const list: string[] = [];
@@ -36,18 +37,16 @@ export function envelopeParts(f: TimeFrame, env: EnvelopeJson | undefined, stead
     }
     return list.join(' ');
   };
-  const parts: SVGElement[] = [
-    svg('polyline', { points: pts(1), fill: 'none', stroke: '#e3a21a', 'stroke-width': 1.5, 'stroke-dasharray': '5 3' }),
-    svg('polyline', { points: pts(-1), fill: 'none', stroke: '#e3a21a', 'stroke-width': 1, 'stroke-dasharray': '2 3' }),
-  ];
+  const parts: SVGElement[] = [svg('polyline', { points: pts(sign), fill: 'none', stroke: '#e3a21a', 'stroke-width': 1.5, 'stroke-dasharray': '5 3' })];
+  if (mirror) parts.push(svg('polyline', { points: pts(-sign), fill: 'none', stroke: '#e3a21a', 'stroke-width': 1, 'stroke-dasharray': '2 3' }));
   const e = env ?? {};
   const settle = e.settle_time_us ?? 0;
-  parts.push(handle('impulse_level', f.t.px(0), f.v.px(baseline + (env ? (e.impulse_level ?? 0) : steady)), '#e3a21a', 'impulse level: drag up or down'));
-  parts.push(handle('settle_time_us', f.t.px(Math.min(settle, f.spanUs)), f.v.px(baseline + steady), '#c47a00', 'settle time: drag sideways'));
+  parts.push(handle('impulse_level', f.t.px(0), f.v.px(baseline + sign * (env ? (e.impulse_level ?? 0) : steady)), '#e3a21a', 'impulse level: drag up or down'));
+  parts.push(handle('settle_time_us', f.t.px(Math.min(settle, f.spanUs)), f.v.px(baseline + sign * steady), '#c47a00', 'settle time: drag sideways'));
   if (!f.infinite) {
     const fade = e.fade_time_us ?? 0;
-    parts.push(handle('fade_time_us', f.t.px(Math.max(0, f.spanUs - fade)), f.v.px(baseline + steady), '#c47a00', 'fade time: drag sideways'));
-    parts.push(handle('fade_level', f.t.px(f.spanUs), f.v.px(baseline + (env ? (e.fade_level ?? 0) : steady)), '#e3a21a', 'fade level: drag up or down'));
+    parts.push(handle('fade_time_us', f.t.px(Math.max(0, f.spanUs - fade)), f.v.px(baseline + sign * steady), '#c47a00', 'fade time: drag sideways'));
+    parts.push(handle('fade_level', f.t.px(f.spanUs), f.v.px(baseline + sign * (env ? (e.fade_level ?? 0) : steady)), '#e3a21a', 'fade level: drag up or down'));
   }
   return parts;
 }

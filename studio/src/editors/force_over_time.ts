@@ -61,7 +61,7 @@ export class ForceOverTimeEditor implements Graphic {
     const parts: SVGElement[] = [...frameParts(f)];
     if (env) parts.push(curve(f, raw, 50, { stroke: '#9aa3b2', 'stroke-dasharray': '4 3', 'stroke-width': 1 }));
     parts.push(curve(f, shaped, 400, { 'stroke-width': 2.2 }));
-    if (c.info?.envelope) parts.push(...envelopeParts(f, env, Math.abs((start + end) / 2), 0));
+    if (c.info?.envelope) parts.push(...envelopeParts(f, env, Math.abs((start + end) / 2), 0, false, start + end < 0 ? -1 : 1));
     parts.push(square('start', f.t.px(0) + 8, f.v.px(start), c.fx.type === 'ramp' ? 'ramp start: drag up or down' : 'magnitude: drag up or down'));
     parts.push(square('end', f.t.px(f.spanUs) - 8, f.v.px(f.infinite ? start : end), c.fx.type === 'ramp' ? 'ramp end: drag up or down' : 'magnitude: drag up or down'));
     this.still.replaceChildren(...parts);

@@ -49,6 +49,7 @@ export class WaveEditor implements Graphic {
   private readonly sense: HTMLButtonElement;
   private c: GraphicContext | null = null;
   private frame: TimeFrame | null = null;
+  private liveShown = false; // the end dial shows a live needle
 
   constructor() {
     this.plot = svg('svg', { viewBox: `0 0 ${kW} ${kH}`, class: 'graphic-plot', 'data-graphic': 'wave' });
@@ -92,11 +93,11 @@ export class WaveEditor implements Graphic {
     const yb = f.v.px(clamp(offset + Math.abs(mag), -10000, 10000)) - 14;
     const x0 = f.t.px(cycleStart), x1 = f.t.px(Math.min(f.spanUs, cycleStart + period));
     parts.push(svg('path', { d: `M ${x0} ${yb + 5} V ${yb} H ${x1} V ${yb + 5}`, fill: 'none', stroke: '#1b9e5a' }));
-    parts.push(svg('text', { x: (x0 + x1) / 2, y: yb - 3, 'text-anchor': 'middle', 'font-size': 9, fill: '#1b9e5a' }, `period ${(period / 1000).toFixed(1)} ms`));
+    parts.push(svg('text', { x: x1 + 4, y: yb + 3, 'font-size': 9, fill: '#1b9e5a' }, `period ${(period / 1000).toFixed(1)} ms`));
     parts.push(handle('phase', x0, f.v.px(offset), '#1b9e5a', 'phase: drag where a cycle starts'));
     parts.push(handle('period_us', f.t.px(cycleStart + period), f.v.px(offset), '#0f7a43', 'period: drag where the next cycle starts'));
     parts.push(handle('magnitude', f.t.px(f.spanUs / 2), f.v.px(clamp(offset + mag, -10000, 10000)), '#2458d6', 'magnitude: drag up or down'));
-    parts.push(svg('rect', { 'data-handle': 'offset', x: f.t.p0 + 2, y: f.v.px(offset) - 5, width: 10, height: 10, fill: '#7a3fc4', class: 'handle' }, svg('title', {}, 'offset: drag up or down')));
+    parts.push(svg('rect', { 'data-handle': 'offset', x: f.t.px(f.spanUs * 0.75) - 5, y: f.v.px(offset) - 5, width: 10, height: 10, fill: '#7a3fc4', class: 'handle' }, svg('title', {}, 'offset: drag up or down')));
     this.still.replaceChildren(...parts);
     // the dials
     const sweep = fx.type.startsWith('sweep_');
@@ -128,7 +129,8 @@ export class WaveEditor implements Graphic {
     const angle = sweep && tau !== null && !f.infinite ? sweepAngle(b, tau, f.spanUs) : polarOf(c.fx);
     const force = tau === null ? null : forceAlong(c.fx, liveFeed.frame, c.deviceAxes, angle);
     this.live.replaceChildren(...playheadParts(f, tau, force));
-    if (sweep) {
+    if (sweep && (tau !== null || this.liveShown)) {
+      this.liveShown = tau !== null;
       const from = tau === null ? null : forceFromAngle(liveFeed.frame.force[c.deviceAxes.indexOf('x')] ?? 0, liveFeed.frame.force[c.deviceAxes.indexOf('y')] ?? 0);
       const arc = { from: num(b, 'sweep_start_angle'), to: num(b, 'sweep_end_angle'), clockwise: b.sweep_sense !== 'counterclockwise' };
       this.endDial.draw({ angle: arc.to, arc, live: from });
