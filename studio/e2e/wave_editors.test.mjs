@@ -260,4 +260,16 @@ test('screenshots of every editor of the family', async () => {
     assert.deepEqual(await H.errors(page), [], type);
     await page.locator('#editor .graphic').screenshot({ path: join(H.shots, `${name}.png`) });
   }
+  // live: a sine playing, its playhead and the device's force on the curve
+  await H.freshEffect(page, 'sine');
+  await H.editEffect(page, 'e.duration_us = 3000000; e.periodic.magnitude = 6000;');
+  await page.locator('#design .icon button.play').first().click();
+  await page.waitForFunction(() => {
+    const st = window.__studio.liveStates()[0];
+    return st?.state === 'playing' && st.elapsed_us > 1200000;
+  });
+  const live = page.locator('svg[data-graphic="wave"]');
+  assert.equal(await live.locator('.playhead').count(), 1, 'the playhead is drawn while the wave plays');
+  assert.equal(await live.locator('.live-dot').count(), 1, 'the device force is drawn while the wave plays');
+  await page.locator('#editor .graphic').screenshot({ path: join(H.shots, 'editor-sine-playing.png') });
 });

@@ -56,7 +56,7 @@ export class DynamicsSchematic implements Graphic {
   private readonly dial: DirectionDial;
   private c: GraphicContext | null = null;
   private newest: DynamicReportJson | null = null;
-  private scale = 0.02; // px per position unit of the mass's offset
+  private peak = 0; // the largest offset of the mass seen in this play, position units
 
   constructor() {
     this.pic = svg('svg', { viewBox: `0 0 ${kSize} ${kSize}`, width: kSize, height: kSize, class: 'schematic', 'data-graphic': 'dynamics' });
@@ -81,7 +81,10 @@ export class DynamicsSchematic implements Graphic {
   }
 
   render(c: GraphicContext): void {
-    if (this.c?.fx.type !== c.fx.type || this.c.index !== c.index) this.newest = null;
+    if (this.c?.fx.type !== c.fx.type || this.c.index !== c.index) {
+      this.newest = null;
+      this.peak = 0;
+    }
     this.c = c;
     const d = block(c.fx, 'dynamic');
     const rows = (kMapping[c.fx.type] ?? []).map(([p, term]) => {
@@ -143,11 +146,11 @@ export class DynamicsSchematic implements Graphic {
       this.gravity(parts, bx + 20, by, num(d, 'gravity'));
       parts.push(svg('text', { x: 8, y: kSize - 8, 'font-size': 10, fill: '#48526a' }, 'ball against a paddle (to scale with the travel)'));
     } else {
-      // the mass on its tether: the offset magnified so a few hundred units show
-      const peak = Math.max(Math.abs(rel[0]), Math.abs(rel[1]));
-      if (peak * this.scale > 80) this.scale = 80 / peak;
+      // the mass on its tether: the offset magnified so that the largest seen spans 60 px
+      this.peak = Math.max(this.peak, Math.abs(rel[0]), Math.abs(rel[1]));
+      const scale = 60 / Math.max(50, this.peak);
       const rest = 60; // the tether drawn with a rest length, along +x, so it shows
-      const mx = hx + rest + rel[0] * this.scale, my = hy - rel[1] * this.scale;
+      const mx = hx + rest + rel[0] * scale, my = hy - rel[1] * scale;
       const law = ((d.control_law as Record<string, unknown>[]) ?? [])[0] ?? {};
       const play = type === 'dynamic_inertia' ? num(d, 'play') : type === 'dynamic_control_law' ? num(law, 'length') : 0;
       parts.push(svg('path', { d: zigzag(hx, hy, mx, my, 7, 6), fill: 'none', stroke: '#1b9e5a', 'stroke-width': 1.6, class: 'spring' }));
@@ -159,13 +162,13 @@ export class DynamicsSchematic implements Graphic {
         parts.push(svg('line', { x1: midx + 2, y1: midy, x2: bx, y2: by, stroke: '#7a3fc4', 'stroke-width': 1.5 }));
       }
       if (play > 0) {
-        parts.push(svg('circle', { cx: mx, cy: my, r: 13 + Math.min(30, play * this.scale), fill: 'none', stroke: '#9aa3b2', 'stroke-dasharray': '3 3' }, svg('title', {}, 'free play')));
+        parts.push(svg('circle', { cx: mx, cy: my, r: 13 + Math.min(30, play * scale), fill: 'none', stroke: '#9aa3b2', 'stroke-dasharray': '3 3' }, svg('title', {}, 'free play')));
       }
       const mass = type === 'dynamic_liquid' ? num(d, 'density', 1) : type === 'dynamic_inertia' ? num(d, 'inertia', 1)
         : type === 'dynamic_control_law' ? num(law, 'mass', 1) : type === 'dynamic_center_drift' ? 1 : num(d, 'dynamic_mass', 1);
       parts.push(svg('rect', { x: mx - 8 - Math.sqrt(mass) / 12, y: my - 8 - Math.sqrt(mass) / 12, width: 16 + Math.sqrt(mass) / 6, height: 16 + Math.sqrt(mass) / 6, rx: 3, fill: '#c4783f', class: 'mass' }, svg('title', {}, 'the mass')));
       if (type === 'dynamic_control_law') this.gravity(parts, mx + 26, my, num(law, 'gravity'));
-      parts.push(svg('text', { x: 8, y: kSize - 8, 'font-size': 10, fill: '#48526a' }, `mass on its tether: offset ×${(this.scale / travel).toFixed(1)} the travel`));
+      parts.push(svg('text', { x: 8, y: kSize - 8, 'font-size': 10, fill: '#48526a' }, `mass on its tether: offset ×${(scale / travel).toFixed(1)} the travel`));
     }
     parts.push(svg('circle', { cx: hx, cy: hy, r: 7, fill: '#2458d6', class: 'handle-dot' }, svg('title', {}, 'the handle (as the device reports it)')));
     parts.push(svg('text', { x: 8, y: 14, 'font-size': 10, fill: r ? '#1b9e5a' : '#7a8394' }, r ? `interim report t = ${r.t_ms.toFixed(0)} ms` : 'no reports (at rest)'));
