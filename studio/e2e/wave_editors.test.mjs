@@ -167,6 +167,24 @@ test('force profile: a stroke drawn on the lane becomes the samples, and the dev
   held.forEach((v, k) => assert.ok(Math.abs(v - expected[k]) <= 30, `level ${k}: the device ${v}, the sample ${expected[k]}`));
 });
 
+test('ramp: dragging the end handle sets the field and the device ramps to it', async () => {
+  const page = await open();
+  await H.freshEffect(page, 'ramp'); // 0 to -6000 over 1 s
+  const plot = page.locator('svg[data-graphic="force"]');
+  await drag(page, await H.centreOf(plot.locator('[data-handle="end"]')), await H.pagePoint(plot, 538, plotY(6000)));
+  const shown = Number(await H.fieldValue(page, 'ramp.end'));
+  // a pixel of the plot is 104 units of force
+  assert.ok(Math.abs(shown - 6000) <= 150, `the field shows the dragged end: ${shown}`);
+  assert.equal((await H.effects(page))[0].ramp.start, 0);
+  const from = await H.playThrough(page);
+  const rows = (await H.samplesSince(page, from)).filter((r) => r[1] !== 0);
+  const { slope } = fit(rows.map((r) => [r[0], r[1]]));
+  // a ramp from 0 to `shown` over 1000 ms (§4.x): slope shown / 1000 per ms
+  assert.ok(Math.abs(slope * 1000 - shown) / shown < 0.03, `the device ramps ${(slope * 1000).toFixed(0)} per second, to ${shown}`);
+  const peak = Math.max(...rows.map((r) => r[1]));
+  assert.ok(Math.abs(peak - shown) <= 0.03 * shown, `the device reaches ${peak}, the end is ${shown}`);
+});
+
 // A 16-bit PCM WAV written here from its public layout (RIFF, "fmt ", "data").
 function wavFile(rate, samples) {
   const b = Buffer.alloc(44 + samples.length * 2);
@@ -211,6 +229,19 @@ test('force profile: a WAV file\'s envelope and a CSV column import as samples',
   await page.locator('[data-control="import-csv"]').setInputFiles(csv);
   await page.waitForFunction(() => /row 3/.test(document.querySelector('.graphic-message').textContent));
   assert.match(await page.locator('.graphic-message').textContent(), /CSV row 3, column 1: "abc" is not a number/);
+
+  // the drawing's tools on lane 1: scale ×0.5, then smooth (each sample the mean of it and
+  // its neighbours, an end sample its own neighbour)
+  const before = (await H.effects(page))[0].custom.samples;
+  await page.locator('[data-control="scale-factor"]').fill('0.5');
+  await page.locator('[data-control="scale"]').click();
+  await H.synced(page);
+  const scaled = (await H.effects(page))[0].custom.samples;
+  assert.deepEqual(scaled, before.map((v) => Math.round(v * 0.5)));
+  await page.locator('[data-control="smooth"]').click();
+  await H.synced(page);
+  const mean = (k) => Math.round(((scaled[k - 1] ?? scaled[k]) + scaled[k] + (scaled[k + 1] ?? scaled[k])) / 3);
+  assert.deepEqual((await H.effects(page))[0].custom.samples, scaled.map((_, k) => mean(k)));
 });
 
 test('dynamics: the schematic moves at the interim report rate while a recoil plays', async () => {

@@ -61,7 +61,7 @@ export class ForceOverTimeEditor implements Graphic {
     const parts: SVGElement[] = [...frameParts(f)];
     if (env) parts.push(curve(f, raw, 50, { stroke: '#9aa3b2', 'stroke-dasharray': '4 3', 'stroke-width': 1 }));
     parts.push(curve(f, shaped, 400, { 'stroke-width': 2.2 }));
-    if (c.info?.envelope) parts.push(...envelopeParts(f, env, Math.abs((start + end) / 2), 0, false, start + end < 0 ? -1 : 1));
+    if (c.info?.envelope) parts.push(...envelopeParts(f, env, (tau) => Math.abs(raw(tau)), 0, 'none', start + end < 0 ? -1 : 1));
     parts.push(square('start', f.t.px(0) + 8, f.v.px(start), c.fx.type === 'ramp' ? 'ramp start: drag up or down' : 'magnitude: drag up or down'));
     parts.push(square('end', f.t.px(f.spanUs) - 8, f.v.px(f.infinite ? start : end), c.fx.type === 'ramp' ? 'ramp end: drag up or down' : 'magnitude: drag up or down'));
     this.still.replaceChildren(...parts);
@@ -95,7 +95,8 @@ export class ForceOverTimeEditor implements Graphic {
     const c = this.c, f = this.frame;
     if (!c || !f) return null;
     const [start, end] = this.levels(c);
-    const env = envelopeDrag(name, f, Math.abs((start + end) / 2), 0, (x) => c.edit((e) => (e.envelope = x)), () => c.fx.envelope as EnvelopeJson | undefined);
+    const raw = (tau: number) => Math.abs(f.infinite ? start : start + ((end - start) * tau) / f.spanUs);
+    const env = envelopeDrag(name, f, raw, 0, (x) => c.edit((e) => (e.envelope = x)), () => c.fx.envelope as EnvelopeJson | undefined);
     if (env) return env;
     if (name !== 'start' && name !== 'end') return null;
     return (p) => {

@@ -28,9 +28,11 @@ type Listener = (f: LiveFrame, reports: DynamicReportJson[]) => void;
 
 export class LiveFeed {
   frame: LiveFrame = { position: [], force: [], effects: [], effectsAt: 0, deviceMs: 0 };
-  // the newest dynamics reports, for the tests' rate measurement (bounded)
+  // the newest dynamics reports (bounded)
   reports: DynamicReportJson[] = [];
   private listeners = new Set<Listener>();
+  private pending: DynamicReportJson[] = [];
+  private drawPending = false;
 
   push(m: { position: unknown[]; force: unknown[]; effects: unknown[]; samples: unknown[]; dynamics: unknown[] }): void {
     const effects = m.effects as EffectLive[];
@@ -48,8 +50,16 @@ export class LiveFeed {
     if (reports.length) {
       this.reports.push(...reports);
       if (this.reports.length > 2000) this.reports.splice(0, this.reports.length - 2000);
+      this.pending.push(...reports);
     }
-    for (const l of this.listeners) l(this.frame, reports);
+    // the editors draw once per animation frame, however many state frames came before it
+    if (this.drawPending) return;
+    this.drawPending = true;
+    requestAnimationFrame(() => {
+      this.drawPending = false;
+      const fresh = this.pending.splice(0);
+      for (const l of this.listeners) l(this.frame, fresh);
+    });
   }
 
   subscribe(l: Listener): () => void {

@@ -88,7 +88,7 @@ export class WaveEditor implements Graphic {
     const parts: SVGElement[] = [...frameParts(f)];
     parts.push(curve(f, value, Math.min(4000, Math.max(800, Math.round((f.spanUs / period) * 40)))));
     parts.push(svg('line', { x1: f.t.p0, x2: f.t.p1, y1: f.v.px(offset), y2: f.v.px(offset), stroke: '#7a3fc4', 'stroke-dasharray': '3 3' }));
-    parts.push(...envelopeParts(f, env, Math.abs(mag), offset));
+    parts.push(...envelopeParts(f, env, () => Math.abs(mag), offset));
     // one period, bracketed above the wave
     const yb = f.v.px(clamp(offset + Math.abs(mag), -10000, 10000)) - 14;
     const x0 = f.t.px(cycleStart), x1 = f.t.px(Math.min(f.spanUs, cycleStart + period));
@@ -143,7 +143,7 @@ export class WaveEditor implements Graphic {
     const b = () => block(c.fx, 'periodic');
     const set = (k: string, v: number) => c.edit((e) => (blockOf(e, 'periodic')[k] = v));
     const offset = () => num(b(), 'offset');
-    const env = envelopeDrag(name, f, Math.abs(num(b(), 'magnitude')), offset(), (x) => c.edit((e) => (e.envelope = x)), () => c.fx.envelope as EnvelopeJson | undefined);
+    const env = envelopeDrag(name, f, () => Math.abs(num(b(), 'magnitude')), offset(), (x) => c.edit((e) => (e.envelope = x)), () => c.fx.envelope as EnvelopeJson | undefined);
     if (env) return env;
     switch (name) {
       case 'magnitude': return (p) => set('magnitude', clamp(levelAt(f, p.y) - offset(), -10000, 10000));
