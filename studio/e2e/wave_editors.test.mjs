@@ -63,7 +63,7 @@ function fit(points) {
 // from the impulse level (0) to the magnitude over the settle time (§4.2.a), so the slope
 // of |force| against time in the rise is magnitude / settle.
 async function measuredSettleMs(page, magnitude) {
-  const from = await H.playThrough(page);
+  const from = await H.playThrough(page, 1000);
   const rows = await H.samplesSince(page, from);
   const start = rows.find((r) => Math.abs(r[1]) > 0);
   assert.ok(start, 'the wave played');
@@ -111,7 +111,7 @@ test('sweep: dragging the end dial sets the field and the device ends its sweep 
   const b = (await H.effects(page))[0].periodic;
   assert.equal(b.sweep_end_angle, Math.round(shown * 100));
 
-  const from = await H.playThrough(page);
+  const from = await H.playThrough(page, 1000);
   const rows = await H.samplesSince(page, from);
   // the play's start: a sine from 0 passes a third of its magnitude 2.7 ms in (50 ms period)
   const t0 = rows.find((r) => Math.hypot(r[1], r[2]) > 1000)[0] - 2.7;
@@ -147,7 +147,7 @@ test('force profile: a stroke drawn on the lane becomes the samples, and the dev
   assert.deepEqual(await H.errors(page), []);
   await page.locator('#editor .graphic').screenshot({ path: join(H.shots, 'editor-profile.png') });
 
-  const from = await H.playThrough(page);
+  const from = await H.playThrough(page, 500);
   const rows = await H.samplesSince(page, from);
   // the rendered force as runs of one level (each sample held for its 50 ms)
   const runs = [];
@@ -176,7 +176,7 @@ test('ramp: dragging the end handle sets the field and the device ramps to it', 
   // a pixel of the plot is 104 units of force
   assert.ok(Math.abs(shown - 6000) <= 150, `the field shows the dragged end: ${shown}`);
   assert.equal((await H.effects(page))[0].ramp.start, 0);
-  const from = await H.playThrough(page);
+  const from = await H.playThrough(page, 1000);
   const rows = (await H.samplesSince(page, from)).filter((r) => r[1] !== 0);
   const { slope } = fit(rows.map((r) => [r[0], r[1]]));
   // a ramp from 0 to `shown` over 1000 ms (§4.x): slope shown / 1000 per ms

@@ -77,28 +77,43 @@ export async function setField(page, path, value) {
 }
 export const fieldValue = (page, path) => page.locator(`#editor .field[data-path="${path}"] input[type=number]`).inputValue();
 
-// The device's samples (plot window rows [t_ms, force…, position…]) newer than `fromMs`.
-export const samplesSince = (page, fromMs) => page.evaluate((t) => window.__studio.plot.window().filter((r) => r[0] > t), fromMs);
+// Every state report the page receives from now on (the plot's rows [t_ms, force…,
+// position…]), kept in the page: the plot keeps only 5 s, and on a loaded machine a play
+// can be older than that by the time the test reads it. Bounded to 60 s of reports.
+export const record = (page) => page.evaluate(() => {
+  const plot = window.__studio.plot;
+  window.__recorded = [];
+  if (!plot.__recording) {
+    const push = plot.push.bind(plot);
+    plot.push = (rows) => {
+      window.__recorded.push(...rows);
+      if (window.__recorded.length > 30000) window.__recorded.splice(0, window.__recorded.length - 30000);
+      push(rows);
+    };
+    plot.__recording = true;
+  }
+});
+// The recorded samples newer than `fromMs` (device time).
+export const samplesSince = (page, fromMs) => page.evaluate((t) => window.__recorded.filter((r) => r[0] > t), fromMs);
 export const deviceNow = (page) => page.evaluate(() => { const w = window.__studio.plot.window(); return w.length ? w[w.length - 1][0] : 0; });
 export const deviceAfter = (page, from, ms) => page.waitForFunction(([t, d]) => {
   const w = window.__studio.plot.window();
   return w.length > 0 && w[w.length - 1][0] >= t + d;
 }, [from, ms]);
 
-// Plays effect 0 and waits until it has played and stopped by itself (a finite duration),
-// and the device's clock has gone 100 ms beyond; returns the device time just before the
-// play. On a loaded machine the start can come long after the click: this waits on the
-// device's own account of the effect, not on a time.
-export async function playThrough(page) {
+// Plays effect 0 (of `durationMs`) and waits until the device's force has started and
+// the device's clock has gone the duration and 150 ms beyond; returns the device time just
+// before the play. On a loaded machine the start can come long after the click: this
+// waits on the device's own reports, not on a time.
+export async function playThrough(page, durationMs) {
+  await record(page);
   const from = await deviceNow(page);
-  const before = await page.evaluate(() => window.__studio.liveStates()[0]?.starts ?? 0);
   await page.locator('#design .icon button.play').first().click();
-  await page.waitForFunction((n) => {
-    const st = window.__studio.liveStates()[0];
-    return st !== undefined && st.starts > n && st.state === 'playing';
-  }, before);
-  await page.waitForFunction(() => window.__studio.liveStates()[0]?.state !== 'playing');
-  await deviceAfter(page, await deviceNow(page), 100);
+  await page.waitForFunction(([t, d]) => {
+    const rows = window.__recorded;
+    const start = rows.find((r) => r[0] > t && r.slice(1, 1 + (r.length - 1) / 2).some((f) => f !== 0));
+    return start !== undefined && rows[rows.length - 1][0] >= start[0] + d + 150;
+  }, [from, durationMs]);
   return from;
 }
 

@@ -86,7 +86,8 @@ export class WaveEditor implements Graphic {
     };
     const cycleStart = ((1 - phase / 36000) % 1) * period;
     const parts: SVGElement[] = [...frameParts(f)];
-    parts.push(curve(f, value, Math.min(4000, Math.max(800, Math.round((f.spanUs / period) * 40)))));
+    // at most 3 points a pixel: more cycles than that are a band of colour either way
+    parts.push(curve(f, value, Math.min(1500, Math.max(800, Math.round((f.spanUs / period) * 40)))));
     parts.push(svg('line', { x1: f.t.p0, x2: f.t.p1, y1: f.v.px(offset), y2: f.v.px(offset), stroke: '#7a3fc4', 'stroke-dasharray': '3 3' }));
     parts.push(...envelopeParts(f, env, () => Math.abs(mag), offset));
     // one period, bracketed above the wave
