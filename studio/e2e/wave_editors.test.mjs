@@ -156,14 +156,16 @@ test('force profile: a stroke drawn on the lane becomes the samples, and the dev
     if (last && Math.abs(r[1] - last.level) <= 30) ++last.count;
     else runs.push({ level: r[1], count: 1 });
   }
-  // the play: from the first run that is not the rest before it to the last
-  const held = runs.filter((r) => r.count >= 10).map((r) => r.level);
+  // the play: from the first run that is not the rest before it to the last. A level is
+  // held for 25 reports; on a loaded machine the Studio's sampler, which takes the newest
+  // report, can miss some, so 3 alike make a held level (the device jumps between them).
+  const held = runs.filter((r) => r.count >= 3).map((r) => r.level);
   while (held.length && held[0] === 0) held.shift();
   while (held.length && held[held.length - 1] === 0) held.pop();
   const expected = samples.slice();
   while (expected.length && expected[0] === 0) expected.shift();
   while (expected.length && expected[expected.length - 1] === 0) expected.pop();
-  assert.equal(held.length, expected.length, `one held level per sample: ${held.join(', ')} (samples ${samples.join(', ')})`);
+  assert.equal(held.length, expected.length, `one held level per sample: ${held.join(', ')} (samples ${samples.join(', ')}; runs ${JSON.stringify(runs.slice(0, 30))})`);
   held.forEach((v, k) => assert.ok(Math.abs(v - expected[k]) <= 30, `level ${k}: the device ${v}, the sample ${expected[k]}`));
 });
 
