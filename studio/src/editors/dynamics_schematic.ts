@@ -57,6 +57,8 @@ export class DynamicsSchematic implements Graphic {
   private c: GraphicContext | null = null;
   private newest: DynamicReportJson | null = null;
   private peak = 0; // the largest offset of the mass seen in this play, position units
+  private trail: DynamicReportJson[] = []; // this play's reports (bounded): the mass's path
+  private trailStarts = -1; // the play they belong to (the effect's start count)
 
   constructor() {
     this.pic = svg('svg', { viewBox: `0 0 ${kSize} ${kSize}`, width: kSize, height: kSize, class: 'schematic', 'data-graphic': 'dynamics' });
@@ -73,6 +75,11 @@ export class DynamicsSchematic implements Graphic {
       const mine = reports.filter((r) => r.effect === c.index);
       if (mine.length) {
         this.newest = mine[mine.length - 1];
+        const starts = liveFeed.frame.effects[c.index]?.starts ?? 0;
+        if (starts !== this.trailStarts) this.trail = [];
+        this.trailStarts = starts;
+        this.trail.push(...mine);
+        if (this.trail.length > 240) this.trail.splice(0, this.trail.length - 240);
         for (const r of mine) schematicTrace.push({ t_ms: r.t_ms, drawnAt: performance.now(), x: r.position[0] ?? 0, y: r.position[1] ?? 0 });
         if (schematicTrace.length > 4000) schematicTrace.splice(0, schematicTrace.length - 4000);
       }
@@ -84,6 +91,7 @@ export class DynamicsSchematic implements Graphic {
     if (this.c?.fx.type !== c.fx.type || this.c.index !== c.index) {
       this.newest = null;
       this.peak = 0;
+      this.trail = [];
     }
     this.c = c;
     const d = block(c.fx, 'dynamic');
@@ -151,6 +159,9 @@ export class DynamicsSchematic implements Graphic {
       const scale = 60 / Math.max(50, this.peak);
       const rest = 60; // the tether drawn with a rest length, along +x, so it shows
       const mx = hx + rest + rel[0] * scale, my = hy - rel[1] * scale;
+      // the mass's path in this play
+      const path = this.trail.map((t) => `${(hx + rest + (t.position[0] ?? 0) * scale).toFixed(1)},${(hy - (two ? (t.position[1] ?? 0) : 0) * scale).toFixed(1)}`);
+      if (path.length > 1) parts.push(svg('polyline', { points: path.join(' '), fill: 'none', stroke: '#c4783f', 'stroke-width': 1, 'stroke-opacity': 0.6, class: 'trail' }, svg('title', {}, 'the mass’s path in this play')));
       const law = ((d.control_law as Record<string, unknown>[]) ?? [])[0] ?? {};
       const play = type === 'dynamic_inertia' ? num(d, 'play') : type === 'dynamic_control_law' ? num(law, 'length') : 0;
       parts.push(svg('path', { d: zigzag(hx, hy, mx, my, 7, 6), fill: 'none', stroke: '#1b9e5a', 'stroke-width': 1.6, class: 'spring' }));
