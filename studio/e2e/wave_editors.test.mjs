@@ -149,24 +149,22 @@ test('force profile: a stroke drawn on the lane becomes the samples, and the dev
 
   const from = await H.playThrough(page, 500);
   const rows = await H.samplesSince(page, from);
-  // the rendered force as runs of one level (each sample held for its 50 ms)
-  const runs = [];
-  for (const r of rows) {
-    const last = runs[runs.length - 1];
-    if (last && Math.abs(r[1] - last.level) <= 30) ++last.count;
-    else runs.push({ level: r[1], count: 1 });
+  // Every report of the play shows the sample of its frame (each held one period, §4.3.a).
+  // The play starts between the last quiet report and the first loud one; a report within
+  // that uncertainty (and a tick) of a frame's edge may show either neighbour. On a loaded
+  // machine the Studio's sampler, which takes the newest report, can miss a stretch, so
+  // most frames, not all, must have been seen.
+  const i0 = rows.findIndex((r) => r[1] !== 0);
+  const t0 = rows[i0][0], slack = t0 - (rows[i0 - 1]?.[0] ?? t0) + 2;
+  const seen = new Set();
+  for (const r of rows.filter((r) => r[0] >= t0 && r[0] < t0 + 500)) {
+    const into = r[0] - t0, k = Math.floor(into / 50), edge = into - k * 50;
+    const at = (j) => (j >= samples.length ? 0 : samples[j]); // after the play: no force
+    const ok = [k, ...(edge <= slack ? [k - 1] : []), ...(50 - edge <= slack ? [k + 1] : [])].some((j) => at(j) === r[1]);
+    assert.ok(ok, `at ${into.toFixed(0)} ms (frame ${k}) the device plays ${r[1]}, the sample is ${samples[k]}`);
+    if (samples[k] === r[1]) seen.add(k);
   }
-  // the play: from the first run that is not the rest before it to the last. A level is
-  // held for 25 reports; on a loaded machine the Studio's sampler, which takes the newest
-  // report, can miss some, so 3 alike make a held level (the device jumps between them).
-  const held = runs.filter((r) => r.count >= 3).map((r) => r.level);
-  while (held.length && held[0] === 0) held.shift();
-  while (held.length && held[held.length - 1] === 0) held.pop();
-  const expected = samples.slice();
-  while (expected.length && expected[0] === 0) expected.shift();
-  while (expected.length && expected[expected.length - 1] === 0) expected.pop();
-  assert.equal(held.length, expected.length, `one held level per sample: ${held.join(', ')} (samples ${samples.join(', ')}; runs ${JSON.stringify(runs.slice(0, 30))})`);
-  held.forEach((v, k) => assert.ok(Math.abs(v - expected[k]) <= 30, `level ${k}: the device ${v}, the sample ${expected[k]}`));
+  assert.ok(seen.size >= 7, `frames seen: ${[...seen].sort((x, y) => x - y).join(', ')}`);
 });
 
 test('ramp: dragging the end handle sets the field and the device ramps to it', async () => {
