@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <utility>
 
 #include "feel/effect_type.hpp"
 #include "feel/engine.hpp"
@@ -84,6 +85,29 @@ json locate(const std::string& message, bool compound) {
 }
 
 }  // namespace
+
+void DynamicInbox::push(size_t effect, const host::DynamicEvent& e) {
+    json position = json::array(), velocity = json::array(), handle_velocity = json::array();
+    for (int a = 0; a < e.axis_count && a < kMaxAxes; ++a) {
+        position.push_back(e.position[a]);
+        velocity.push_back(e.velocity[a]);
+        handle_velocity.push_back(e.handle_velocity[a]);
+    }
+    json r = {{"effect", effect},
+              {"kind", e.kind == DynamicReport::Kind::interim ? "interim" : "final"},
+              {"t_ms", static_cast<double>(e.t_us) / 1000.0},
+              {"position", position},
+              {"velocity", velocity},
+              {"handle_velocity", handle_velocity}};
+    std::lock_guard lock(mu);
+    if (reports.size() >= kMax) reports.erase(reports.begin());
+    reports.push_back(std::move(r));
+}
+
+std::vector<json> DynamicInbox::take() {
+    std::lock_guard lock(mu);
+    return std::exchange(reports, {});
+}
 
 LiveSession::LiveSession(std::shared_ptr<StudioDevice> device, const ProtocolSchema& schema)
     : device_(std::move(device)), schema_(schema), last_sample_(device_->newest_seq()) {}
@@ -258,6 +282,8 @@ std::optional<std::string> LiveSession::apply(size_t index, const format::Effect
         return made.status().message;
     }
     slot.effect = std::move(made.value());
+    slot.reports = slot.effect->subscribe(
+        [inbox = inbox_, index](const host::DynamicEvent& e) { inbox->push(index, e); });
     if (was_playing) {
         if (slot.effect->start().ok()) {
             ++slot.starts;
@@ -323,7 +349,7 @@ json LiveSession::state_frame() {
     return {{"type", "state"},       {"t_us", t_us},       {"samples", rows},
             {"position", position},  {"force", force},     {"buttons", buttons},
             {"pointer_seq", pointer_seq_}, {"pointer_age_us", pointer_age_us},
-            {"effects", last_effect_states_}};
+            {"effects", last_effect_states_}, {"dynamics", inbox_->take()}};
 }
 
 }  // namespace feel::studio

@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,6 +34,17 @@ namespace feel::studio {
 
 class ProtocolSchema;
 class Workspace;
+
+// A dynamic's interim and final reports (§5.2), as the device's I/O thread delivers them,
+// kept until the next state frame takes them (the dynamics schematic animates from them).
+// Bounded: a browser that takes none keeps the newest kMax.
+struct DynamicInbox {
+    static constexpr size_t kMax = 256;
+    std::mutex mu;
+    std::vector<nlohmann::json> reports;
+    void push(size_t effect, const host::DynamicEvent& e);
+    std::vector<nlohmann::json> take();
+};
 
 class LiveSession {
 public:
@@ -61,6 +73,7 @@ private:
         bool armed = true;        // "play on trigger": downloaded with its trigger
         bool playing = false;     // started by this session and not stopped
         int32_t starts = 0;       // how often this session started it
+        host::Subscription reports;  // its dynamic reports (declared after effect: goes first)
     };
 
     nlohmann::json set_sensation(const nlohmann::json& m);
@@ -72,6 +85,7 @@ private:
     const ProtocolSchema& schema_;
     std::vector<Slot> slots_;
     Workspace* workspace_ = nullptr;
+    std::shared_ptr<DynamicInbox> inbox_ = std::make_shared<DynamicInbox>();
     uint64_t last_sample_ = 0;
     uint32_t buttons_ = 0;
     uint32_t hats_ = 0;

@@ -144,6 +144,7 @@ json StudioDevice::describe() const {
             {"hats", c.hat_count},
             {"local_reflexes", c.local_reflexes},
             {"loop_rate_hz", c.loop_rate_hz},
+            {"interim_report_hz", c.interim_report_hz},
             {"effect_slots", c.effect_slots},
             {"types", types}};
     // A simulated device's input scales (EngineConfig): a damper reads velocity_ref

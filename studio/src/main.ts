@@ -7,6 +7,7 @@ import type { FieldsDescription } from './editors/form';
 import type { LiveFeed } from './editors/editor';
 import { editorFor, editorsFrame } from './editors/registry';
 import { handlePositions } from './editors/widgets/drag';
+import { liveFeed as waveLiveFeed } from './editors/live_feed';
 import { ApiError, api } from './files';
 import { Live } from './live';
 import { type FieldError, Store } from './store';
@@ -121,6 +122,7 @@ live.on((m) => {
     }
     case 'state': {
       ++frames;
+      waveLiveFeed.push(m);
       plot.push(m.samples as number[][]);
       pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
       editorsFrame();

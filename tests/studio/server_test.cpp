@@ -8,10 +8,13 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -269,6 +272,60 @@ TEST_F(ServerTest, RefusesOversizedWebSocketMessages) {
     beast::flat_buffer b;
     for (int i = 0; i < 500 && !ec; ++i) ws->read(b, ec), b.consume(b.size());
     EXPECT_TRUE(ec) << "the server closed the connection";
+}
+
+// A dynamic that asks for interim reports (§5.2) has them in the state frames, at the
+// rate the device announces, with the mass's offset per axis of the effect; one that does
+// not ask has none.
+TEST_F(ServerTest, StateFramesCarryADynamicsInterimReports) {
+    auto ws = open_live();
+    const json hello = next(*ws, "hello");
+    const double hz = hello["device"]["interim_report_hz"].get<double>();
+    ASSERT_GT(hz, 0);
+    json recoil = {{"type", "dynamic_recoil"}, {"duration_us", 1000000}, {"axes", {"x", "y"}},
+                   {"dynamic", {{"blast_direction", 18000}, {"blast_intensity", 8000}, {"dynamic_mass", 500},
+                                {"blast_resonance", 3000}, {"blast_decay", 200}}}};
+    for (const bool interim : {false, true}) {  // the same effect, updated in place
+        recoil["dynamic"]["interim_reporting"] = interim;
+        ws->write(asio::buffer(json{{"type", "set_sensation"}, {"seq", interim ? 2 : 1}, {"name", "r"},
+                                    {"effects", json::array({recoil})}}.dump()));
+        ASSERT_TRUE(next(*ws, "validated")["ok"].get<bool>());
+        ws->write(asio::buffer(json{{"type", "play"}, {"effect", 0}}.dump()));
+        // Until the session has seen the play end (a loaded machine may start it late).
+        std::vector<json> reports;
+        bool played = false;
+        for (const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+             std::chrono::steady_clock::now() < end;) {
+            const json st = next(*ws, "state");
+            for (const json& r : st["dynamics"]) reports.push_back(r);
+            const json& e = st["effects"];
+            if (!e.empty() && e[0]["starts"] == (interim ? 2 : 1)) {
+                if (e[0]["state"] == "playing") played = true;
+                else if (played) break;
+            }
+        }
+        ASSERT_TRUE(played);
+        if (!interim) {
+            EXPECT_TRUE(reports.empty()) << reports.front();
+            continue;
+        }
+        ASSERT_GT(reports.size(), 20u);
+        for (const json& r : reports) {
+            EXPECT_EQ(r["effect"], 0);
+            EXPECT_EQ(r["kind"], "interim");
+            EXPECT_EQ(r["position"].size(), 2u);
+        }
+        const double span_ms = reports.back()["t_ms"].get<double>() - reports.front()["t_ms"].get<double>();
+        EXPECT_NEAR(static_cast<double>(reports.size() - 1) * 1000.0 / span_ms, hz, 0.1 * hz);
+        // the blast from 180° kicks the mass along y, not x
+        double peak_x = 0, peak_y = 0;
+        for (const json& r : reports) {
+            peak_x = std::max(peak_x, std::abs(r["position"][0].get<double>()));
+            peak_y = std::max(peak_y, std::abs(r["position"][1].get<double>()));
+        }
+        EXPECT_GT(peak_y, 10.0);
+        EXPECT_LT(peak_x, 0.01 * peak_y);
+    }
 }
 
 }  // namespace

@@ -5,18 +5,58 @@
 //   conditions (spring, damper, inertia, friction, angle_spring)   condition_curve.ts
 //   texture                                                          texture.ts
 //   walls and barriers                                               wall.ts
+//   waves and sweeps                                                 wave.ts, envelope.ts
+//   constant, ramp, vector force, smart pop                          force_over_time.ts
+//   force profile                                                    profile.ts
+//   dynamics                                                         dynamics_schematic.ts
+// The last four are drawn by a Graphic (graphic.ts), which animates from its own live feed
+// (live_feed.ts, fed by main.ts) and is wrapped here as an editor of the same shape.
 import type { State, Store } from '../store';
 import { conditionEditor } from './condition_curve';
-import type { EditorFactory, GraphicEditor, LiveFeed } from './editor';
-import { formEditor } from './form';
+import { DynamicsSchematic, kDynamicTypes, schematicTrace } from './dynamics_schematic';
+import { commit, deviceAxes, type EditorFactory, type GraphicEditor, type LiveFeed } from './editor';
+import { ForceOverTimeEditor, kForceTypes } from './force_over_time';
+import { type FieldsDescription, formEditor } from './form';
+import type { Graphic } from './graphic';
+import { liveFeed as waveLiveFeed } from './live_feed';
+import { ProfileEditor } from './profile';
 import { textureEditor } from './texture';
 import { type TimingPanel, timingPanel } from './timing';
 import { wallEditor } from './wall';
+import { kSweepTypes, kWaveTypes, WaveEditor } from './wave';
+import './wave_family.css';
+
+// A Graphic as an editor: drawn from the store's state, moved by its own live feed.
+function graphicEditor(make: () => Graphic): EditorFactory {
+  return (store: Store): GraphicEditor => {
+    const g = make();
+    return {
+      el: g.el,
+      render: (s, fx, i) => {
+        if (!s.hello) return;
+        const desc = s.hello?.fields as unknown as FieldsDescription | undefined;
+        g.render({
+          state: s,
+          fx,
+          index: i,
+          info: desc?.types.find((t) => t.type === fx.type),
+          deviceAxes: deviceAxes(s),
+          edit: (change) => commit(store, i, change),
+        });
+      },
+      frame: () => {},
+    };
+  };
+}
 
 const families: [readonly string[], EditorFactory][] = [
   [['spring', 'damper', 'inertia', 'friction', 'angle_spring'], conditionEditor],
   [['texture'], textureEditor],
   [['axis_wall', 'angle_wall', 'axis_barrier', 'angle_barrier'], wallEditor],
+  [[...kWaveTypes, ...kSweepTypes], graphicEditor(() => new WaveEditor())],
+  [kForceTypes, graphicEditor(() => new ForceOverTimeEditor())],
+  [['force_profile'], graphicEditor(() => new ProfileEditor())],
+  [kDynamicTypes, graphicEditor(() => new DynamicsSchematic())],
 ];
 
 type Editor = (s: State) => void;
@@ -77,3 +117,7 @@ export function editorFor(_s: State, root: HTMLElement, store: Store, live: Live
 export function editorsFrame(): void {
   for (const host of hosts.values()) host.frame();
 }
+
+// For the end-to-end tests: the live feed the wave family animates from, and what the
+// dynamics schematic drew.
+(window as unknown as Record<string, unknown>).__editors = { liveFeed: waveLiveFeed, schematicTrace };

@@ -74,6 +74,9 @@ export const schema = {
       // share of the pointer -> force shown latency
       pointer_age_us: { type: 'number' },
       effects: { type: 'array', maxItems: 32 },
+      // the dynamics' interim and final reports since the last frame (§5.2): effect, kind,
+      // t_ms, position/velocity (mass minus handle) and handle_velocity per axis
+      dynamics: { type: 'array', maxItems: 256 },
     },
     // the answer to set_sensation: errors at their fields, or how long the device took
     validated: {
