@@ -250,7 +250,11 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
     std::optional<std::vector<uint8_t>> create = protocol::pid::create_new_effect(core_->layout, params.type, error);
     if (!create) return encode_error(what, error, ErrorKind::not_supported);
     if (Status s = core_->send(FrameKind::set_feature, std::move(*create), what + ": Create New Effect"); !s.ok()) return s;
+    // A device may stall the get while it is still placing the effect (feel's USB device
+    // does after 1 s without its answer): asking again reads the same Block Load.
     Result<std::vector<uint8_t>> load = core_->get_feature(PidReport::block_load, what + ": get PID Block Load");
+    for (int retry = 0; retry < 2 && !load && load.status().kind == ErrorKind::protocol; ++retry)
+        load = core_->get_feature(PidReport::block_load, what + ": get PID Block Load");
     if (!load) return load.status();
     const std::optional<protocol::pid::BlockLoad> block = protocol::pid::read_block_load(core_->layout, load.value());
     if (!block) return Status::failure(ErrorKind::protocol, what + ": PID Block Load from " + core_->address + " is too short");

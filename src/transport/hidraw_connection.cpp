@@ -52,7 +52,9 @@ bool uses_report_ids(const std::vector<uint8_t>& d) {
     return false;
 }
 
-bool is_gone(int error_number) { return error_number == ENODEV || error_number == EIO || error_number == EPIPE || error_number == ESHUTDOWN; }
+// hidraw returns ENODEV once the device is unplugged (ESHUTDOWN while it goes). EPIPE is a
+// stall: the device refused the request, and is still there.
+bool is_gone(int error_number) { return error_number == ENODEV || error_number == ESHUTDOWN; }
 
 class HidrawConnection final : public Connection {
 public:
@@ -85,12 +87,7 @@ public:
                 std::vector<uint8_t> bytes(kMaxFramePayload, 0);
                 bytes[0] = frame.payload.empty() ? 0 : frame.payload[0];
                 const int n = ::ioctl(fd_.get(), HIDIOCGFEATURE(bytes.size()), bytes.data());
-                if (n < 0) {
-                    if (is_gone(errno)) fail_io("GET_REPORT(Feature)");
-                    // The device refused (stalled) the request: the host times out on it,
-                    // as it would waiting for a device that does not answer.
-                    return;
-                }
+                if (n < 0) fail_io("GET_REPORT(Feature) of report " + std::to_string(bytes[0]));
                 bytes.resize(static_cast<std::size_t>(n));
                 if (!numbered_ && (bytes.empty() || bytes[0] != 0)) bytes.insert(bytes.begin(), 0);
                 queue_reply(Frame{FrameKind::feature_reply, std::move(bytes)});
@@ -195,7 +192,10 @@ private:
             wake_.raise();
             throw_disconnected(why);
         }
-        throw TransportError(TransportError::Kind::disconnected, peer_ + ": " + what + " failed: " + errno_text(error_number));
+        // Not gone: the device refused this one request (a stall, EPIPE) or the kernel did
+        // (a timeout). The connection stays open; the caller gets the reason.
+        throw std::runtime_error(peer_ + ": " + what + " failed: " + errno_text(error_number) +
+                                 (error_number == EPIPE ? " (the device stalled the request: it refused it)" : ""));
     }
 
     void queue_reply(Frame frame) {

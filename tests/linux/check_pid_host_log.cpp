@@ -5,11 +5,14 @@
 //
 // The probe's "pid expect KIND REPORT TOKENS..." lines are matched in order against the
 // device log's lines ("<time> KIND REPORT field=value ..."): each must find, after the
-// previous one's line, a line of that kind and report that carries every token. The probe
+// previous match of the same KIND, a line of that kind and report that carries every token.
+// Order is kept per pipe: feature reports (set_feature, ep0) and output reports (the
+// interrupt OUT endpoint) travel on different pipes, so one may overtake the other. The probe
 // must also say that the device offered PID's eleven effect types and that it played them
 // all without an error. Prints one line per check and "pid-host: N passed, M failed".
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -52,7 +55,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> probe = lines_of(probe_path);
     const std::vector<std::string> log = lines_of(log_path);
     bool saw_caps = false, saw_done = false;
-    std::size_t at = 0;  // the device log line after the last match
+    std::map<std::string, std::size_t> at;  // per kind: the device log line after its last match
     int expectations = 0;
     for (const std::string& line : probe) {
         if (line.rfind("pid error", 0) == 0) check(false, line);
@@ -73,7 +76,8 @@ int main(int argc, char** argv) {
             continue;
         }
         bool found = false;
-        for (std::size_t i = at; i < log.size() && !found; ++i) {
+        std::size_t& from = at[want[0]];
+        for (std::size_t i = from; i < log.size() && !found; ++i) {
             const std::vector<std::string> got = words(log[i]);
             if (got.size() < 3 || got[1] != want[0] || got[2] != want[1]) continue;
             bool all = true;
@@ -84,7 +88,7 @@ int main(int argc, char** argv) {
             }
             if (all) {
                 found = true;
-                at = i + 1;
+                from = i + 1;
             }
         }
         check(found, "the device received " + line.substr(11));

@@ -10,6 +10,8 @@
 //   get_descriptor -> HIDIOCGRDESC, the same
 //   input_report   <- read()
 // A device that numbers no reports gets and gives the ID byte 0 in frames, as hidraw wants.
+// send() throws TransportError(disconnected) when the device is gone, std::runtime_error
+// when it refused one request (a stall), naming the request.
 //
 // Where the devices are: /sys/class/hidraw/hidrawN/device/ has the HID device's uevent
 // (HID_ID bus:vendor:product, HID_NAME, HID_UNIQ — the serial number) and its
