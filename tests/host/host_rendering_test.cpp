@@ -94,7 +94,9 @@ TEST(HostRendering, Iforce1DynamicsAreCreatedAndPlayedByTheHost) {
            recoil->status()->state != runtime::ReportedEffectState::stopped) {
         if (Result<InputState> in = dev.wait_input(50ms)) peak = std::max(peak, std::abs(in->force[1]));
     }
-    EXPECT_GT(peak, 100.0f) << "the host's force never reached the device";
+    // Nothing else plays on the device, so any force beyond the stream's rounding (1 unit)
+    // is the host's; the firm grip keeps the recoil's tether force small (~100 units).
+    EXPECT_GT(peak, 20.0f) << "the host's force never reached the device";
     // The host then sends one zero and the motors rest.
     EXPECT_EQ(recoil->status()->state, runtime::ReportedEffectState::stopped);
     EXPECT_EQ(recoil->status()->last_end, PlayEnd::finished);
