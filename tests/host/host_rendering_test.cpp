@@ -23,14 +23,29 @@
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/sim/device_profile.hpp"
+#include "feel/transport/transport.hpp"
 #include "host_test_support.hpp"
 
 namespace feel::host::test {
 namespace {
 
-// A rig whose device has only PID's effect types when `pid_only`.
+// SimRig::make, with the device's pid_effects_only option.
 SimRig make_rig(const std::string& profile, bool pid_only, const std::string& hand, const std::string& motion) {
-    return SimRig::make(profile, hand, motion, {}, pid_only);
+    peripheral::PeripheralOptions po;
+    po.profile = profile;
+    po.hand = hand;
+    po.motion = motion;
+    po.pid_effects_only = pid_only;
+    po.runtime.realtime_priority = false;
+    po.runtime.lock_memory = false;
+    SimRig rig;
+    rig.device = std::make_unique<peripheral::Peripheral>(po);
+    transport::ConnectionPair pair = transport::in_process_pair("sim:" + profile);
+    rig.device->attach(std::move(pair.device));
+    Result<Device> opened = Device::attach(std::move(pair.host), "sim:" + profile);
+    if (!opened) ADD_FAILURE() << opened.status().message;
+    else rig.host.emplace(std::move(opened.value()));
+    return rig;
 }
 
 EffectParams wall_x(int32_t hardness) { return emulation::wall_on_x(hardness); }
@@ -79,7 +94,9 @@ TEST(HostRendering, Iforce1DynamicsAreCreatedAndPlayedByTheHost) {
            recoil->status()->state != runtime::ReportedEffectState::stopped) {
         if (Result<InputState> in = dev.wait_input(50ms)) peak = std::max(peak, std::abs(in->force[1]));
     }
-    EXPECT_GT(peak, 100.0f) << "the host's force never reached the device";
+    // Nothing else plays on the device, so any force beyond the stream's rounding (1 unit)
+    // is the host's; the firm grip keeps the recoil's tether force small (~100 units).
+    EXPECT_GT(peak, 20.0f) << "the host's force never reached the device";
     // The host then sends one zero and the motors rest.
     EXPECT_EQ(recoil->status()->state, runtime::ReportedEffectState::stopped);
     EXPECT_EQ(recoil->status()->last_end, PlayEnd::finished);

@@ -42,13 +42,11 @@ struct SimRig {
     std::optional<Device> host;  // declared after the device: closed first
 
     static SimRig make(const std::string& profile, const std::string& hand = "firm",
-                       const std::string& motion = "hold:0", OpenOptions options = {},
-                       bool pid_effects_only = false) {
+                       const std::string& motion = "hold:0", OpenOptions options = {}) {
         peripheral::PeripheralOptions po;
         po.profile = profile;
         po.hand = hand;
         po.motion = motion;
-        po.pid_effects_only = pid_effects_only;
         po.runtime.realtime_priority = false;
         po.runtime.lock_memory = false;
         SimRig rig;

@@ -20,9 +20,10 @@
 // host-rendered effect with a trigger is started here on each press edge, and every
 // trigger_repeat_interval_us while held, like DeviceCore's emulated reflexes.
 //
-// Locks: `mu` guards the renderer and the trigger states. The caller's thread takes
-// DeviceCore::call_mu, then (briefly) DeviceCore::mu, then mu; the I/O thread takes mu
-// alone and sends after releasing it.
+// Locks: `mu` guards the renderer and the trigger states. The caller's thread holds
+// DeviceCore::call_mu; under it, mu may be held while DeviceCore::mu is taken (to file the
+// renderer's id in the record), never the reverse. The I/O thread takes mu alone and
+// sends after releasing it.
 #pragma once
 
 #include <chrono>
