@@ -70,7 +70,8 @@ public:
         : bytes_(bytes), pos_(begin), end_(end), where_(std::move(where)) {}
 
     [[nodiscard]] size_t pos() const noexcept { return pos_; }
-    [[nodiscard]] size_t left() const noexcept { return end_ - pos_; }
+    // A chunk that ends before where it begins has nothing left (never a wrapped size_t).
+    [[nodiscard]] size_t left() const noexcept { return pos_ < end_ ? end_ - pos_ : 0; }
     [[nodiscard]] const std::string& where() const noexcept { return where_; }
 
     void need(size_t n, std::string_view what) const {
@@ -526,6 +527,11 @@ ImportResult import_ffe(std::string_view bytes, const ImportOptions& options) {
     // Force Editor leaves the RIFF size 0; then the file runs to its end.
     size_t end = bytes.size();
     if (riff_size != 0) {
+        if (riff_size < 4 + 16) {  // the form type and the file's GUID at least
+            fail("the RIFF header says " + std::to_string(riff_size) +
+                 " bytes follow it (allowed 0, meaning to the end of the file, or 20.." +
+                 std::to_string(bytes.size() - 8) + ": the form type and the file's GUID at least)");
+        }
         if (riff_size > bytes.size() - 8) {
             fail("truncated: the RIFF header says " + std::to_string(riff_size) + " bytes follow it, the file has " +
                  std::to_string(bytes.size() - 8));

@@ -292,6 +292,22 @@ TEST(FfeImport, ErrorsNameTheFieldAndTheAllowedRange) {
     EXPECT_NE(error_of(ffe_file({})).find("holds no effect"), std::string::npos);
 }
 
+// Found by fuzz_ffe_import: a RIFF size smaller than the form type and the file's GUID
+// made the body end before it began (a crash, not an error).
+TEST(FfeImport, ARiffSizeSmallerThanItsHeaderIsRefusedWithTheAllowedRange) {
+    DiFileEffect e;
+    e.type_specific = {5000, 0, 0, 10000};
+    std::string file = ffe_file({e});
+    for (const int size : {1, 3, 19}) {
+        file[4] = static_cast<char>(size);
+        file[5] = file[6] = file[7] = 0;
+        const std::string msg = error_of(file);
+        EXPECT_NE(msg.find("the RIFF header says " + std::to_string(size) + " bytes follow it (allowed 0"),
+                  std::string::npos)
+            << msg;
+    }
+}
+
 TEST(FfeImport, EveryTruncationIsAClearErrorNeverACrash) {
     DiFileEffect e;
     e.envelope = test::DiEnvelope{0, 1000, 0, 1000};

@@ -1,43 +1,17 @@
 // The end-to-end harness for the editor suites: `feel studio` on a free port, Debian's
 // headless Chromium through playwright-core, pages that wait on the Studio's own signals
 // (the server answered the newest edit, the device's clock passed), never on fixed sleeps.
-import { spawn } from 'node:child_process';
-import { mkdtempSync, mkdirSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import { chromium } from 'playwright-core';
+import { mkdirSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { launchBrowser as launchWith, repo } from '../harness.mjs';
 
-export const repo = resolve(import.meta.dirname, '../../..');
-export const feel = resolve(repo, process.env.FEEL ?? 'build/apps/feel/feel');
+export { feel, repo, startStudio } from '../harness.mjs';
 export const shots = resolve(repo, 'out/studio');
 mkdirSync(shots, { recursive: true });
 export const kTimeout = 90000; // ms: a loaded 2-core machine can stall a step for seconds
 
-// Starts `feel studio` on a free port; resolves with its URL and process.
-export function startStudio(workspace, device = 'sim:iforce2') {
-  return new Promise((ok, fail) => {
-    const p = spawn(feel, ['studio', '--workspace', workspace, '--device', device, '--port', '0'], {
-      stdio: ['ignore', 'pipe', 'inherit'],
-    });
-    let out = '';
-    p.stdout.on('data', (d) => {
-      out += d;
-      const m = out.match(/open (http:\/\/\S+)/);
-      if (m) ok({ url: m[1], proc: p });
-    });
-    p.on('exit', (code) => fail(new Error(`feel studio exited ${code}: ${out}`)));
-  });
-}
-
-export function launchBrowser() {
-  return chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'feel-chromium-')), {
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    viewport: { width: 1400, height: 1100 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
-}
+// The editors need the taller page: the graphic, the timing panel and the form.
+export const launchBrowser = () => launchWith({ width: 1400, height: 1100 });
 
 export async function openPage(browser, url) {
   const page = await browser.newPage();
