@@ -78,6 +78,7 @@ if grep -E '^(feel_[a-z_]*test|example_[a-z_]*|feel_bench_[a-z_]*|fuzz_[a-z_]*|f
   fail "a subproject feel builds tests, benchmarks, fuzzers, examples or the CLI"
 fi
 if grep -q "^CAIRO_\|^pkgcfg_lib_CAIRO" "$work/sub/CMakeCache.txt"; then fail "a subproject feel looks for cairo"; fi
+if grep -q "^SNDFILE_\|^pkgcfg_lib_SNDFILE" "$work/sub/CMakeCache.txt"; then fail "a subproject feel looks for libsndfile"; fi
 echo "targets: game, c_game and feel's libraries; no tests, benchmarks, fuzzers, examples, CLI or cairo"
 
 echo

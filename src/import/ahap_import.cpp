@@ -154,7 +154,7 @@ ImportResult import_ahap(std::string_view text, const ImportOptions& options) {
     Json doc;
     try {
         doc = Json::parse(text.begin(), text.end(), nullptr, true, false);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // a syntax error, or a number too large for a double
         fail(std::string("not valid JSON: ") + e.what());
     }
     if (!doc.is_object()) fail("an AHAP file is a JSON object with a \"Pattern\" array");
