@@ -94,10 +94,17 @@ inline EffectParams mixed_dynamic(int i) {
 }
 
 // Effect i of the mix: of every 8, 3 waves, 3 conditions and 2 dynamics (64 effects: 24
-// waves, 24 conditions, 16 dynamics).
+// waves, 24 conditions, 16 dynamics). Each class counts its own members, so the first 15
+// waves, 10 conditions and 8 dynamics are every type of their class once (64 effects hold
+// every type: 15 wave, 10 condition and 8 dynamic types). Picking a class's type by the
+// mix's index i instead would repeat a few types (the dynamics at i % 8 = 6, 7 would all be
+// slings and paddles).
 inline EffectParams busy_mix_effect(int i) {
     const int kind = i % 8;
-    return kind < 3 ? mixed_wave(i) : kind < 6 ? mixed_condition(i) : mixed_dynamic(i);
+    const int round = i / 8;
+    if (kind < 3) return mixed_wave(3 * round + kind);
+    if (kind < 6) return mixed_condition(3 * round + kind - 3);
+    return mixed_dynamic(2 * round + kind - 6);
 }
 
 struct BusyMixCounts {

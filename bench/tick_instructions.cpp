@@ -1,0 +1,113 @@
+// Instructions per engine tick, for valgrind's callgrind (issue 14). Times on the shared
+// CI machine swing with its load; instruction counts do not, so this is how the README's
+// "instructions per tick" figures are taken:
+//
+//   valgrind --tool=callgrind --toggle-collect='*measured_ticks*'
+//            build/bench/feel_tick_instructions peer_moving 2000     (one command line)
+//   callgrind_annotate --inclusive=yes callgrind.out.<pid>
+//
+// and the total divided by the ticks measured (the program prints the divisor). The
+// handle's inputs are computed before the measured ticks, so the motion's own sin and cos
+// are not counted, and the first 1000 ticks (the estimator's history filling, the
+// effects' start) run outside the measured function.
+//
+//   feel_tick_instructions MIX [TICKS]
+//     MIX: peer_moving, peer_at_rest (bench/peer_mix.hpp's 40 effects),
+//          busy_64 (bench/busy_mix.hpp's 64 effects of every type, moving),
+//          estimator, estimator_velocity (the estimator alone on the slow circle,
+//          with and without the acceleration), estimator_at_rest
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "busy_mix.hpp"
+#include "feel/engine.hpp"
+#include "motion_estimator.hpp"
+#include "peer_mix.hpp"
+
+namespace {
+
+using namespace feel;
+
+constexpr int kWarmupTicks = 1000;
+
+struct Run {
+    std::unique_ptr<Engine> engine;
+    detail::MotionEstimator estimator;
+    bool estimator_only = false;
+    bool with_acceleration = true;
+};
+
+[[gnu::noinline]] void run_ticks(Run& run, const std::vector<TickInput>& inputs, size_t begin, size_t end) {
+    TickOutput out;
+    DynamicReport report;
+    float sink = 0;
+    for (size_t k = begin; k < end; ++k) {
+        if (run.estimator_only) {
+            run.estimator.update(inputs[k].t_us, inputs[k].position, 2, run.with_acceleration);
+            sink += run.estimator.velocity(0);
+        } else {
+            run.engine->tick(inputs[k], out);
+            while (run.engine->pop_report(report)) sink += report.position[0];
+            sink += out.force[0];
+        }
+    }
+    if (sink == 12345.678f) std::puts("");  // keeps the work observable
+}
+
+// The function callgrind's --toggle-collect names.
+[[gnu::noinline]] void measured_ticks(Run& run, const std::vector<TickInput>& inputs, size_t begin, size_t end) {
+    run_ticks(run, inputs, begin, end);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: feel_tick_instructions MIX [TICKS]\n");
+        return 2;
+    }
+    const char* mix = argv[1];
+    const int ticks = argc > 2 ? std::atoi(argv[2]) : 2000;
+    if (ticks < 1) {
+        std::fprintf(stderr, "TICKS must be >= 1\n");
+        return 2;
+    }
+    const bool moving = std::strcmp(mix, "peer_at_rest") != 0 && std::strcmp(mix, "estimator_at_rest") != 0;
+    Run run;
+    std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
+    for (size_t k = 0; k < inputs.size(); ++k) {
+        const int64_t n = static_cast<int64_t>(k) + 1;
+        if (std::strcmp(mix, "busy_64") == 0) {
+            bench::move_handle(inputs[k], n);
+            inputs[k].t_us = n * 1000;
+        } else {
+            bench::move_handle_in_slow_circle(inputs[k], moving ? n : 0);
+            inputs[k].t_us = n * 1000;
+        }
+    }
+    if (std::strncmp(mix, "estimator", 9) == 0) {
+        run.estimator_only = true;
+        run.with_acceleration = std::strcmp(mix, "estimator_velocity") != 0;
+        run.estimator.configure(20000.0f / 4096.0f);
+    } else if (std::strncmp(mix, "peer_", 5) == 0) {
+        run.engine = std::make_unique<Engine>(EngineConfig{});
+        if (!bench::load_peer_mix(*run.engine)) return 1;
+    } else if (std::strcmp(mix, "busy_64") == 0) {
+        run.engine = std::make_unique<Engine>(EngineConfig{});
+        const bench::BusyMixResult r = bench::load_busy_mix(*run.engine, 64);
+        if (!r.ok()) {
+            std::fprintf(stderr, "effect %d refused: %s\n", r.failed_index, r.error.message().c_str());
+            return 1;
+        }
+    } else {
+        std::fprintf(stderr, "unknown MIX %s\n", mix);
+        return 2;
+    }
+    run_ticks(run, inputs, 0, kWarmupTicks);
+    measured_ticks(run, inputs, kWarmupTicks, inputs.size());
+    std::printf("%s: %d ticks measured\n", mix, ticks);
+    return 0;
+}
