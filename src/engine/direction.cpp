@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "turn_trig.hpp"
+
 namespace feel::detail {
 namespace {
 
@@ -44,6 +46,12 @@ void polar_factors(double angle_centideg, float factors[kMaxAxes]) noexcept {
     sin_cos(angle_centideg, s, c);
     factors[axis_index(Axis::x)] = static_cast<float>(-s);
     factors[axis_index(Axis::y)] = static_cast<float>(-c);
+}
+
+void polar_factors_turns(float turns, float factors[kMaxAxes]) noexcept {
+    clear(factors);
+    factors[axis_index(Axis::x)] = -sin_turns(turns);
+    factors[axis_index(Axis::y)] = -cos_turns(turns);
 }
 
 void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noexcept {

@@ -24,8 +24,27 @@ struct ClockReading {
 
 [[nodiscard]] ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noexcept;
 // The same with the iteration count of this play (Engine::start may override the effect's).
-[[nodiscard]] ClockReading read_clock(const EffectParams& params, int32_t iterations,
-                                      int64_t since_start_us) noexcept;
+// Inline: the tick reads every playing effect's clock.
+[[nodiscard]] inline ClockReading read_clock(const EffectParams& params, int32_t iterations,
+                                             int64_t since_start_us) noexcept {
+    ClockReading r;
+    const int64_t t = since_start_us - params.start_delay_us;
+    if (t < 0) return r;
+    if (params.duration_us == kInfiniteUs) {
+        r.phase = ClockPhase::playing;
+        r.tau_us = t;
+        return r;
+    }
+    const int64_t iteration = t / params.duration_us;
+    if (iterations != kInfiniteIterations && iteration >= iterations) {
+        r.phase = ClockPhase::finished;
+        return r;
+    }
+    r.phase = ClockPhase::playing;
+    r.iteration = static_cast<int32_t>(iteration);
+    r.tau_us = t - iteration * params.duration_us;
+    return r;
+}
 
 // The total time from start to finish, or kInfiniteUs.
 [[nodiscard]] int64_t total_length_us(const EffectParams& params) noexcept;

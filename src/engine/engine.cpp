@@ -65,6 +65,14 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
     return {};
 }
 
+void detail::prepare_slot(Slot& s) noexcept {
+    direction_factors(s.params, s.direction);
+    s.cls = effect_class(s.params.type);
+    s.reads_acceleration = s.params.type == EffectType::inertia ||
+                           (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
+    s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
+}
+
 namespace {
 
 // Rendering arrives class by class; until a class lands the engine says so plainly.
@@ -77,7 +85,10 @@ Error check_renderable(EffectType type) noexcept {
     return Error::of(ErrorCode::not_supported, "type", "unknown effect class");
 }
 
-float finite_or_zero(double v) noexcept { return std::isfinite(v) ? static_cast<float>(v) : 0.0f; }
+float finite_or_zero(float v) noexcept { return std::isfinite(v) ? v : 0.0f; }
+
+// Gains are in units of 1/kFullScale: a multiplication by this, not a division per effect.
+constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
 
 }  // namespace
 
@@ -133,7 +144,8 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.last_end = PlayEnd::none;
     s.pool_bytes = bytes;
     m.pool_used_bytes += bytes;
-    detail::direction_factors(params, s.direction);
+    detail::prepare_slot(s);
+    if (index >= m.slot_end) m.slot_end = index + 1;
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
 
@@ -187,12 +199,9 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
     // without play (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
     bool inertia_plays = false;
-    for (int32_t i = 0; i < m.slot_count; ++i) {
+    for (int32_t i = 0; i < m.slot_end; ++i) {
         const Slot& s = m.slots[i];
-        const bool reads_acceleration =
-            s.params.type == EffectType::inertia ||
-            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
-        inertia_plays |= reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
+        inertia_plays |= s.reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
     }
     m.motion.update(in.t_us, in.position, axes, inertia_plays);
     float velocity[kMaxAxes] = {};
@@ -210,19 +219,22 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     m.previous_t_us = in.t_us;
     m.have_previous = true;
 
-    double sum[kMaxAxes] = {};
+    // Single precision (issue 14): forces are within ±10000 per effect and a sum of a few
+    // hundred effects keeps float's 7 digits far beyond a unit.
+    float sum[kMaxAxes] = {};
     int32_t playing = 0;
     if (m.paused) {
         // Pause freezes every effect's clock (§2.2 device control): each running effect's
         // start moves forward by the time that passed, so its elapsed time stands still and
         // it resumes exactly where it was. Pending effects wait for the first running tick.
         // Nothing renders, so conditions and dynamics keep their state too.
-        for (int32_t i = 0; i < m.slot_count; ++i) {
+        for (int32_t i = 0; i < m.slot_end; ++i) {
             Slot& s = m.slots[i];
             if (s.state == EffectState::delayed || s.state == EffectState::playing) s.start_t_us += dt_us;
         }
     }
-    for (int32_t i = 0; i < m.slot_count && !m.paused; ++i) {
+    const int32_t slot_end = m.paused ? 0 : m.slot_end;
+    for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
         if (s.state == EffectState::pending) s.start_t_us = in.t_us;
@@ -248,13 +260,17 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             s.began_playing = true;
         }
 
-        double force[kMaxAxes] = {};
-        const EffectClass cls = effect_class(s.params.type);
+        float force[kMaxAxes] = {};
+        const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {
+            // Dynamics integrate their masses in double (docs/stability.md, "Where double
+            // remains"); their force is converted once here.
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic};
             detail::DynamicResult result;
-            detail::render_dynamic(dynamic, force, result);
+            double dynamic_force[kMaxAxes] = {};
+            detail::render_dynamic(dynamic, dynamic_force, result);
+            for (int a = 0; a < kMaxAxes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;
@@ -274,22 +290,22 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          clock.tau_us};
             detail::render_wave(wave, force);
         }
-        const double effect_gain = s.params.gain / static_cast<double>(kFullScale);
-        for (int a = 0; a < axes; ++a) sum[a] += force[a] * effect_gain;
+        for (int a = 0; a < axes; ++a) sum[a] += force[a] * s.gain_factor;
     }
 
     // Paused or actuators off: the motors get nothing (sum is zero while paused anyway).
     const bool output_on = m.actuators_enabled && !m.paused;
-    const double device_gain = m.device_gain / static_cast<double>(kFullScale);
+    const float device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
+    constexpr float kLimit = static_cast<float>(kFullScale);
     out.saturated = false;
     for (int a = 0; a < kMaxAxes; ++a) {
-        double f = a < axes && output_on ? sum[a] * device_gain : 0.0;
-        if (!std::isfinite(f)) f = 0.0;  // never pass NaN or inf to a motor
-        if (f > kFullScale || f < -kFullScale) {
-            f = f > 0 ? kFullScale : -kFullScale;
+        float f = a < axes && output_on ? sum[a] * device_gain : 0.0f;
+        if (!std::isfinite(f)) f = 0.0f;  // never pass NaN or inf to a motor
+        if (f > kLimit || f < -kLimit) {
+            f = f > 0 ? kLimit : -kLimit;
             out.saturated = true;
         }
-        out.force[a] = static_cast<float>(f);
+        out.force[a] = f;
     }
     out.playing_effects = playing;
 }

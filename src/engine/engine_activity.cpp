@@ -66,7 +66,8 @@ void Engine::activity(EngineActivity& out) const noexcept {
     if (!m.have_previous || m.config_error || m.paused || !m.actuators_enabled) return;
 
     const int axes = m.config.axis_count;
-    const double device_gain = m.device_gain / static_cast<double>(kFullScale);
+    constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
+    const float device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     for (int32_t i = 0; i < m.slot_count; ++i) {
         const detail::Slot& s = m.slots[i];
         // `playing` is what the last tick found: the effect put force on the handle then.
@@ -76,12 +77,12 @@ void Engine::activity(EngineActivity& out) const noexcept {
                                                                   m.previous_t_us - s.start_t_us);
         if (clock.phase != detail::ClockPhase::playing) continue;
 
-        double force[kMaxAxes] = {};
+        float force[kMaxAxes] = {};
         const detail::WaveInput wave{&s.params, s.direction,
                                      s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                      clock.tau_us};
         detail::render_wave(wave, force);
-        const double effect_gain = s.params.gain / static_cast<double>(kFullScale);
+        const float effect_gain = s.gain_factor;
 
         const Classification c = classify(s.params);
         float* class_sum = out.class_force[static_cast<int>(c.kind)];
@@ -96,8 +97,8 @@ void Engine::activity(EngineActivity& out) const noexcept {
             ++out.omitted;
         }
         for (int a = 0; a < kMaxAxes; ++a) {
-            const double f = a < axes ? force[a] * effect_gain * device_gain : 0.0;
-            const float value = std::isfinite(f) ? static_cast<float>(f) : 0.0f;
+            const float f = a < axes ? force[a] * effect_gain * device_gain : 0.0f;
+            const float value = std::isfinite(f) ? f : 0.0f;
             class_sum[a] += value;
             if (entry) entry->force[a] = value;
         }

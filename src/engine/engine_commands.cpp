@@ -164,7 +164,7 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
     s->params = merged;
     m.pool_used_bytes += bytes - s->pool_bytes;
     s->pool_bytes = bytes;
-    detail::direction_factors(merged, s->direction);
+    detail::prepare_slot(*s);
     if (restart) m.begin_play(*s, 0);
     return {};
 }

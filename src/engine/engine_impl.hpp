@@ -19,6 +19,10 @@ namespace detail {
 struct Slot {
     EffectParams params{};
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
+    // What the tick needs of params every tick, worked out once per command (prepare_slot):
+    EffectClass cls = EffectClass::wave;
+    bool reads_acceleration = false;  // inertia, or Dynamic Inertia without play
+    float gain_factor = 0.0f;         // params.gain / kFullScale
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;
@@ -42,6 +46,10 @@ struct Slot {
         return iterations_override != 0 ? iterations_override : params.iterations;
     }
 };
+
+// Works out a slot's per-tick constants (direction, class, gain) from its params: after
+// every command that sets them, never in the tick.
+void prepare_slot(Slot& s) noexcept;
 
 // Checks every field of an EngineConfig; an invalid config makes an engine that refuses
 // every create with this error.
@@ -92,6 +100,7 @@ struct Engine::Impl {
         s.pool_bytes = 0;
         s.state = EffectState::free;
         ++s.generation;
+        while (slot_end > 0 && slots[slot_end - 1].state == EffectState::free) --slot_end;
     }
 
     // Stops a slot by command; a play that was under way ends as `stopped`.
@@ -158,6 +167,7 @@ struct Engine::Impl {
     Error config_error;
     int32_t slot_count;
     std::unique_ptr<detail::Slot[]> slots;
+    int32_t slot_end = 0;  // every slot from here on is free: the tick looks no further
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;
     detail::MotionEstimator motion;

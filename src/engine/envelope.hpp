@@ -24,11 +24,12 @@ namespace feel::detail {
 
 // The envelope level in [0, 10000] for a steady-state level `steady` (≥ 0) at wave time
 // tau_us of a play lasting duration_us (kInfiniteUs for endless).
-[[nodiscard]] double envelope_level(const Envelope& env, double steady, int64_t tau_us,
-                                    int64_t duration_us) noexcept;
+// Single precision (issue 14): levels are within ±10000, times stay integer µs.
+[[nodiscard]] float envelope_level(const Envelope& env, float steady, int64_t tau_us,
+                                   int64_t duration_us) noexcept;
 
 // Applies the envelope to a signed value: sign(value) · envelope_level(|value|).
-[[nodiscard]] double shape_by_envelope(const Envelope& env, double value, int64_t tau_us,
-                                       int64_t duration_us) noexcept;
+[[nodiscard]] float shape_by_envelope(const Envelope& env, float value, int64_t tau_us,
+                                      int64_t duration_us) noexcept;
 
 }  // namespace feel::detail

@@ -16,10 +16,11 @@
 
 namespace feel::detail {
 
-[[nodiscard]] double waveform_value(Waveform w, double p) noexcept;
+// Single precision (issue 14); the sine is turn_trig.hpp's, the same bits on every platform.
+[[nodiscard]] float waveform_value(Waveform w, float p) noexcept;
 
-// The cycle fraction at wave time tau_us, computed in integers first so that long times
-// keep full precision.
-[[nodiscard]] double cycle_fraction(int64_t tau_us, int64_t period_us, int32_t phase) noexcept;
+// The cycle fraction at wave time tau_us, in [0, 1): the time into the cycle is taken in
+// integers first, so that long times keep full precision.
+[[nodiscard]] float cycle_fraction(int64_t tau_us, int64_t period_us, int32_t phase) noexcept;
 
 }  // namespace feel::detail

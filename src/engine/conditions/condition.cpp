@@ -5,20 +5,28 @@ namespace feel::detail {
 
 namespace {
 
+// A family that still renders in double precision, seen as a single-precision one: its
+// forces are summed in double and converted once.
+template <DoubleConditionLaw kLaw>
+void in_double(const ConditionContext& c, float force[kMaxAxes]) noexcept {
+    double wide[kMaxAxes] = {};
+    kLaw(c, wide);
+    for (int a = 0; a < kMaxAxes; ++a) force[a] += static_cast<float>(wide[a]);
+}
+
 // The 1-D law of each condition family that can take a direction.
-using Law = void (*)(const ConditionContext&, double*);
-Law directed_law(EffectType type) noexcept {
+ConditionLaw directed_law(EffectType type) noexcept {
     switch (type) {
         case EffectType::spring: return spring_condition;
         case EffectType::damper: return damper_condition;
         case EffectType::inertia: return inertia_condition;
-        default: return friction_condition;  // is_directed_condition: the four above
+        default: return in_double<friction_condition>;  // is_directed_condition: the four above
     }
 }
 
 }  // namespace
 
-void render_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void render_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     if (is_directed_condition(*c.params)) {
         directed_condition(c, directed_law(c.params->type), force);
         return;
@@ -28,12 +36,12 @@ void render_condition(const ConditionContext& c, double force[kMaxAxes]) noexcep
         case EffectType::angle_spring: spring_condition(c, force); return;
         case EffectType::damper: damper_condition(c, force); return;
         case EffectType::inertia: inertia_condition(c, force); return;
-        case EffectType::friction: friction_condition(c, force); return;
-        case EffectType::texture: texture_condition(c, force); return;
+        case EffectType::friction: in_double<friction_condition>(c, force); return;
+        case EffectType::texture: in_double<texture_condition>(c, force); return;
         case EffectType::axis_wall:
-        case EffectType::angle_wall: wall_condition(c, force); return;
+        case EffectType::angle_wall: in_double<wall_condition>(c, force); return;
         case EffectType::axis_barrier:
-        case EffectType::angle_barrier: barrier_condition(c, force); return;
+        case EffectType::angle_barrier: in_double<barrier_condition>(c, force); return;
         default: return;  // not a condition: the engine never routes other classes here
     }
 }

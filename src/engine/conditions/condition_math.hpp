@@ -30,33 +30,37 @@
 
 namespace feel::detail {
 
-// The response of one Condition Struct block to input d measured from the offset.
-[[nodiscard]] inline double condition_response(const ConditionBlock& b, double d) noexcept {
-    const double band = b.deadband;
-    double force = 0.0;
-    double cap = 0.0;
+// The response of one Condition Struct block to input d measured from the offset, in
+// single precision (issue 14): d and the force are within a few times ±10000.
+[[nodiscard]] inline float condition_response(const ConditionBlock& b, float d) noexcept {
+    constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
+    const float band = static_cast<float>(b.deadband);
+    float force = 0.0f;
+    float cap = 0.0f;
     if (d > band) {
-        force = -b.pos_coefficient * (d - band) / kFullScale;
-        cap = b.pos_saturation;
+        force = -static_cast<float>(b.pos_coefficient) * kPerFullScale * (d - band);
+        cap = static_cast<float>(b.pos_saturation);
     } else if (d < -band) {
-        force = -b.neg_coefficient * (d + band) / kFullScale;
-        cap = b.neg_saturation;
+        force = -static_cast<float>(b.neg_coefficient) * kPerFullScale * (d + band);
+        cap = static_cast<float>(b.neg_saturation);
     } else {
-        return 0.0;
+        return 0.0f;
     }
-    if (force > cap) return cap;
-    if (force < -cap) return -cap;
-    return force;
+    return force > cap ? cap : (force < -cap ? -cap : force);
 }
 
 // A velocity in position units/s on the ±10000 scale where velocity_ref reads 10000.
+// (Double, for friction and texture; the single-precision conditions use the float one.)
 [[nodiscard]] inline double scaled_velocity(const EngineConfig& config, double velocity) noexcept {
     return velocity * kFullScale / config.velocity_ref;
 }
+[[nodiscard]] inline float scaled_velocity(const EngineConfig& config, float velocity) noexcept {
+    return velocity * static_cast<float>(kFullScale) / config.velocity_ref;
+}
 
 // An acceleration in position units/s² on the ±10000 scale where acceleration_ref reads 10000.
-[[nodiscard]] inline double scaled_acceleration(const EngineConfig& config, double acceleration) noexcept {
-    return acceleration * kFullScale / config.acceleration_ref;
+[[nodiscard]] inline float scaled_acceleration(const EngineConfig& config, float acceleration) noexcept {
+    return acceleration * static_cast<float>(kFullScale) / config.acceleration_ref;
 }
 
 // The device axis that the effect's i-th axis (and i-th conditions block) drives.
@@ -71,11 +75,19 @@ namespace feel::detail {
 inline void condition_line(const ConditionContext& c, double u[kMaxAxes]) noexcept {
     for (int a = 0; a < kMaxAxes; ++a) u[a] = -static_cast<double>(c.direction[a]);
 }
+inline void condition_line(const ConditionContext& c, float u[kMaxAxes]) noexcept {
+    for (int a = 0; a < kMaxAxes; ++a) u[a] = -c.direction[a];
+}
 
 // v · u over the device axes.
 [[nodiscard]] inline double along(const double u[kMaxAxes], const float* v) noexcept {
     double s = 0.0;
     for (int a = 0; a < kMaxAxes; ++a) s += u[a] * static_cast<double>(v[a]);
+    return s;
+}
+[[nodiscard]] inline float along(const float u[kMaxAxes], const float* v) noexcept {
+    float s = 0.0f;
+    for (int a = 0; a < kMaxAxes; ++a) s += u[a] * v[a];
     return s;
 }
 

@@ -27,9 +27,8 @@
 
 namespace feel::detail {
 
-void directed_condition(const ConditionContext& c, void (*law)(const ConditionContext&, double*),
-                        double force[kMaxAxes]) noexcept {
-    double u[kMaxAxes];
+void directed_condition(const ConditionContext& c, ConditionLaw law, float force[kMaxAxes]) noexcept {
+    float u[kMaxAxes];
     condition_line(c, u);
 
     const int line = axis_index(c.params->axes[0]);  // the first axis carries the line
@@ -37,10 +36,10 @@ void directed_condition(const ConditionContext& c, void (*law)(const ConditionCo
     float velocity[kMaxAxes] = {};
     float acceleration[kMaxAxes] = {};
     float start_position[kMaxAxes] = {};
-    position[line] = static_cast<float>(along(u, c.position));
-    velocity[line] = static_cast<float>(along(u, c.velocity));
-    acceleration[line] = static_cast<float>(along(u, c.acceleration));
-    start_position[line] = static_cast<float>(along(u, c.start_position));
+    position[line] = along(u, c.position);
+    velocity[line] = along(u, c.velocity);
+    acceleration[line] = along(u, c.acceleration);
+    start_position[line] = along(u, c.start_position);
 
     ConditionContext on_line = c;
     on_line.position = position;
@@ -48,7 +47,7 @@ void directed_condition(const ConditionContext& c, void (*law)(const ConditionCo
     on_line.acceleration = acceleration;
     on_line.start_position = start_position;
 
-    double per_axis[kMaxAxes] = {};
+    float per_axis[kMaxAxes] = {};
     law(on_line, per_axis);
     for (int a = 0; a < kMaxAxes; ++a) force[a] += per_axis[line] * u[a];
 }

@@ -15,12 +15,12 @@
 
 namespace feel::detail {
 
-void inertia_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void inertia_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
-        force[a] += condition_response(b, scaled_acceleration(*c.config, c.acceleration[a]) - b.offset);
+        force[a] += condition_response(b, scaled_acceleration(*c.config, c.acceleration[a]) - static_cast<float>(b.offset));
     }
 }
 

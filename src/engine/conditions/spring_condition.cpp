@@ -16,20 +16,21 @@ namespace feel::detail {
 
 namespace {
 
-double spring_center(const ConditionBlock& b, double start) noexcept {
-    return b.offset_mode == OffsetMode::relative ? start + b.offset : static_cast<double>(b.offset);
+float spring_center(const ConditionBlock& b, float start) noexcept {
+    const float offset = static_cast<float>(b.offset);
+    return b.offset_mode == OffsetMode::relative ? start + offset : offset;
 }
 
 }  // namespace
 
-void spring_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     if (p.type == EffectType::angle_spring) {
-        double u[kMaxAxes];
+        float u[kMaxAxes];
         condition_line(c, u);
         const ConditionBlock& b = p.conditions[0];
-        const double s = along(u, c.position);
-        const double f = condition_response(b, s - spring_center(b, along(u, c.start_position)));
+        const float s = along(u, c.position);
+        const float f = condition_response(b, s - spring_center(b, along(u, c.start_position)));
         for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
         return;
     }

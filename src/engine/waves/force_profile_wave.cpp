@@ -11,16 +11,16 @@
 namespace feel::detail {
 
 void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
-                        int64_t tau_us, double force[kMaxAxes]) noexcept {
+                        int64_t tau_us, float force[kMaxAxes]) noexcept {
     const CustomBlock& c = p.custom;
     const int64_t frames = c.sample_count / c.channels;
     const int64_t frame = (tau_us / c.sample_period_us) % frames;
     const int16_t* row = samples + frame * c.channels;
-    auto shaped = [&](double v) {
+    auto shaped = [&](float v) {
         return p.has_envelope ? shape_by_envelope(p.envelope, v, tau_us, p.duration_us) : v;
     };
     if (c.channels == 1) {
-        const double v = shaped(row[0]);
+        const float v = shaped(row[0]);
         for (int a = 0; a < kMaxAxes; ++a) force[a] += direction[a] * v;
         return;
     }

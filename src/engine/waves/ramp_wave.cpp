@@ -4,9 +4,9 @@
 
 namespace feel::detail {
 
-double ramp_wave(const EffectParams& p, int64_t tau_us) noexcept {
-    const double progress = static_cast<double>(tau_us) / static_cast<double>(p.duration_us);
-    const double value = p.ramp.start + (p.ramp.end - p.ramp.start) * progress;
+float ramp_wave(const EffectParams& p, int64_t tau_us) noexcept {
+    const float progress = static_cast<float>(tau_us) / static_cast<float>(p.duration_us);
+    const float value = static_cast<float>(p.ramp.start) + static_cast<float>(p.ramp.end - p.ramp.start) * progress;
     return p.has_envelope ? shape_by_envelope(p.envelope, value, tau_us, p.duration_us) : value;
 }
 

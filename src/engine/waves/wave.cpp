@@ -6,13 +6,13 @@
 namespace feel::detail {
 namespace {
 
-void add_along(const float* direction, double value, double force[kMaxAxes]) noexcept {
+void add_along(const float* direction, float value, float force[kMaxAxes]) noexcept {
     for (int a = 0; a < kMaxAxes; ++a) force[a] += direction[a] * value;
 }
 
 }  // namespace
 
-void render_wave(const WaveInput& in, double force[kMaxAxes]) noexcept {
+void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *in.params;
     switch (p.type) {
         case EffectType::vector_force:
@@ -35,7 +35,7 @@ void render_wave(const WaveInput& in, double force[kMaxAxes]) noexcept {
         case EffectType::sweep_saw_up:
         case EffectType::sweep_saw_down: {
             float swept[kMaxAxes];
-            polar_factors(sweep_angle(p, in.tau_us), swept);
+            polar_factors_turns(sweep_turns(p, in.tau_us), swept);
             add_along(swept, periodic_wave(p, in.tau_us), force);
             return;
         }

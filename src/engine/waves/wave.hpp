@@ -19,17 +19,19 @@ struct WaveInput {
 };
 
 // Adds the wave's force (±10000 units, before effect and device gain) into force[].
-void render_wave(const WaveInput& in, double force[kMaxAxes]) noexcept;
+void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 
 // One scalar per wave family; the envelope is applied inside when the effect has one.
-[[nodiscard]] double constant_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] double smart_pop_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] double periodic_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] double ramp_wave(const EffectParams& p, int64_t tau_us) noexcept;
-// The compass angle of a sweep at τ, hundredths of a degree (may be fractional).
-[[nodiscard]] double sweep_angle(const EffectParams& p, int64_t tau_us) noexcept;
+// Single precision (issue 14): forces are within ±10000, time is integer µs.
+[[nodiscard]] float constant_wave(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float smart_pop_wave(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float periodic_wave(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float ramp_wave(const EffectParams& p, int64_t tau_us) noexcept;
+// The compass direction of a sweep at τ, in turns clockwise from north (may be any value;
+// direction.hpp's polar_factors_turns takes it).
+[[nodiscard]] float sweep_turns(const EffectParams& p, int64_t tau_us) noexcept;
 // Adds a force profile's channels into force[].
 void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
-                        int64_t tau_us, double force[kMaxAxes]) noexcept;
+                        int64_t tau_us, float force[kMaxAxes]) noexcept;
 
 }  // namespace feel::detail
