@@ -247,6 +247,7 @@ void MotionEstimator::configure(float sensor_step) noexcept {
     fixed_scale_ = 1.0f;
     while (fixed_scale_ < kMaxFixedScale && 1.0f / fixed_scale_ > band_ / kFixedPerCount) fixed_scale_ *= 2.0f;
     max_fixed_position_ = 1073741824.0f / fixed_scale_;
+    fixed_unit_ = 1.0f / fixed_scale_;
     reset();
 }
 
@@ -263,6 +264,7 @@ void MotionEstimator::reset() noexcept {
     sums_axes_ = 0;
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
+        newest_fixed_[a] = frozen_fixed_[a] = false;
         sums_[a] = RungSums{};
         sums_still_[a] = false;
         velocity_[a] = acceleration_[a] = 0.0f;
@@ -328,8 +330,10 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
             still_run_[a] = 1;
         }
         x_[a][head_] = x;
+        if (pushed) frozen_fixed_[a] = newest_fixed_[a];
         int64_t fixed = 0;
-        fixed_[a][head_] = to_fixed(x, fixed) ? static_cast<int32_t>(fixed) : 0;
+        newest_fixed_[a] = to_fixed(x, fixed);
+        fixed_[a][head_] = newest_fixed_[a] ? static_cast<int32_t>(fixed) : 0;
     }
 
     const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
@@ -343,6 +347,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     sums_axes_ = axes;
 
     refresh_time_pattern();
+    newest_interval_u_ = count_ >= 2 ? static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs : 0.0f;
+    frozen_interval_u_ = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
     for (int a = 0; a < axes; ++a) estimate_axis(a, with_acceleration);
     for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
@@ -366,8 +372,7 @@ bool MotionEstimator::to_fixed(float x, int64_t& fixed) const noexcept {
 // at most 96³·2^30 in magnitude.
 void MotionEstimator::slide_sums(int axis) noexcept {
     const int32_t* fixed = fixed_[axis];
-    int64_t unused = 0;
-    const bool representable = to_fixed(x_[axis][(head_ + 1) & kMask], unused);
+    const bool representable = frozen_fixed_[axis];
     fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
     // At rest (the newest frozen sample and the longest ladder window all one value) the
     // sums are implied; leaving rest, they are first written out for the state before
@@ -446,8 +451,7 @@ int MotionEstimator::start_rung(int previous) const noexcept {
 
 bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
     const int max_n = pattern_.max_n;
-    int64_t newest = 0;
-    return max_n >= 1 && axis < sums_axes_ && fixed_run_[axis] >= max_n && to_fixed(x_[axis][head_], newest) &&
+    return max_n >= 1 && axis < sums_axes_ && fixed_run_[axis] >= max_n && newest_fixed_[axis] &&
            (max_n <= 1 || (frozen_run_ >= max_n - 1 && frozen_interval_us_ > 0));
 }
 
@@ -483,12 +487,12 @@ bool MotionEstimator::window_sums(int axis, int r, float out[3]) const noexcept 
     const int64_t count = n;
     const int64_t sum_m = count * (count - 1) / 2;
     const int64_t sum_m2 = (count - 1) * count * (2 * count - 1) / 6;
-    const float unit = 1.0f / fixed_scale_;
+    const float unit = fixed_unit_;
     const float sy = static_cast<float>(s0 - count * x0) * unit;
     const float smy = static_cast<float>(s1 - sum_m * x0) * unit;
     const float smmy = static_cast<float>(s2 - sum_m2 * x0) * unit;
-    const float alpha = static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs;
-    const float beta = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
+    const float alpha = newest_interval_u_;
+    const float beta = frozen_interval_u_;
     out[0] = sy;
     out[1] = -(alpha * sy + beta * smy);
     out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;

@@ -138,6 +138,7 @@ private:
 
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
     float fixed_scale_ = 64.0f;        // fixed-point units per position unit, a power of two
+    float fixed_unit_ = 1.0f / 64.0f;  // 1 / fixed_scale_, exact
     float max_fixed_position_ = 16777216.0f;  // position units: 2^30 fixed-point units
     int count_ = 0;      // valid samples in the ring, 0..kHistory
     int head_ = 0;       // index of the newest sample; older ones follow it (mod kHistory)
@@ -159,6 +160,14 @@ private:
     int frozen_run_ = 0;
     // How many of the newest frozen samples of each axis have a fixed-point value.
     int fixed_run_[kMaxAxes] = {};
+    // Whether the newest sample (index 0) and the newest frozen one (index 1) have one: to_fixed's
+    // verdicts kept, not recomputed.
+    bool newest_fixed_[kMaxAxes] = {};
+    bool frozen_fixed_[kMaxAxes] = {};
+    // What window_sums needs that is the same for every axis and rung of a tick, set by update:
+    // the newest interval and the frozen one in units of kMaxWindowUs.
+    float newest_interval_u_ = 0.0f;
+    float frozen_interval_u_ = 0.0f;
     // Axes whose running sums are kept up to date (the first sums_axes_).
     int sums_axes_ = 0;
     RungSums sums_[kMaxAxes];
