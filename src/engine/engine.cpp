@@ -68,9 +68,11 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
 void detail::prepare_slot(Slot& s) noexcept {
     direction_factors(s.params, s.direction);
     s.cls = effect_class(s.params.type);
+    if (is_periodic(s.params.type) || is_sweep(s.params.type)) s.waveform = waveform_of(s.params.type);
     s.reads_acceleration = s.params.type == EffectType::inertia ||
                            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
+    for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
 }
 
 namespace {
@@ -234,6 +236,17 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
     }
     const int32_t slot_end = m.paused ? 0 : m.slot_end;
+    // What every condition sees alike this tick; the loop fills in each one's own part.
+    detail::ConditionContext condition;
+    condition.config = &m.config;
+    condition.position = in.position;
+    condition.velocity = velocity;
+    condition.acceleration = acceleration;
+    condition.dt_s = dt_s;
+    condition.reported_position = out.reported_position;
+    condition.axes = axes;
+    condition.velocity_scale = static_cast<float>(kFullScale) / m.config.velocity_ref;
+    condition.acceleration_scale = static_cast<float>(kFullScale) / m.config.acceleration_ref;
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
@@ -279,15 +292,17 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                 continue;  // its last force is not applied: the event is over
             }
         } else if (cls == EffectClass::condition) {
-            const detail::ConditionContext condition{&s.params,     &m.config,     in.position,
-                                                     velocity,      acceleration,  s.start_position,
-                                                     s.direction,   dt_s,          clock.tau_us,
-                                                     &s.condition,  out.reported_position};
+            condition.params = &s.params;
+            condition.start_position = s.start_position;
+            condition.direction = s.direction;
+            condition.tau_us = clock.tau_us;
+            condition.state = &s.condition;
+            condition.curves = s.curves;
             detail::render_condition(condition, force);
         } else {
             const detail::WaveInput wave{&s.params, s.direction,
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
-                                         clock.tau_us};
+                                         clock.tau_us, s.waveform, axes};
             detail::render_wave(wave, force);
         }
         for (int a = 0; a < axes; ++a) sum[a] += force[a] * s.gain_factor;

@@ -80,7 +80,7 @@ void Engine::activity(EngineActivity& out) const noexcept {
         float force[kMaxAxes] = {};
         const detail::WaveInput wave{&s.params, s.direction,
                                      s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
-                                     clock.tau_us};
+                                     clock.tau_us, s.waveform, axes};
         detail::render_wave(wave, force);
         const float effect_gain = s.gain_factor;
 

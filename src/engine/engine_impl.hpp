@@ -23,6 +23,8 @@ struct Slot {
     EffectClass cls = EffectClass::wave;
     bool reads_acceleration = false;  // inertia, or Dynamic Inertia without play
     float gain_factor = 0.0f;         // params.gain / kFullScale
+    Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
+    detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;

@@ -24,12 +24,32 @@ namespace feel::detail {
 
 // The envelope level in [0, 10000] for a steady-state level `steady` (≥ 0) at wave time
 // tau_us of a play lasting duration_us (kInfiniteUs for endless).
-// Single precision (issue 14): levels are within ±10000, times stay integer µs.
-[[nodiscard]] float envelope_level(const Envelope& env, float steady, int64_t tau_us,
-                                   int64_t duration_us) noexcept;
+// Single precision (issue 14): levels are within ±10000, times stay integer µs. Inline, as
+// the rest of this header: every wave with an envelope calls it every tick.
+[[nodiscard]] inline float envelope_level(const Envelope& env, float steady, int64_t tau_us,
+                                          int64_t duration_us) noexcept {
+    float level = steady;
+    if (env.settle_time_us > 0 && tau_us < env.settle_time_us) {
+        const float progress = static_cast<float>(tau_us) / static_cast<float>(env.settle_time_us);
+        const float impulse = static_cast<float>(env.impulse_level);
+        level = impulse + (steady - impulse) * progress;
+    }
+    if (duration_us != kInfiniteUs && env.fade_time_us > 0) {
+        const int64_t fade_start = duration_us - env.fade_time_us;
+        if (tau_us > fade_start) {
+            const float progress =
+                static_cast<float>(tau_us - fade_start) / static_cast<float>(env.fade_time_us);
+            level = level + (static_cast<float>(env.fade_level) - level) * progress;
+        }
+    }
+    return level;
+}
 
 // Applies the envelope to a signed value: sign(value) · envelope_level(|value|).
-[[nodiscard]] float shape_by_envelope(const Envelope& env, float value, int64_t tau_us,
-                                      int64_t duration_us) noexcept;
+[[nodiscard]] inline float shape_by_envelope(const Envelope& env, float value, int64_t tau_us,
+                                             int64_t duration_us) noexcept {
+    if (value < 0) return -envelope_level(env, -value, tau_us, duration_us);
+    return envelope_level(env, value, tau_us, duration_us);
+}
 
 }  // namespace feel::detail

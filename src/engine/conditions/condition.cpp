@@ -3,6 +3,18 @@
 
 namespace feel::detail {
 
+ConditionCurve curve_of(const ConditionBlock& b) noexcept {
+    constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
+    ConditionCurve curve;
+    curve.pos_slope = -static_cast<float>(b.pos_coefficient) * kPerFullScale;
+    curve.neg_slope = -static_cast<float>(b.neg_coefficient) * kPerFullScale;
+    curve.pos_cap = static_cast<float>(b.pos_saturation);
+    curve.neg_cap = static_cast<float>(b.neg_saturation);
+    curve.band = static_cast<float>(b.deadband);
+    curve.offset = static_cast<float>(b.offset);
+    return curve;
+}
+
 namespace {
 
 // A family that still renders in double precision, seen as a single-precision one: its
@@ -11,7 +23,7 @@ template <DoubleConditionLaw kLaw>
 void in_double(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     double wide[kMaxAxes] = {};
     kLaw(c, wide);
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += static_cast<float>(wide[a]);
+    for (int a = 0; a < c.axes; ++a) force[a] += static_cast<float>(wide[a]);
 }
 
 // The 1-D law of each condition family that can take a direction.

@@ -22,6 +22,18 @@ struct ConditionState {
     ContactState contact{};
 };
 
+// A Condition Struct block (§6.6.a) as the tick reads it: its integer fields as floats, the
+// coefficients already divided by 10000 and negated (condition_math.hpp). Worked out once
+// per command (curve_of), not per tick.
+struct ConditionCurve {
+    float pos_slope = 0.0f;  // -pos_coefficient / 10000
+    float neg_slope = 0.0f;  // -neg_coefficient / 10000
+    float pos_cap = 0.0f;    // pos_saturation
+    float neg_cap = 0.0f;    // neg_saturation
+    float band = 0.0f;       // deadband
+    float offset = 0.0f;
+};
+
 struct ConditionContext {
     const EffectParams* params = nullptr;
     const EngineConfig* config = nullptr;
@@ -34,7 +46,14 @@ struct ConditionContext {
     int64_t tau_us = 0;                     // time since the effect began playing
     ConditionState* state = nullptr;        // this effect's state, persists across ticks
     float* reported_position = nullptr;     // [kMaxAxes] clipping walls overwrite their axis
+    const ConditionCurve* curves = nullptr; // [kMaxAxes] params.conditions as curves
+    float velocity_scale = 0.0f;            // kFullScale / velocity_ref: velocity to the ±10000 scale
+    float acceleration_scale = 0.0f;        // kFullScale / acceleration_ref
+    int axes = kMaxAxes;                    // the device's axes: forces beyond them are 0
 };
+
+// The curve of a block: the single-precision constants condition_response needs.
+[[nodiscard]] ConditionCurve curve_of(const ConditionBlock& b) noexcept;
 
 void render_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 

@@ -30,19 +30,19 @@
 
 namespace feel::detail {
 
-// The response of one Condition Struct block to input d measured from the offset, in
-// single precision (issue 14): d and the force are within a few times ±10000.
-[[nodiscard]] inline float condition_response(const ConditionBlock& b, float d) noexcept {
-    constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
-    const float band = static_cast<float>(b.deadband);
+// The response of one Condition Struct block (as its curve, condition.hpp) to input d
+// measured from the offset, in single precision (issue 14): d and the force are within a
+// few times ±10000.
+[[nodiscard]] inline float condition_response(const ConditionCurve& b, float d) noexcept {
+    const float band = b.band;
     float force = 0.0f;
     float cap = 0.0f;
     if (d > band) {
-        force = -static_cast<float>(b.pos_coefficient) * kPerFullScale * (d - band);
-        cap = static_cast<float>(b.pos_saturation);
+        force = b.pos_slope * (d - band);
+        cap = b.pos_cap;
     } else if (d < -band) {
-        force = -static_cast<float>(b.neg_coefficient) * kPerFullScale * (d + band);
-        cap = static_cast<float>(b.neg_saturation);
+        force = b.neg_slope * (d + band);
+        cap = b.neg_cap;
     } else {
         return 0.0f;
     }
@@ -54,14 +54,8 @@ namespace feel::detail {
 [[nodiscard]] inline double scaled_velocity(const EngineConfig& config, double velocity) noexcept {
     return velocity * kFullScale / config.velocity_ref;
 }
-[[nodiscard]] inline float scaled_velocity(const EngineConfig& config, float velocity) noexcept {
-    return velocity * static_cast<float>(kFullScale) / config.velocity_ref;
-}
-
-// An acceleration in position units/s² on the ±10000 scale where acceleration_ref reads 10000.
-[[nodiscard]] inline float scaled_acceleration(const EngineConfig& config, float acceleration) noexcept {
-    return acceleration * static_cast<float>(kFullScale) / config.acceleration_ref;
-}
+// (The single-precision conditions multiply by ConditionContext::velocity_scale and
+// acceleration_scale, worked out once per tick.)
 
 // The device axis that the effect's i-th axis (and i-th conditions block) drives.
 [[nodiscard]] inline int device_axis(const ConditionContext& c, int i) noexcept {

@@ -16,8 +16,8 @@ void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept
     const EffectParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
-        const ConditionBlock& b = p.conditions[i];
-        force[a] += condition_response(b, scaled_velocity(*c.config, c.velocity[a]) - static_cast<float>(b.offset));
+        const ConditionCurve& b = c.curves[i];
+        force[a] += condition_response(b, c.velocity[a] * c.velocity_scale - b.offset);
     }
 }
 

@@ -19,8 +19,8 @@ void inertia_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const EffectParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
-        const ConditionBlock& b = p.conditions[i];
-        force[a] += condition_response(b, scaled_acceleration(*c.config, c.acceleration[a]) - static_cast<float>(b.offset));
+        const ConditionCurve& b = c.curves[i];
+        force[a] += condition_response(b, c.acceleration[a] * c.acceleration_scale - b.offset);
     }
 }
 

@@ -16,9 +16,8 @@ namespace feel::detail {
 
 namespace {
 
-float spring_center(const ConditionBlock& b, float start) noexcept {
-    const float offset = static_cast<float>(b.offset);
-    return b.offset_mode == OffsetMode::relative ? start + offset : offset;
+float spring_center(OffsetMode mode, const ConditionCurve& b, float start) noexcept {
+    return mode == OffsetMode::relative ? start + b.offset : b.offset;
 }
 
 }  // namespace
@@ -28,16 +27,18 @@ void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept
     if (p.type == EffectType::angle_spring) {
         float u[kMaxAxes];
         condition_line(c, u);
-        const ConditionBlock& b = p.conditions[0];
+        const ConditionCurve& b = c.curves[0];
         const float s = along(u, c.position);
-        const float f = condition_response(b, s - spring_center(b, along(u, c.start_position)));
+        const float center = spring_center(p.conditions[0].offset_mode, b, along(u, c.start_position));
+        const float f = condition_response(b, s - center);
         for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
         return;
     }
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
-        const ConditionBlock& b = p.conditions[i];
-        force[a] += condition_response(b, c.position[a] - spring_center(b, c.start_position[a]));
+        const ConditionCurve& b = c.curves[i];
+        const float center = spring_center(p.conditions[i].offset_mode, b, c.start_position[a]);
+        force[a] += condition_response(b, c.position[a] - center);
     }
 }
 

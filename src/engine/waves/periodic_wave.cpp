@@ -7,9 +7,9 @@ namespace feel::detail {
 
 // offset + envelope(|magnitude|) · sign(magnitude) · source(p). The envelope shapes the
 // oscillation, not the baseline offset.
-float periodic_wave(const EffectParams& p, int64_t tau_us) noexcept {
+float periodic_wave(const EffectParams& p, Waveform waveform, int64_t tau_us) noexcept {
     const PeriodicBlock& b = p.periodic;
-    const float source = waveform_value(waveform_of(p.type), cycle_fraction(tau_us, b.period_us, b.phase));
+    const float source = waveform_value(waveform, cycle_fraction(tau_us, b.period_us, b.phase));
     const float magnitude = static_cast<float>(b.magnitude);
     const float amplitude =
         p.has_envelope ? shape_by_envelope(p.envelope, magnitude, tau_us, p.duration_us) : magnitude;

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "feel/effect.hpp"
+#include "feel/effect_type.hpp"
 
 namespace feel::detail {
 
@@ -16,6 +17,8 @@ struct WaveInput {
     const float* direction = nullptr;     // factors per device axis (direction.hpp)
     const int16_t* samples = nullptr;     // force_profile only
     int64_t tau_us = 0;                   // time into this play
+    Waveform waveform = Waveform::sine;   // periodic and sweep types: waveform_of(type), kept per slot
+    int axes = kMaxAxes;                  // the device's axes: forces beyond them are 0 (kMaxAxes is 6)
 };
 
 // Adds the wave's force (±10000 units, before effect and device gain) into force[].
@@ -25,7 +28,7 @@ void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 // Single precision (issue 14): forces are within ±10000, time is integer µs.
 [[nodiscard]] float constant_wave(const EffectParams& p, int64_t tau_us) noexcept;
 [[nodiscard]] float smart_pop_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] float periodic_wave(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float periodic_wave(const EffectParams& p, Waveform waveform, int64_t tau_us) noexcept;
 [[nodiscard]] float ramp_wave(const EffectParams& p, int64_t tau_us) noexcept;
 // The compass direction of a sweep at τ, in turns clockwise from north (may be any value;
 // direction.hpp's polar_factors_turns takes it).
