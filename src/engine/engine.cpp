@@ -73,6 +73,7 @@ void detail::prepare_slot(Slot& s) noexcept {
                            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
+    s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
 }
 
 namespace {
@@ -298,14 +299,19 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.tau_us = clock.tau_us;
             condition.state = &s.condition;
             condition.curves = s.curves;
-            detail::render_condition(condition, force);
+            s.render_condition(condition, force);
         } else {
             const detail::WaveInput wave{&s.params, s.direction,
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             detail::render_wave(wave, force);
         }
-        for (int a = 0; a < axes; ++a) sum[a] += force[a] * s.gain_factor;
+        if (axes == 2) {  // the common device, unrolled
+            sum[0] += force[0] * s.gain_factor;
+            sum[1] += force[1] * s.gain_factor;
+        } else {
+            for (int a = 0; a < axes; ++a) sum[a] += force[a] * s.gain_factor;
+        }
     }
 
     // Paused or actuators off: the motors get nothing (sum is zero while paused anyway).

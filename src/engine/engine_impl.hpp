@@ -25,6 +25,7 @@ struct Slot {
     float gain_factor = 0.0f;         // params.gain / kFullScale
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
     detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
+    detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;

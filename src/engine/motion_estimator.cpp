@@ -319,7 +319,12 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         }
     }
     t_us_[head_] = t_us;
-    for (int a = 0; a < kMaxAxes; ++a) {
+    const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
+    // Axes never written hold 0 throughout the ring, which is what they would read: they are
+    // skipped (kMaxAxes is 6; a device has 2 or 3) until an update names them.
+    const int written = axes > written_axes_ ? axes : written_axes_;
+    written_axes_ = written;
+    for (int a = 0; a < written; ++a) {
         const float x = a < axis_count ? position[a] : 0.0f;
         // A new sample extends the run if it repeats the newest; a replacing one keeps it
         // only if it repeats the value it replaces.
@@ -336,7 +341,6 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         fixed_[a][head_] = newest_fixed_[a] ? static_cast<int32_t>(fixed) : 0;
     }
 
-    const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
     for (int a = 0; a < axes; ++a) {
         if (a >= sums_axes_) {
             rebuild_sums(a);

@@ -146,6 +146,9 @@ private:
     int64_t steady_interval_us_ = 0;
     int steady_run_ = 0;
     int64_t t_us_[kHistory] = {};
+    // Axes update() has written samples of (the ring of the others holds only 0); never
+    // lowered, not even by reset(), which leaves the ring's contents.
+    int written_axes_ = 0;
     float x_[kMaxAxes][kHistory] = {};
     // The same positions in 1/fixed_scale_ units (0 where to_fixed refuses one).
     int32_t fixed_[kMaxAxes][kHistory] = {};

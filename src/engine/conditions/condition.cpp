@@ -26,35 +26,36 @@ void in_double(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     for (int a = 0; a < c.axes; ++a) force[a] += static_cast<float>(wide[a]);
 }
 
-// The 1-D law of each condition family that can take a direction.
-ConditionLaw directed_law(EffectType type) noexcept {
-    switch (type) {
-        case EffectType::spring: return spring_condition;
-        case EffectType::damper: return damper_condition;
-        case EffectType::inertia: return inertia_condition;
-        default: return in_double<friction_condition>;  // is_directed_condition: the four above
-    }
+template <ConditionLaw kLaw>
+void directed(const ConditionContext& c, float force[kMaxAxes]) noexcept {
+    directed_condition(c, kLaw, force);
 }
+
+void no_condition(const ConditionContext&, float*) noexcept {}
 
 }  // namespace
 
-void render_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    if (is_directed_condition(*c.params)) {
-        directed_condition(c, directed_law(c.params->type), force);
-        return;
+ConditionLaw condition_renderer(const EffectParams& params) noexcept {
+    if (is_directed_condition(params)) {
+        switch (params.type) {
+            case EffectType::spring: return directed<spring_condition>;
+            case EffectType::damper: return directed<damper_condition>;
+            case EffectType::inertia: return directed<inertia_condition>;
+            default: return directed<in_double<friction_condition>>;  // is_directed_condition: the four
+        }
     }
-    switch (c.params->type) {
+    switch (params.type) {
         case EffectType::spring:
-        case EffectType::angle_spring: spring_condition(c, force); return;
-        case EffectType::damper: damper_condition(c, force); return;
-        case EffectType::inertia: inertia_condition(c, force); return;
-        case EffectType::friction: in_double<friction_condition>(c, force); return;
-        case EffectType::texture: in_double<texture_condition>(c, force); return;
+        case EffectType::angle_spring: return spring_condition;
+        case EffectType::damper: return damper_condition;
+        case EffectType::inertia: return inertia_condition;
+        case EffectType::friction: return in_double<friction_condition>;
+        case EffectType::texture: return in_double<texture_condition>;
         case EffectType::axis_wall:
-        case EffectType::angle_wall: in_double<wall_condition>(c, force); return;
+        case EffectType::angle_wall: return in_double<wall_condition>;
         case EffectType::axis_barrier:
-        case EffectType::angle_barrier: in_double<barrier_condition>(c, force); return;
-        default: return;  // not a condition: the engine never routes other classes here
+        case EffectType::angle_barrier: return in_double<barrier_condition>;
+        default: return no_condition;  // not a condition: the engine never routes other classes here
     }
 }
 

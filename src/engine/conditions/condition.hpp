@@ -55,11 +55,9 @@ struct ConditionContext {
 // The curve of a block: the single-precision constants condition_response needs.
 [[nodiscard]] ConditionCurve curve_of(const ConditionBlock& b) noexcept;
 
-void render_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
-
 // The families, one file each. Spring, damper and inertia are single precision (issue 14).
 // Friction, texture, walls and barriers still add double forces (docs/stability.md, "Where
-// double remains"): render_condition converts their sum once.
+// double remains"): the function condition_renderer picks for them converts their sum once.
 void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;   // spring, angle_spring
 void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void inertia_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
@@ -71,6 +69,11 @@ void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
 // A 1-D condition law in single precision, and friction's in double.
 using ConditionLaw = void (*)(const ConditionContext&, float*);
 using DoubleConditionLaw = void (*)(const ConditionContext&, double*);
+
+// The function that renders a condition of these params, chosen once per command so that
+// the tick calls it directly: it adds the condition's force (±10000 units, before effect and
+// device gain) into force[].
+[[nodiscard]] ConditionLaw condition_renderer(const EffectParams& params) noexcept;
 
 // A spring, damper, inertia or friction with a direction (is_directed_condition): `law`, the
 // family's function, rendered on the line of the direction and applied along it.
