@@ -78,6 +78,8 @@ struct Engine::Impl {
           report_capacity(config_error ? 1 : c.report_capacity),
           reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
+        // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
+        interim_period_us = config_error ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
         pool_total_bytes = config_error ? 0 : static_cast<int32_t>(detail::pool_capacity_bytes(c));
     }
 
@@ -154,7 +156,7 @@ struct Engine::Impl {
         if (interim_due) {
             // The next report is due one period after this one was due, so the rate holds on
             // average even when the period is not a whole number of ticks.
-            const int64_t period_us = static_cast<int64_t>(1e6 / config.interim_report_hz);
+            const int64_t period_us = interim_period_us;
             s.next_interim_us = (s.next_interim_us == 0 ? t_us : s.next_interim_us) + period_us;
             if (s.next_interim_us <= t_us) s.next_interim_us = t_us + period_us;
         }
@@ -174,6 +176,7 @@ struct Engine::Impl {
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;
     detail::MotionEstimator motion;
+    int64_t interim_period_us = 1000;  // between interim reports (EngineConfig::interim_report_hz)
     int32_t report_capacity;
     std::unique_ptr<DynamicReport[]> reports;
     int32_t report_head = 0;
