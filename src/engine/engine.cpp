@@ -74,6 +74,8 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
+    s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
+    for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
 }
 
 namespace {
@@ -274,6 +276,15 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             s.began_playing = true;
         }
 
+        if (s.scalar_wave) {
+            // Most waves: one value along a fixed direction, gain included (prepare_slot).
+            const detail::WaveInput wave{&s.params, s.direction,
+                                         s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
+                                         clock.tau_us, s.waveform, axes};
+            const float value = detail::scalar_wave_value(wave);
+            for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            continue;
+        }
         float force[kMaxAxes] = {};
         const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {

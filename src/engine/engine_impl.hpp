@@ -24,6 +24,8 @@ struct Slot {
     bool reads_acceleration = false;  // inertia, or Dynamic Inertia without play
     float gain_factor = 0.0f;         // params.gain / kFullScale
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
+    bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
+    float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
     detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
     EffectState state = EffectState::free;

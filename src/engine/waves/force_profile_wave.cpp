@@ -10,22 +10,36 @@
 
 namespace feel::detail {
 
+namespace {
+
+// The frame playing at τ.
+const int16_t* frame_at(const CustomBlock& c, const int16_t* samples, int64_t tau_us) noexcept {
+    const int64_t frames = c.sample_count / c.channels;
+    const int64_t frame = (tau_us / c.sample_period_us) % frames;
+    return samples + frame * c.channels;
+}
+
+float shaped(const EffectParams& p, float v, int64_t tau_us) noexcept {
+    return p.has_envelope ? shape_by_envelope(p.envelope, v, tau_us, p.duration_us) : v;
+}
+
+}  // namespace
+
+float force_profile_value(const EffectParams& p, const int16_t* samples, int64_t tau_us) noexcept {
+    return shaped(p, frame_at(p.custom, samples, tau_us)[0], tau_us);
+}
+
 void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
                         int64_t tau_us, float force[kMaxAxes]) noexcept {
     const CustomBlock& c = p.custom;
-    const int64_t frames = c.sample_count / c.channels;
-    const int64_t frame = (tau_us / c.sample_period_us) % frames;
-    const int16_t* row = samples + frame * c.channels;
-    auto shaped = [&](float v) {
-        return p.has_envelope ? shape_by_envelope(p.envelope, v, tau_us, p.duration_us) : v;
-    };
     if (c.channels == 1) {
-        const float v = shaped(row[0]);
+        const float v = force_profile_value(p, samples, tau_us);
         for (int a = 0; a < kMaxAxes; ++a) force[a] += direction[a] * v;
         return;
     }
+    const int16_t* row = frame_at(c, samples, tau_us);
     for (int ch = 0; ch < c.channels; ++ch) {
-        force[axis_index(p.axes[ch])] += shaped(row[ch]);
+        force[axis_index(p.axes[ch])] += shaped(p, row[ch], tau_us);
     }
 }
 

@@ -13,42 +13,38 @@ void add_along(const float* direction, int axes, float value, float force[kMaxAx
 
 }  // namespace
 
-void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
+bool is_scalar_wave(const EffectParams& p) noexcept {
+    if (is_sweep(p.type)) return false;
+    if (p.type == EffectType::force_profile) return p.custom.channels == 1;
+    return effect_class(p.type) == EffectClass::wave;
+}
+
+float scalar_wave_value(const WaveInput& in) noexcept {
     const EffectParams& p = *in.params;
     switch (p.type) {
         case EffectType::vector_force:
-        case EffectType::constant:
-            add_along(in.direction, in.axes, constant_wave(p, in.tau_us), force);
-            return;
-        case EffectType::smart_pop:
-            add_along(in.direction, in.axes, smart_pop_wave(p, in.tau_us), force);
-            return;
-        case EffectType::sine:
-        case EffectType::square:
-        case EffectType::triangle:
-        case EffectType::saw_up:
-        case EffectType::saw_down:
-            add_along(in.direction, in.axes, periodic_wave(p, in.waveform, in.tau_us), force);
-            return;
-        case EffectType::sweep_sine:
-        case EffectType::sweep_square:
-        case EffectType::sweep_triangle:
-        case EffectType::sweep_saw_up:
-        case EffectType::sweep_saw_down: {
-            float swept[kMaxAxes];
-            polar_factors_turns(sweep_turns(p, in.tau_us), swept);
-            add_along(swept, in.axes, periodic_wave(p, in.waveform, in.tau_us), force);
-            return;
-        }
-        case EffectType::ramp:
-            add_along(in.direction, in.axes, ramp_wave(p, in.tau_us), force);
-            return;
-        case EffectType::force_profile:
-            force_profile_wave(p, in.samples, in.direction, in.tau_us, force);
-            return;
-        default:
-            return;  // not a wave: the engine never routes other classes here
+        case EffectType::constant: return constant_wave(p, in.tau_us);
+        case EffectType::smart_pop: return smart_pop_wave(p, in.tau_us);
+        case EffectType::ramp: return ramp_wave(p, in.tau_us);
+        case EffectType::force_profile: return force_profile_value(p, in.samples, in.tau_us);
+        default: return periodic_wave(p, in.waveform, in.tau_us);  // sine..saw_down
     }
+}
+
+void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
+    const EffectParams& p = *in.params;
+    if (is_sweep(p.type)) {
+        float swept[kMaxAxes];
+        polar_factors_turns(sweep_turns(p, in.tau_us), swept);
+        add_along(swept, in.axes, periodic_wave(p, in.waveform, in.tau_us), force);
+        return;
+    }
+    if (p.type == EffectType::force_profile && p.custom.channels > 1) {
+        force_profile_wave(p, in.samples, in.direction, in.tau_us, force);
+        return;
+    }
+    if (effect_class(p.type) != EffectClass::wave) return;  // the engine never routes other classes here
+    add_along(in.direction, in.axes, scalar_wave_value(in), force);
 }
 
 }  // namespace feel::detail

@@ -24,6 +24,13 @@ struct WaveInput {
 // Adds the wave's force (±10000 units, before effect and device gain) into force[].
 void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 
+// Most waves push along their fixed direction: force = value · direction. These two let the
+// tick add value · (direction · gain), worked out once per command, instead. True for every
+// wave type but the sweeps (their direction turns) and force profiles of several channels.
+[[nodiscard]] bool is_scalar_wave(const EffectParams& p) noexcept;
+// The value of such a wave (±10000 units, before gains).
+[[nodiscard]] float scalar_wave_value(const WaveInput& in) noexcept;
+
 // One scalar per wave family; the envelope is applied inside when the effect has one.
 // Single precision (issue 14): forces are within ±10000, time is integer µs.
 [[nodiscard]] float constant_wave(const EffectParams& p, int64_t tau_us) noexcept;
@@ -33,6 +40,8 @@ void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 // The compass direction of a sweep at τ, in turns clockwise from north (may be any value;
 // direction.hpp's polar_factors_turns takes it).
 [[nodiscard]] float sweep_turns(const EffectParams& p, int64_t tau_us) noexcept;
+// A one-channel force profile's value at τ.
+[[nodiscard]] float force_profile_value(const EffectParams& p, const int16_t* samples, int64_t tau_us) noexcept;
 // Adds a force profile's channels into force[].
 void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
                         int64_t tau_us, float force[kMaxAxes]) noexcept;
