@@ -49,13 +49,12 @@ namespace feel::detail {
     return force > cap ? cap : (force < -cap ? -cap : force);
 }
 
-// A velocity in position units/s on the ±10000 scale where velocity_ref reads 10000.
-// (Double, for friction and texture; the single-precision conditions use the float one.)
+// A velocity in position units/s on the ±10000 scale where velocity_ref reads 10000, in
+// double for friction and texture. (The single-precision conditions multiply by
+// ConditionContext::velocity_scale and acceleration_scale, worked out once per tick.)
 [[nodiscard]] inline double scaled_velocity(const EngineConfig& config, double velocity) noexcept {
     return velocity * kFullScale / config.velocity_ref;
 }
-// (The single-precision conditions multiply by ConditionContext::velocity_scale and
-// acceleration_scale, worked out once per tick.)
 
 // The device axis that the effect's i-th axis (and i-th conditions block) drives.
 [[nodiscard]] inline int device_axis(const ConditionContext& c, int i) noexcept {
