@@ -49,6 +49,8 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
         return Error::invalid("sensor_step", "must be a finite number > 0");
     if (!(c.device_damping >= 0) || !std::isfinite(c.device_damping))
         return Error::invalid("device_damping", "must be a finite number >= 0");
+    if (!(c.device_mass >= 0) || !std::isfinite(c.device_mass))
+        return Error::invalid("device_mass", "must be a finite number >= 0");
     if (!(c.wall_stiffness > 0) || !std::isfinite(c.wall_stiffness))
         return Error::invalid("wall_stiffness", "must be a finite number > 0");
     const float dynamic_refs[] = {c.dynamic_mass_ref, c.dynamic_stiffness_ref, c.dynamic_damping_ref, c.gravity_ref};
@@ -266,7 +268,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             const detail::ConditionContext condition{&s.params,     &m.config,     in.position,
                                                      velocity,      acceleration,  s.start_position,
                                                      s.direction,   dt_s,          clock.tau_us,
-                                                     &s.condition,  out.reported_position};
+                                                     &s.condition,  out.reported_position, m.applied_force,
+                                                     static_cast<float>(m.device_gain) / kFullScale};
             detail::render_condition(condition, force);
         } else {
             const detail::WaveInput wave{&s.params, s.direction,
@@ -290,6 +293,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             out.saturated = true;
         }
         out.force[a] = static_cast<float>(f);
+        m.applied_force[a] = out.force[a];
     }
     out.playing_effects = playing;
 }

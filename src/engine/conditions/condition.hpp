@@ -34,6 +34,8 @@ struct ConditionContext {
     int64_t tau_us = 0;                     // time since the effect began playing
     ConditionState* state = nullptr;        // this effect's state, persists across ticks
     float* reported_position = nullptr;     // [kMaxAxes] clipping walls overwrite their axis
+    const float* applied_force = nullptr;   // [kMaxAxes] the engine's force of the previous tick (friction's stop guard)
+    float device_gain = 1.0f;               // the device gain as a fraction (0..1)
 };
 
 void render_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;

@@ -41,12 +41,15 @@ void directed_condition(const ConditionContext& c, void (*law)(const ConditionCo
     velocity[line] = static_cast<float>(along(u, c.velocity));
     acceleration[line] = static_cast<float>(along(u, c.acceleration));
     start_position[line] = static_cast<float>(along(u, c.start_position));
+    float applied[kMaxAxes] = {};
+    if (c.applied_force != nullptr) applied[line] = static_cast<float>(along(u, c.applied_force));
 
     ConditionContext on_line = c;
     on_line.position = position;
     on_line.velocity = velocity;
     on_line.acceleration = acceleration;
     on_line.start_position = start_position;
+    on_line.applied_force = applied;
 
     double per_axis[kMaxAxes] = {};
     law(on_line, per_axis);
