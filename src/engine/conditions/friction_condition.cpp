@@ -52,7 +52,12 @@ void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexc
     const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * velocity_ref);
     const float dt_s = static_cast<float>(c.dt_s);
     constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
-    const StopGuardTick guard = stop_guard_tick(config, c.dt_s);
+    FrictionState& state = c.state->friction;
+    if (state.guard_tick_dt_s != c.dt_s) {
+        state.guard_tick = stop_guard_tick(config, c.dt_s);
+        state.guard_tick_dt_s = c.dt_s;
+    }
+    const StopGuardTick& guard = state.guard_tick;
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);

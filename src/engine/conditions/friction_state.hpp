@@ -15,6 +15,9 @@ struct FrictionState {
     Bristle bristle[kMaxAxes] = {};
     // friction: the stop guard of each block (stop_guard.hpp).
     StopGuard guard[kMaxAxes] = {};
+    // The guards' shared gains, recomputed only when the tick period changes (an exp each).
+    StopGuardTick guard_tick{};
+    double guard_tick_dt_s = -1.0;
 };
 
 }  // namespace feel::detail
