@@ -33,6 +33,7 @@ void BM_TickFrictionEffects(benchmark::State& state) {
     const int effects = static_cast<int>(state.range(0));
     EngineConfig config;
     config.device_damping = 0.5f * 0.05f / 4.45f;  // the joystick's: the passivity-bound stiffness applies
+    config.device_mass = 0.15f * 0.05f / 4.45f;    // the joystick's: the stop guard runs
     Engine engine(config);
     for (int i = 0; i < effects; ++i) {
         const CreateResult r = engine.create(friction_on_xy(1000 + 250 * i));

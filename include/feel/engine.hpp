@@ -53,6 +53,10 @@ struct EngineConfig {
     // The mechanism's own viscous damping b, as force units per (position unit/s): the
     // physical damping times half_travel / max_force. The passivity bound of walls uses it.
     float device_damping = 0.0f;      // >= 0
+    // The mechanism's moving mass m, force units per (position unit/s²): the physical mass
+    // times half_travel / max_force. Friction uses it to tell a free handle coming to rest
+    // from a held one (docs/conditions.md, "Friction"). 0: unknown.
+    float device_mass = 0.0f;         // >= 0
     // Time-domain passivity observer and controller on walls and barriers (§3.7): lets
     // walls stiffer than the naive bound 2(b - B)/T stay stable. On by default.
     bool passivity_control = true;

@@ -49,6 +49,8 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
         return Error::invalid("sensor_step", "must be a finite number > 0");
     if (!(c.device_damping >= 0) || !std::isfinite(c.device_damping))
         return Error::invalid("device_damping", "must be a finite number >= 0");
+    if (!(c.device_mass >= 0) || !std::isfinite(c.device_mass))
+        return Error::invalid("device_mass", "must be a finite number >= 0");
     if (!(c.wall_stiffness > 0) || !std::isfinite(c.wall_stiffness))
         return Error::invalid("wall_stiffness", "must be a finite number > 0");
     const float dynamic_refs[] = {c.dynamic_mass_ref, c.dynamic_stiffness_ref, c.dynamic_damping_ref, c.gravity_ref};
@@ -250,6 +252,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.axes = axes;
     condition.velocity_scale = static_cast<float>(kFullScale) / m.config.velocity_ref;
     condition.acceleration_scale = static_cast<float>(kFullScale) / m.config.acceleration_ref;
+    condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
+    condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
@@ -338,6 +342,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             out.saturated = true;
         }
         out.force[a] = f;
+        m.applied_force[a] = f;
     }
     out.playing_effects = playing;
 }

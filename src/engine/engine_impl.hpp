@@ -185,6 +185,7 @@ struct Engine::Impl {
     int32_t report_count = 0;
     uint64_t reports_dropped = 0;
     bool have_previous = false;
+    float applied_force[kMaxAxes] = {};  // the force commanded at the previous tick
     int64_t previous_t_us = 0;
 
     // Device control and the parameter memory (engine_commands.cpp).

@@ -46,6 +46,7 @@ EngineConfig engine_config_for(const DeviceProfile& profile) noexcept {
     // F_norm = F·10000/max_force and v_phys = v_norm·half_travel/10000, so a damping b in
     // physical units is b·half_travel/max_force in normalized ones.
     c.device_damping = static_cast<float>(axis.viscous * axis.half_travel / axis.max_force);
+    c.device_mass = static_cast<float>(axis.mass * axis.half_travel / axis.max_force);
     const double naive_bound = 2.0 * c.device_damping / kDesignTickPeriod_s;
     c.wall_stiffness = static_cast<float>(std::max(kWallStiffnessOverBound * naive_bound, kMinWallStiffness));
     // Dynamics: mass 10000 is what full force accelerates at acceleration_ref (the scale

@@ -157,6 +157,12 @@ TEST(EngineConfigFor, FollowsTheProfilesPhysicalFacts) {
         const double force_norm = a.viscous * v_phys * 10000.0 / a.max_force;
         const double v_norm = v_phys * 10000.0 / a.half_travel;
         EXPECT_NEAR(c.device_damping, force_norm / v_norm, 1e-6 * force_norm / v_norm) << p.name;  // float
+        // A mass m accelerated at a needs m·a newtons: m·a·10000/max_force normalized, at a
+        // normalized acceleration of a·10000/half_travel.
+        const double a_phys = 2.0;
+        const double inertial_norm = a.mass * a_phys * 10000.0 / a.max_force;
+        const double a_norm = a_phys * 10000.0 / a.half_travel;
+        EXPECT_NEAR(c.device_mass, inertial_norm / a_norm, 1e-6 * inertial_norm / a_norm) << p.name;
         EXPECT_GT(c.acceleration_ref, 0.0f);
     }
 }

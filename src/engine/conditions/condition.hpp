@@ -50,6 +50,8 @@ struct ConditionContext {
     float velocity_scale = 0.0f;            // kFullScale / velocity_ref: velocity to the ±10000 scale
     float acceleration_scale = 0.0f;        // kFullScale / acceleration_ref
     int axes = kMaxAxes;                    // the device's axes: forces beyond them are 0
+    const float* applied_force = nullptr;   // [kMaxAxes] the engine's force of the previous tick (friction's stop guard)
+    float device_gain = 1.0f;               // the device gain as a fraction (0..1)
 };
 
 // The curve of a block: the single-precision constants condition_response needs.

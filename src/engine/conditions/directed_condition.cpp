@@ -40,12 +40,15 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
     velocity[line] = along(u, c.velocity);
     acceleration[line] = along(u, c.acceleration);
     start_position[line] = along(u, c.start_position);
+    float applied[kMaxAxes] = {};
+    if (c.applied_force != nullptr) applied[line] = along(u, c.applied_force);
 
     ConditionContext on_line = c;
     on_line.position = position;
     on_line.velocity = velocity;
     on_line.acceleration = acceleration;
     on_line.start_position = start_position;
+    on_line.applied_force = applied;
 
     float per_axis[kMaxAxes] = {};
     law(on_line, per_axis);

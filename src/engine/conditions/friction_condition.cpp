@@ -8,7 +8,10 @@
 //         capped by the saturation of that side
 //
 // While sliding, z = ±1 and the force is ∓f, exactly the primer's Figure 3-9. Turning
-// around, the force passes through zero along the presliding spring. A negative
+// around, the force passes through zero along the presliding spring. A free handle coming
+// to rest gets, at the last tick, only the force that stops it, and the bristle is then
+// anchored where it stopped (stop_guard.hpp): the bristle's stored force never throws it
+// back. A negative
 // coefficient pushes the handle along its motion instead: an energy source, allowed
 // because the primer's range allows it.
 //
@@ -49,6 +52,13 @@ void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexc
     const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * velocity_ref);
     const float dt_s = static_cast<float>(c.dt_s);
     constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
+    FrictionState& state = c.state->friction;
+    if (state.guard_tick_dt_s != c.dt_s) {
+        state.guard_tick = stop_guard_tick(config, c.dt_s);
+        state.guard_tick_dt_s = c.dt_s;
+    }
+    const StopGuardTick& guard = state.guard_tick;
+    const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
@@ -75,7 +85,17 @@ void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexc
             f *= static_cast<float>(deadband_gate(scaled_velocity(config, relative_velocity), b.deadband));
         }
         const float limit = static_cast<float>(toward_positive ? b.pos_saturation : b.neg_saturation);
-        force[a] += static_cast<double>(f > limit ? limit : (f < -limit ? -limit : f));
+        f = f > limit ? limit : (f < -limit ? -limit : f);
+        if (guard.on && c.applied_force != nullptr && b.offset == 0 && b.deadband == 0) {
+            // A free handle coming to rest gets only what stops it (stop_guard.hpp).
+            StopGuard& g = c.state->friction.guard[i];
+            const float guarded = guard_stop(g, c.state->friction.bristle[i], guard, c.position[a],
+                                             c.applied_force[a], f, magnitude, pos, neg);
+            const float side = static_cast<float>(guarded >= 0 ? b.neg_saturation : b.pos_saturation);
+            f = guarded > side ? side : (guarded < -side ? -side : guarded);
+            remember_output(g, f, output_gain);
+        }
+        force[a] += static_cast<double>(f);
     }
 }
 

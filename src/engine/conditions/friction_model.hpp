@@ -50,6 +50,10 @@
 // drag to the sliding force. τ = 2 ms damps the presliding ringing of all three device
 // profiles at 1 kHz and 10 kHz; 10 ms starts to chatter (docs/conditions.md has the
 // measurements).
+//
+// A bristle is a spring, so a free handle that friction brings to rest would be thrown back
+// by the force stored in it; friction_condition.cpp adds the stop guard (stop_guard.hpp)
+// that prevents it.
 #pragma once
 
 #include <cstdint>

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "conditions/friction_model.hpp"
+#include "conditions/stop_guard.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
@@ -12,6 +13,11 @@ struct FrictionState {
     // friction: one bristle per block, index i = the effect's i-th axis.
     // texture: bristle 0 runs along the texture's line.
     Bristle bristle[kMaxAxes] = {};
+    // friction: the stop guard of each block (stop_guard.hpp).
+    StopGuard guard[kMaxAxes] = {};
+    // The guards' shared gains, recomputed only when the tick period changes (an exp each).
+    StopGuardTick guard_tick{};
+    double guard_tick_dt_s = -1.0;
 };
 
 }  // namespace feel::detail

@@ -1,0 +1,106 @@
+// The stop guard of friction; stop_guard.hpp has the reasoning.
+#include "conditions/stop_guard.hpp"
+
+#include <cmath>
+
+namespace feel::detail {
+
+namespace {
+
+// Sets the bristle to the deflection whose force balances `others` (within ±1) and returns
+// that force.
+float hold_against(Bristle& bristle, float others, float pos_coefficient, float neg_coefficient) noexcept {
+    const float hold = -others;
+    const float coefficient = hold <= 0 ? pos_coefficient : neg_coefficient;
+    float z = coefficient != 0 ? -hold / coefficient : 0.0f;
+    z = z > 1.0f ? 1.0f : (z < -1.0f ? -1.0f : z);
+    bristle.deflection = z;
+    return -(z >= 0 ? pos_coefficient : neg_coefficient) * z;
+}
+
+}  // namespace
+
+StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept {
+    StopGuardTick t;
+    if (!(config.device_mass > 0) || !(dt_s > 0)) return t;
+    t.on = true;
+    t.mass = config.device_mass;
+    t.damping = config.device_damping;
+    t.dt = static_cast<float>(dt_s);
+    t.inverse_dt = 1.0f / t.dt;
+    const float theta = std::exp(-t.dt / kStopGuardTime);
+    const float one = 1.0f - theta;
+    t.gain_position = 1.0f - theta * theta * theta;
+    t.gain_velocity = 1.5f * one * one * (1.0f + theta);
+    t.gain_external = t.mass * one * one * one * t.inverse_dt * t.inverse_dt;
+    t.count = config.sensor_step;
+    t.min_speed = t.gain_velocity * t.count * t.inverse_dt;
+    t.hold_off = static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1;
+    t.settle = static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1;
+    return t;
+}
+
+float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float force,
+                 float f, float pos_coefficient, float neg_coefficient) noexcept {
+    if (!t.on || !std::isfinite(position) || !std::isfinite(applied)) return force;
+    if (!g.primed) {
+        g = StopGuard{};
+        g.position = position;
+        g.primed = true;
+        return force;
+    }
+    const float others = applied - g.own;  // the other effects' force, as at the last tick
+    // Predict with the force the motors applied, then correct with the sensed position.
+    const float acceleration = (applied + g.external - t.damping * g.velocity) / t.mass;
+    const float predicted = g.position + g.velocity * t.dt + 0.5f * acceleration * t.dt * t.dt;
+    const float e = position - predicted;
+    g.position = predicted + t.gain_position * e;
+    g.velocity += acceleration * t.dt + t.gain_velocity * e * t.inverse_dt;
+    g.external += t.gain_external * e;
+    if (!std::isfinite(g.position) || !std::isfinite(g.velocity) || !std::isfinite(g.external)) {
+        g = StopGuard{};  // start observing afresh rather than act on a non-finite state
+        return force;
+    }
+    if (g.hold_off > 0) --g.hold_off;
+    if (std::fabs(e) < t.count) {
+        if (g.agreed < t.settle) ++g.agreed;
+    } else {
+        g.agreed = 0;
+    }
+    if (g.stopping) {
+        g.stopping = false;
+        g.sliding = false;
+        if (std::fabs(position - g.stop_at) < t.count) {
+            // At rest: the bristle, anchored here, holds against the other effects (nothing
+            // for a free handle).
+            return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+        }
+        g.hold_off = t.hold_off;  // it went on: a push the observer has not learned yet
+    }
+    const float v = g.velocity;
+    if (std::fabs(v) >= t.min_speed) {
+        g.sliding = true;
+        g.direction = v > 0 ? 1.0f : -1.0f;
+    }
+    if (!g.sliding || g.hold_off > 0 || g.agreed < t.settle || std::fabs(g.external) > kStopGuardFreeFraction * f ||
+        pos_coefficient < 0 || neg_coefficient < 0) {
+        return force;
+    }
+    if (force * g.direction > 0 && (force + others) * g.direction > kStopGuardFreeFraction * f) {
+        // The bristle pushes the free handle along its motion: it gives back what a push
+        // stored in it. Friction only resists: the anchor follows the handle, and the bristle
+        // holds no more than what the other effects push with.
+        return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+    }
+    if (!(force * g.direction < 0)) return force;
+    const float v_next = v + (force + others + g.external - t.damping * v) * t.dt / t.mass;
+    if (v_next * g.direction > 0) return force;  // still sliding at the tick's end
+    // It comes to rest within the tick (or already has): apply what stops it there.
+    float stop = -t.mass * v * t.inverse_dt - others - g.external + t.damping * v;
+    stop = stop > f ? f : (stop < -f ? -f : stop);
+    g.stopping = true;
+    g.stop_at = position + 0.5f * v * t.dt;
+    return stop;
+}
+
+}  // namespace feel::detail

@@ -1,0 +1,110 @@
+// The stop guard of friction (§3.5: friction "always resists the direction of motion"): it
+// lets a free handle that friction slows down come to rest and stay there, instead of being
+// thrown back by the force that stopped it.
+//
+// The problem. A Dahl bristle (friction_model.hpp) is a spring. A free handle coasting
+// against friction stops with the bristle fully deflected, the force still f, and nothing
+// else on it: that stored force throws it back the way it came (the joystick, f = 8000,
+// 1 kHz: 971 units back after 1720 forward), and it rings. Real Coulomb friction lets go
+// the instant the handle stops. The engine sees the handle only once a tick and through a
+// sensor of a few µm per count, so it has to know, one tick ahead, that the force it is
+// about to apply would reverse the handle, and apply instead only what brings it to rest.
+//
+// Why an observer with the device's mass. Two things were ruled out by measurement
+// (docs/conditions.md, "Friction", "Limits"). The velocity estimate (FOAW) lags a stop by
+// ~1.5 ms, and on the joystick at 1 kHz the force must be gone within 2 ticks of a free
+// stop. And no rule on the positions alone tells a free stop from a firm hand reversing:
+// a firm hand stops the wheel 2.5 to 9 times faster than friction stops it free, while a
+// firm reversal must change the force by at most 5-10% of 2f a tick. What tells them apart
+// is the force on the handle: free, the only forces are the engine's own (which it knows)
+// and the mechanism's small dry friction; held, the hand pushes. With the mechanism's mass
+// m (EngineConfig::device_mass) the engine can watch for that force:
+//
+//   predict  x' = x + v·T + (F + d − b·v)·T²/(2m),   v' = v + (F + d − b·v)·T/m
+//   correct  e = sensed − x',  x = x' + g·e,  v = v' + h·e/T,  d = d + m·k·e/T²
+//
+// F the force the motors applied last tick (the engine's total), b the mechanism's damping,
+// d the force on the handle the engine did not command (hand, dry friction). g, h, k are the
+// gains of a critically damped α-β-γ tracker with its three poles at θ = e^(−T/τ), τ = 3 ms:
+// g = 1 − θ³, h = 1.5(1 − θ)²(1 + θ), k = (1 − θ)³. With the known force as its input the
+// observer has no lag for a free handle (its prediction is exact but for the mechanism's
+// dry friction, which d learns), so its velocity is good to a fraction of a count a tick
+// at the very tick the handle comes to rest.
+//
+// The rule. While the handle slides (|v| above the observer's noise, h·count/T), the
+// observer has predicted the sensed position within a count for the last τ (its model
+// holds: no sudden push, no hand yanking the handle), and the force on it besides the
+// engine's is small (|d| <= f/4: nobody holds it), if the friction
+// force about to be applied would bring the velocity to zero or past it within the tick,
+// the guard applies instead exactly what brings it to rest at the tick's end:
+//
+//   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude)
+//
+// F_others the other effects' force of the last tick. The next tick, if the handle did come
+// to rest (within a count of where the guard expected), the bristle is set to hold what
+// the other effects push with (nothing for a free handle): its anchor is where the handle
+// stopped, and it holds it there with the bristle's own stiction. If it went on, something
+// the observer had not learned yet pushes it: the guard stands aside for 3τ.
+//
+// What it does not touch: a handle held by a hand (d is the hand's push, larger than f/4),
+// a handle at rest or turning slowly (it never slid faster than the observer's noise), and
+// a friction pushing along the motion (negative coefficients) or with an offset or a
+// deadband (those move the surface or free a band of speed: they are not a stop). There
+// the bristle renders friction exactly as before. Real-time: a few float operations per
+// block, no allocation; deterministic. With device_mass 0 (unknown) it is off.
+#pragma once
+
+#include <cstdint>
+
+#include "conditions/friction_model.hpp"
+#include "feel/engine.hpp"
+
+namespace feel::detail {
+
+// The observer's time constant, s.
+inline constexpr float kStopGuardTime = 0.003f;
+// The guard acts only while the force on the handle besides the engine's is at most this
+// fraction of the friction's magnitude.
+inline constexpr float kStopGuardFreeFraction = 0.25f;
+
+// Per block: the observer of the handle along the friction's line, and the guard's memory.
+struct StopGuard {
+    float position = 0.0f;  // observed position, position units
+    float velocity = 0.0f;  // observed velocity, units/s
+    float external = 0.0f;  // d: the force on the handle the engine did not command, force units
+    float own = 0.0f;       // this friction's share of the engine's last force, force units
+    float stop_at = 0.0f;   // where the handle was to come to rest
+    float direction = 0.0f; // +1 or -1: the way it slides
+    int32_t hold_off = 0;   // ticks the guard stands aside (it was wrong)
+    int32_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction
+    bool primed = false;
+    bool sliding = false;   // it moved faster than the observer's noise since it last stopped
+    bool stopping = false;  // the last force was the one that brings it to rest
+};
+
+// What every guard of a tick shares: the observer's gains for this tick period.
+struct StopGuardTick {
+    float mass = 0.0f, damping = 0.0f, dt = 0.0f, inverse_dt = 0.0f;
+    float gain_position = 0.0f, gain_velocity = 0.0f, gain_external = 0.0f;
+    float min_speed = 0.0f;  // the observer's velocity noise: h·count/T
+    float count = 0.0f;
+    int32_t hold_off = 0;
+    int32_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
+    bool on = false;         // device_mass known and a tick to observe over
+};
+
+[[nodiscard]] StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept;
+
+// One block's friction along its line: `position` sensed, `applied` the engine's force of the
+// last tick along the line, `force` the friction about to be applied (after its saturation),
+// `f` its magnitude. Returns `force`, or the force that brings the handle to rest. May set the
+// bristle's deflection (after a stop). Call remember_output with what was finally applied.
+[[nodiscard]] float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position,
+                               float applied, float force, float f, float pos_coefficient,
+                               float neg_coefficient) noexcept;
+
+// The friction's share of the engine's force this tick: its force times the effect's and
+// the device's gain.
+inline void remember_output(StopGuard& g, float force, float gain) noexcept { g.own = force * gain; }
+
+}  // namespace feel::detail
