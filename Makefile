@@ -20,7 +20,7 @@ deps:
 	@bash scripts/install-deps.sh
 
 # The test files reuse one precompiled header (tests/CMakeLists.txt). CI, which never
-# debugs its tree, keeps line tables only (-g1) instead of full debug information: a third
+# debugs its tree, keeps line tables only (-g1) instead of full debug information: a quarter
 # less compile time for the libraries (docs/testing.md, "Time").
 DEBUG_INFO := $(if $(filter ON,$(WERROR)),-g1,-g)
 build: deps
