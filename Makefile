@@ -11,15 +11,21 @@ FEEL       := $(BUILD)/apps/feel/feel
 FUZZ_SECONDS ?= 15
 space := $(subst ,, )
 
-.PHONY: all deps build demo plots test unit-tests test-install test-studio test-linux fuzz bench clean test-asan test-tsan test-sanitizers firmware
+.PHONY: all deps build demo plots test unit-tests test-install test-studio test-linux fuzz bench clean \
+        test-asan test-tsan test-sanitizers firmware
 
 all: build
 
 deps:
 	@bash scripts/install-deps.sh
 
+# The test files reuse one precompiled header (tests/CMakeLists.txt). CI, which never
+# debugs its tree, keeps line tables only (-g1) instead of full debug information: a quarter
+# less compile time for the libraries (docs/testing.md, "Time").
+DEBUG_INFO := $(if $(filter ON,$(WERROR)),-g1,-g)
 build: deps
-	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DFEEL_WERROR=$(WERROR)
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DFEEL_WERROR=$(WERROR) -DFEEL_TEST_PCH=ON \
+	    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 $(DEBUG_INFO) -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 $(DEBUG_INFO) -DNDEBUG"
 	cmake --build $(BUILD)
 
 demo: build
@@ -36,10 +42,14 @@ demo: build
 	$(FEEL) play examples/primer.feel.json --sensation railing_impact --seconds 1
 	$(FEEL) stream --rate 60 --seconds 1
 
-# The fuzz run goes first. The sanitizer trees are not in test yet: cold, the ASan tree
-# alone builds in about 20 minutes on CI's 2 cores, which with the rest would pass CI's
-# 40-minute budget (docs/testing.md, "Time"); make test-sanitizers runs them.
-test: build firmware fuzz test-install test-linux test-studio unit-tests
+# make test's stages, in this order, each a make target of its own; scripts/stages.sh times
+# them, so that CI's log ends with the wall time of each (docs/testing.md, "Time"). The
+# fuzz run goes early. The sanitizer runs (test-asan, test-tsan) are not stages yet: built
+# cold they would take CI past its 40-minute budget (docs/testing.md, "Time", measured and
+# projected); make test-sanitizers runs them.
+TEST_STAGES := build firmware fuzz test-install test-linux test-studio unit-tests
+test:
+	@MAKE="$(MAKE)" bash scripts/stages.sh $(TEST_STAGES)
 
 test-sanitizers: test-asan test-tsan
 
@@ -56,33 +66,36 @@ test-install: build
 test-studio: build
 	cd studio && FEEL=$(abspath $(FEEL)) node --test --test-concurrency=1 e2e/
 
-# Every parser and decoder under libFuzzer (clang), each for a bounded time: the
-# sensation-file reader, the protocol's report decoder and the device's protocol session.
-# New inputs go to the build tree; the committed seeds in fuzz/corpus/<target> are only read.
-FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session usb_requests ff_translation ffe_import ahap_import
-fuzz: deps
-	CC=clang CXX=clang++ cmake -S . -B $(BUILD)-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	    -DFEEL_WERROR=$(WERROR) -DFEEL_BUILD_FUZZ=ON -DFEEL_BUILD_TESTS=OFF -DFEEL_BUILD_BENCH=OFF
-	cmake --build $(BUILD)-fuzz --target $(addprefix fuzz_,$(FUZZ_TARGETS))
-	@set -e; for t in $(FUZZ_TARGETS); do \
-	    mkdir -p $(BUILD)-fuzz/corpus/$$t; \
-	    dict=; [ -f fuzz/$$t.dict ] && dict=-dict=fuzz/$$t.dict; \
-	    echo "fuzz_$$t: $(FUZZ_SECONDS) s"; \
-	    $(BUILD)-fuzz/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $$dict \
-	        $(BUILD)-fuzz/corpus/$$t fuzz/corpus/$$t; \
-	done
-
-# Sanitizer trees: the tests only (no benchmarks, no fuzzers), built by clang at -O1 with
-# line tables for the reports: of the choices measured (docs/testing.md, "Time") the one
-# that compiles fastest under the sanitizers; the test files at -O0 with one precompiled
-# header of GoogleTest and the standard headers (tests/CMakeLists.txt). Warnings are the
-# plain build's job, so no -Werror here. Every finding stops its test (halt_on_error);
-# leak reports go through scripts/lsan.supp (third-party leaks only, each entry says why).
-# --fresh: the options above always win over a tree configured before (another compiler or
+# Sanitizer trees: built by clang at -O1 with line tables for the reports: of the choices
+# measured (docs/testing.md, "Time") the one that compiles fastest under the sanitizers; the
+# test files at -O0 with one precompiled header of GoogleTest and the standard headers
+# (tests/CMakeLists.txt). No benchmarks. Warnings are the plain build's job, so no -Werror
+# here. Every finding stops its test (halt_on_error); leak reports go through
+# scripts/lsan.supp (third-party leaks only, each entry says why).
+# --fresh: the options below always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
 SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-    -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_BUILD_FUZZ=OFF -DFEEL_TEST_PCH=ON
+    -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_TEST_PCH=ON
+# The ASan+UBSan tree also holds the libFuzzer targets (fuzz/CMakeLists.txt): its libraries
+# carry libFuzzer's coverage instrumentation as well, so that they are compiled once for the
+# fuzz run and the sanitizer run of the tests. The fuzzed libraries and the fuzz targets
+# keep CI's -Werror (FEEL_FUZZ_WERROR): clang's warnings on them, as the separate fuzz tree
+# had. The TSan tree has the tests only.
+ASAN_TREE := $(SANITIZER_TREE) -DFEEL_SANITIZE=address -DFEEL_BUILD_FUZZ=ON -DFEEL_FUZZ_WERROR=$(WERROR)
+TSAN_TREE := $(SANITIZER_TREE) -DFEEL_SANITIZE=thread -DFEEL_BUILD_FUZZ=OFF
+
+# Every parser and decoder under libFuzzer (clang, ASan+UBSan), each for a bounded time, two
+# at a time (scripts/run-fuzzers.sh): the sensation-file reader, the protocol's report
+# decoder, the device's protocol session, the USB requests, the ff_effect translation and
+# the importers. New inputs go to the build tree; the committed seeds in
+# fuzz/corpus/<target> are only read.
+FUZZ_TARGETS := sensation_file protocol_decode descriptor_parser device_session usb_requests ff_translation ffe_import ahap_import
+fuzz: deps
+	cmake --fresh -S . -B $(BUILD)-asan $(ASAN_TREE)
+	cmake --build $(BUILD)-asan --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	bash scripts/run-fuzzers.sh $(BUILD)-asan $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
 # Two tests at a time: every test is its own process, with its own temporary files and
 # socket paths and port 0 for TCP. The ASan run leaves out the firmware comparison (label
 # firmware): its other half runs on qemu, and its x86 half is the engine every suite covers.
@@ -95,12 +108,12 @@ test-asan: export LSAN_OPTIONS := suppressions=$(CURDIR)/scripts/lsan.supp:print
 test-tsan: export TSAN_OPTIONS := halt_on_error=1:second_deadlock_stack=1
 
 test-asan: deps
-	cmake --fresh -S . -B $(BUILD)-asan $(SANITIZER_TREE) -DFEEL_SANITIZE=address
+	cmake --fresh -S . -B $(BUILD)-asan $(ASAN_TREE)
 	cmake --build $(BUILD)-asan
 	ctest --test-dir $(BUILD)-asan $(SANITIZER_CTEST) -LE '^firmware$$'
 
 test-tsan: deps
-	cmake --fresh -S . -B $(BUILD)-tsan $(SANITIZER_TREE) -DFEEL_SANITIZE=thread
+	cmake --fresh -S . -B $(BUILD)-tsan $(TSAN_TREE)
 	cmake --build $(BUILD)-tsan --target $(addprefix feel_suite_,$(TSAN_SUITES))
 	ctest --test-dir $(BUILD)-tsan $(SANITIZER_CTEST) -L '^($(subst $(space),|,$(TSAN_SUITES)))$$'
 
