@@ -364,8 +364,11 @@ json LiveSession::state_frame(bool* pointer_answered) {
             }
         }
     }
-    if (!samples.empty()) {
-        const DeviceSample& s = samples.back();
+    // The newest state even when no report came since the last frame (a sampler that waited
+    // for a core): a frame without a position would leave the pad with none.
+    const DeviceSample newest = samples.empty() ? device_->newest() : samples.back();
+    if (newest.seq != 0) {
+        const DeviceSample& s = newest;
         for (int a = 0; a < s.axis_count; ++a) {
             force.push_back(s.force[a]);
             position.push_back(s.position[a]);

@@ -30,9 +30,13 @@ const host = await new Promise((ok, fail) => {
 const ws = new WebSocket(`ws://${host}/live`);
 let last = null;
 let waiter = null;
+// Every report's device time, from the frames' samples: the plot's completeness (the device
+// reports every 2 ms; a longer gap is reports the plot never got).
+const sampleTimes = [];
 ws.onmessage = (e) => {
   const m = JSON.parse(e.data);
   if (m.type !== 'state') return;
+  for (const row of m.samples) sampleTimes.push(row[0]);
   last = m;
   waiter?.(m);
 };
@@ -76,6 +80,10 @@ console.log(`pointer message -> frame with the new force (n=${moves}): client p5
   `max=${q(server, 1)} ms; hops p50/p99: apply ${q(hops.apply, 0.5)}/${q(hops.apply, 0.99)}, ` +
   `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)}, frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
   `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
+let missing = 0;
+for (let i = 1; i < sampleTimes.length; ++i) missing += Math.max(0, Math.round((sampleTimes[i] - sampleTimes[i - 1]) / 2) - 1);
+console.log(`plot samples: ${sampleTimes.length} received, ${missing} missing by the device's clock ` +
+  `(${((100 * missing) / (sampleTimes.length + missing)).toFixed(2)}%), the sampler's queue dropped ${last.dropped_reports}`);
 ws.close();
 proc.kill('SIGTERM');
 rmSync(workspace, { recursive: true, force: true });
