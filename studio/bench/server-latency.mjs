@@ -81,9 +81,16 @@ console.log(`pointer message -> frame with the new force (n=${moves}): client p5
   `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)}, frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
   `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
 let missing = 0;
-for (let i = 1; i < sampleTimes.length; ++i) missing += Math.max(0, Math.round((sampleTimes[i] - sampleTimes[i - 1]) / 2) - 1);
+const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 3 ms
+for (let i = 1; i < sampleTimes.length; ++i) {
+  const gap = Math.round(sampleTimes[i] - sampleTimes[i - 1]);
+  missing += Math.max(0, Math.round(gap / 2) - 1);
+  if (gap > 2) gaps.set(gap, (gaps.get(gap) ?? 0) + 1);
+}
 console.log(`plot samples: ${sampleTimes.length} received, ${missing} missing by the device's clock ` +
-  `(${((100 * missing) / (sampleTimes.length + missing)).toFixed(2)}%), the sampler's queue dropped ${last.dropped_reports}`);
+  `(${((100 * missing) / (sampleTimes.length + missing)).toFixed(2)}%; gaps in ms×count: ` +
+  `${[...gaps].sort((a, b) => a[0] - b[0]).map(([g, n]) => `${g}×${n}`).join(' ') || 'none'}), ` +
+  `the sampler's queue dropped ${last.dropped_reports}`);
 ws.close();
 proc.kill('SIGTERM');
 rmSync(workspace, { recursive: true, force: true });
