@@ -1,6 +1,7 @@
 // DeviceCore: round trips, the I/O thread, input state, host emulation of reflexes.
 // device_core.hpp explains the threads and the locks.
 #include "device_core.hpp"
+#include "input_queue.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -344,6 +345,7 @@ void DeviceCore::close(bool free_effects) {
     }
     records.clear();
     by_block.clear();
+    for (const std::shared_ptr<InputQueue>& q : input_queues) q->close();
     cv.notify_all();
 }
 
@@ -355,6 +357,7 @@ void DeviceCore::mark_disconnected(const std::string& reason) {
     connected = false;
     disconnect_reason = busy ? "the device at " + address + " " + std::string(kBusyReason) : reason;
     cv.notify_all();
+    for (const std::shared_ptr<InputQueue>& q : input_queues) q->close();
 }
 
 void DeviceCore::note_protocol_problem(std::string what) {
@@ -502,6 +505,7 @@ void DeviceCore::on_joystick(const protocol::JoystickInputReport& r) {
         round_has_joystick = true;
         if (round_has_status) {
             ++input_rounds;
+            publish_input_round();
             round_has_joystick = round_has_status = false;
             cv.notify_all();
         }
@@ -593,6 +597,7 @@ void DeviceCore::on_effect_states(const protocol::EffectStatesReport& r) {
         round_has_status = true;
         if (round_has_joystick) {
             ++input_rounds;
+            publish_input_round();
             round_has_joystick = round_has_status = false;
             cv.notify_all();
         }

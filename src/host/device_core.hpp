@@ -87,6 +87,8 @@ struct Subscriber {
     DynamicCallback callback;
 };
 
+struct InputQueue;
+
 struct DeviceCore {
     DeviceCore(std::unique_ptr<transport::Connection> connection, std::string address, OpenOptions options);
     ~DeviceCore();
@@ -136,6 +138,8 @@ struct DeviceCore {
 
     uint64_t subscribe(uint64_t effect_key, DynamicCallback callback);
     void unsubscribe(uint64_t id) noexcept;
+    // Per-report input subscribers (input_queue.cpp): forget one (takes mu).
+    void unsubscribe_input(const InputQueue* queue) noexcept;
 
     // --- for CommandQueue (command_queue.cpp), which runs an Effect's calls later ----------
 
@@ -186,6 +190,7 @@ struct DeviceCore {
     std::optional<std::vector<uint8_t>> descriptor_reply;
     InputState input{};
     uint64_t input_rounds = 0;       // complete state rounds (joystick + last status page)
+    std::vector<std::shared_ptr<InputQueue>> input_queues;  // subscribe_input's, each round goes to all
     bool round_has_joystick = false;
     bool round_has_status = false;
     std::map<uint64_t, std::shared_ptr<EffectRecord>> records;
@@ -221,6 +226,8 @@ private:
     void collect_repeats(Clock::time_point now, std::vector<uint16_t>& blocks);
     void send_emulated_starts(const std::vector<uint16_t>& blocks);
     void mark_disconnected(const std::string& reason);
+    // A round is complete: `input` goes to every input subscriber. Caller holds mu.
+    void publish_input_round() noexcept;
     void note_protocol_problem(std::string what);
     Status send_frame(transport::Frame frame);
     uint32_t next_sequence() noexcept;

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <algorithm>
+#include <iterator>
+#include <optional>
 #include <utility>
 
 #include "feel/effect_type.hpp"
@@ -132,7 +135,7 @@ EffectParams LiveSession::device_params(const Slot& slot) const {
     return p;
 }
 
-std::vector<json> LiveSession::handle(std::string_view text) {
+std::vector<json> LiveSession::handle(std::string_view text, Clock::time_point received) {
     json m;
     try {
         m = json::parse(text);
@@ -150,11 +153,15 @@ std::vector<json> LiveSession::handle(std::string_view text) {
         if (type == "export_code") return {export_reply(m)};  // export_request.hpp
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
-            pointer_received_ = std::chrono::steady_clock::now();
+            const DeviceSample before = device_->newest();
             if (!device_->set_hand_target(m["x"].get<int32_t>(), m["y"].get<int32_t>())) {
                 return {error_reply("the hand of a device in another process is a person's: the pad only shows it",
                                     type)};
             }
+            pointer_.read = received;
+            pointer_.applied = Clock::now();
+            std::copy(std::begin(before.force), std::end(before.force), std::begin(pointer_.force));
+            pointer_.answered = false;
             return {};
         }
         if (type == "grip") {
@@ -312,7 +319,27 @@ json LiveSession::effect_states() {
     return out;
 }
 
-json LiveSession::state_frame() {
+namespace {
+
+int64_t steady_us(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration_cast<std::chrono::microseconds>(t.time_since_epoch()).count();
+}
+
+double us_between(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
+    return std::chrono::duration<double, std::micro>(to - from).count();
+}
+
+// Wall-clock µs of a steady time: the browser's performance.timeOrigin + now() is on the
+// wall clock, so the two sockets' shares can be told apart on one machine.
+double wall_us(std::chrono::steady_clock::time_point t) {
+    const auto wall_now = std::chrono::system_clock::now();
+    const auto steady_now = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::micro>(wall_now.time_since_epoch()).count() - us_between(t, steady_now);
+}
+
+}  // namespace
+
+json LiveSession::state_frame(bool* pointer_answered) {
     std::vector<DeviceSample> samples = device_->samples_after(last_sample_);
     if (samples.size() > kMaxFrameSamples) {  // a browser that fell behind gets the newest
         samples.erase(samples.begin(), samples.end() - static_cast<std::ptrdiff_t>(kMaxFrameSamples));
@@ -321,15 +348,27 @@ json LiveSession::state_frame() {
     json force = json::array(), position = json::array();
     uint32_t buttons = 0;
     double t_us = 0;
+    // The first report, taken after the pointer's target was handed to the hand, whose
+    // force moved (by more than the browser's probe threshold, 0.2% of full scale).
+    std::optional<int64_t> force_seen_us;
+    const int64_t applied_us = steady_us(pointer_.applied);
     for (const DeviceSample& s : samples) {
         json row = json::array({static_cast<double>(s.t_us) / 1000.0});
         for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.force[a]));
         for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.position[a]));
         rows.push_back(row);
         last_sample_ = s.seq;
+        if (!pointer_.answered && !force_seen_us && s.host_us >= applied_us) {
+            for (int a = 0; a < s.axis_count; ++a) {
+                if (std::fabs(s.force[a] - pointer_.force[a]) > 20) force_seen_us = s.host_us;
+            }
+        }
     }
-    if (!samples.empty()) {
-        const DeviceSample& s = samples.back();
+    // The newest state even when no report came since the last frame (a sampler that waited
+    // for a core): a frame without a position would leave the pad with none.
+    const DeviceSample newest = samples.empty() ? device_->newest() : samples.back();
+    if (newest.seq != 0) {
+        const DeviceSample& s = newest;
         for (int a = 0; a < s.axis_count; ++a) {
             force.push_back(s.force[a]);
             position.push_back(s.position[a]);
@@ -338,18 +377,33 @@ json LiveSession::state_frame() {
         t_us = static_cast<double>(s.t_us);
     }
     // Effect states cost a round trip each to the device: 10 times a second.
-    if (const auto now = std::chrono::steady_clock::now(); now - effect_states_at_ >= std::chrono::milliseconds(100)) {
+    if (const auto now = Clock::now(); now - effect_states_at_ >= std::chrono::milliseconds(100)) {
         last_effect_states_ = effect_states();
         effect_states_at_ = now;
     }
-    const double pointer_age_us =
-        pointer_seq_ == 0 ? 0.0
-                          : std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() -
-                                                                      pointer_received_).count();
-    return {{"type", "state"},       {"t_us", t_us},       {"samples", rows},
-            {"position", position},  {"force", force},     {"buttons", buttons},
-            {"pointer_seq", pointer_seq_}, {"pointer_age_us", pointer_age_us},
-            {"effects", last_effect_states_}, {"dynamics", inbox_->take()}};
+    const auto built = Clock::now();
+    const double pointer_age_us = pointer_seq_ == 0 ? 0.0 : us_between(pointer_.read, built);
+    json frame = {{"type", "state"},       {"t_us", t_us}, {"samples", rows},
+                  {"position", position},  {"force", force},     {"buttons", buttons},
+                  {"pointer_seq", pointer_seq_}, {"pointer_age_us", pointer_age_us},
+                  {"effects", last_effect_states_}, {"dynamics", inbox_->take()},
+                  {"dropped_reports", device_->dropped_reports()}};
+    if (force_seen_us) {
+        pointer_.answered = true;
+        frame["pointer_hops"] = {{"seq", pointer_seq_},
+                                 {"read_wall_us", wall_us(pointer_.read)},
+                                 {"built_wall_us", wall_us(built)},
+                                 {"apply_us", us_between(pointer_.read, pointer_.applied)},
+                                 {"device_us", static_cast<double>(*force_seen_us - applied_us)},
+                                 {"frame_us", static_cast<double>(steady_us(built) - *force_seen_us)}};
+    }
+    if (pointer_answered) *pointer_answered = force_seen_us.has_value();
+    if (!pointer_written_.is_null()) frame["pointer_written"] = std::exchange(pointer_written_, nullptr);
+    return frame;
+}
+
+void LiveSession::note_pointer_written(int64_t seq, size_t ahead, double write_us) {
+    pointer_written_ = {{"seq", seq}, {"ahead", ahead}, {"write_us", write_us}};
 }
 
 }  // namespace feel::studio

@@ -53,14 +53,22 @@ public:
     LiveSession(const LiveSession&) = delete;
     LiveSession& operator=(const LiveSession&) = delete;
 
-    // Handles one message (a WebSocket text frame); returns the replies. Never throws.
-    std::vector<nlohmann::json> handle(std::string_view text);
+    using Clock = std::chrono::steady_clock;
+    // Handles one message (a WebSocket text frame) that the socket read at `received`;
+    // returns the replies. Never throws.
+    std::vector<nlohmann::json> handle(std::string_view text, Clock::time_point received = Clock::now());
     // Where `import_file` saves what it imports (docs/import.md); without one it is refused.
     void set_workspace(Workspace* workspace) noexcept { workspace_ = workspace; }
-    // The next state frame: the device's reports since the last frame.
-    nlohmann::json state_frame();
+    // The next state frame: the device's reports since the last frame. `pointer_answered`
+    // says whether it is the first to show the newest pointer message's force change.
+    nlohmann::json state_frame(bool* pointer_answered = nullptr);
+    // The frame that answered pointer message `seq` was written to the socket `write_us`
+    // after it was queued, behind `ahead` frames: the next frame says so.
+    void note_pointer_written(int64_t seq, size_t ahead, double write_us);
     // Whether the device has reported since the last frame.
     [[nodiscard]] bool has_news() const { return device_->newest_seq() > last_sample_; }
+
+    [[nodiscard]] int64_t pointer_seq() const noexcept { return pointer_seq_; }
 
     // For tests: the effects the session holds on the device, by index.
     [[nodiscard]] size_t effect_count() const noexcept { return slots_.size(); }
@@ -90,9 +98,19 @@ private:
     uint32_t buttons_ = 0;
     uint32_t hats_ = 0;
     int64_t pointer_seq_ = 0;
-    // When the newest pointer message arrived: each state frame says how long ago, so the
-    // latency bench can tell the server's share from the browser's and the socket's.
-    std::chrono::steady_clock::time_point pointer_received_{};
+    // The newest pointer message's way through the server (docs/studio.md, "Latency"):
+    // read from the socket, handed to the hand, the first report whose force moved, the
+    // frame that shows it. Each state frame says how long ago it was read, and the frame
+    // that first shows the change carries the hops, so the latency bench can tell the
+    // server's share from the browser's and the sockets'.
+    struct PointerTrace {
+        Clock::time_point read{};     // the socket's read completion
+        Clock::time_point applied{};  // set_hand_target returned
+        float force[kMaxAxes] = {};   // the newest report's force when it was applied
+        bool answered = true;         // a frame showed its force change
+    };
+    PointerTrace pointer_;
+    nlohmann::json pointer_written_;  // the answering frame's write, for the next frame
     std::chrono::steady_clock::time_point effect_states_at_{};  // when last_effect_states_ was read
     nlohmann::json last_effect_states_ = nlohmann::json::array();
 };

@@ -1,6 +1,7 @@
 // The Studio's device (studio_device.hpp).
 #include "studio_device.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 #include "feel/effect_type.hpp"
@@ -86,24 +87,45 @@ StudioDevice::~StudioDevice() {
 }
 
 void StudioDevice::sample_loop() {
+    // Every report, through a per-report subscription (a plot that took only the newest
+    // state lost stretches of reports whenever this thread waited for a core). Its queue
+    // holds 2 s at 1 kHz: longer than this thread is ever kept from running.
     host::Device device = *device_;  // a copy of the shared handle for this thread
+    std::optional<host::InputSubscription> reports;
     while (!stopping_) {
-        auto in = device.wait_input(std::chrono::milliseconds(50));
-        if (!in) {
-            if (!device.connected()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (!reports) {
+            auto sub = device.subscribe_input(kSubscriptionRounds);
+            if (!sub) {  // the device is gone: the plot stops, the sessions see it
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+                continue;
+            }
+            reports.emplace(std::move(sub.value()));
+        }
+        auto batch = reports->wait(std::chrono::milliseconds(50));
+        if (!batch) {
+            if (batch.status().kind == host::ErrorKind::disconnected) {
+                reports.reset();
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            }
             continue;
         }
-        DeviceSample s;
-        s.t_us = in->t_us;
-        s.axis_count = in->axis_count;
-        for (int a = 0; a < in->axis_count && a < kMaxAxes; ++a) {
-            s.force[a] = in->force[a];
-            s.position[a] = in->position[a];
-        }
-        s.buttons = in->buttons;
+        const int64_t now_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                                   std::chrono::steady_clock::now().time_since_epoch()).count();
         std::lock_guard lock(mu_);
-        s.seq = next_seq_++;
-        ring_[s.seq % kRingSize] = s;
+        dropped_ += batch->dropped;
+        for (const host::InputState& in : batch->reports) {
+            DeviceSample s;
+            s.t_us = in.t_us;
+            s.axis_count = in.axis_count;
+            for (int a = 0; a < in.axis_count && a < kMaxAxes; ++a) {
+                s.force[a] = in.force[a];
+                s.position[a] = in.position[a];
+            }
+            s.buttons = in.buttons;
+            s.host_us = now_us;
+            s.seq = next_seq_++;
+            ring_[s.seq % kRingSize] = s;
+        }
     }
 }
 
@@ -115,6 +137,16 @@ std::vector<DeviceSample> StudioDevice::samples_after(uint64_t after) const {
     if (newest >= kRingSize && first + kRingSize <= newest) first = newest - kRingSize + 1;
     for (uint64_t s = first; s <= newest; ++s) out.push_back(ring_[s % kRingSize]);
     return out;
+}
+
+uint64_t StudioDevice::dropped_reports() const {
+    std::lock_guard lock(mu_);
+    return dropped_;
+}
+
+DeviceSample StudioDevice::newest() const {
+    std::lock_guard lock(mu_);
+    return next_seq_ == 1 ? DeviceSample{} : ring_[(next_seq_ - 1) % kRingSize];
 }
 
 uint64_t StudioDevice::newest_seq() const {

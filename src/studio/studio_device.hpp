@@ -8,7 +8,8 @@
 // person's and those calls answer false.
 //
 // A sampler thread records every state report the device sends (position and force per
-// axis) into a bounded ring; each browser session reads what is new since its last frame.
+// axis), through the host API's per-report subscription (Device::subscribe_input), into a
+// bounded ring; each browser session reads what is new since its last frame.
 #pragma once
 
 #include <atomic>
@@ -44,6 +45,7 @@ struct DeviceSample {
     float force[kMaxAxes] = {};
     float position[kMaxAxes] = {};
     uint32_t buttons = 0;
+    int64_t host_us = 0;  // steady_clock µs when the sampler took it (the latency hops)
 };
 
 class StudioDevice {
@@ -70,8 +72,14 @@ public:
     // The samples newer than `after` (a seq), oldest first, at most the ring's size.
     [[nodiscard]] std::vector<DeviceSample> samples_after(uint64_t after) const;
     [[nodiscard]] uint64_t newest_seq() const;
+    // The newest sample (seq 0 before the first report).
+    [[nodiscard]] DeviceSample newest() const;
+    // Reports the sampler's subscription lost because its queue was full (0 unless this
+    // process was kept from running for longer than the queue lasts).
+    [[nodiscard]] uint64_t dropped_reports() const;
 
     static constexpr size_t kRingSize = 4096;
+    static constexpr size_t kSubscriptionRounds = 2048;
 
 private:
     void sample_loop();
@@ -82,6 +90,7 @@ private:
     std::string grip_;
     std::vector<DeviceSample> ring_;  // kRingSize, indexed by seq % kRingSize
     uint64_t next_seq_ = 1;
+    uint64_t dropped_ = 0;
     std::atomic<bool> stopping_{false};
     std::thread sampler_;
 };

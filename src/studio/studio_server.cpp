@@ -6,11 +6,12 @@
 // upgrade to /live, hands the socket and the request to a LiveConnection. A
 // LiveConnection owns one LiveSession: it answers each message, and its frame timer
 // queues a state frame whenever fewer than four frames wait to be written, so a slow
-// browser sees fewer frames rather than a growing queue. The timer wakes at 60 Hz at
-// rest; for a moment after each browser message it polls the device every millisecond
-// and sends a frame as soon as there is a new report (at most kLiveFrameHz): a pointer
-// move then shows its force a tick and a report later, not a frame period later. When the socket closes for any reason,
-// the connection and its session are destroyed, which stops the browser's effects.
+// browser sees fewer frames rather than a growing queue. The timer wakes at 60 Hz at rest; for a
+// moment after each browser action it polls the device every millisecond and sends a
+// frame as soon as there is a new report (at most kLiveFrameHz): a pointer move then
+// shows its force a tick and a report later, not a frame period later. When the socket
+// closes for any reason, the connection and its session are destroyed, which stops the
+// browser's effects.
 #include "studio_server.hpp"
 
 #include <utility>  // std::exchange, which Boost 1.74's asio uses without including
@@ -195,6 +196,8 @@ Response handle_http(Shared& shared, const Request& req) {
 // ---------------------------------------------------------------------------------------
 
 class LiveConnection : public std::enable_shared_from_this<LiveConnection> {
+    using Clock = std::chrono::steady_clock;
+
 public:
     LiveConnection(tcp::socket socket, Shared& shared)
         : ws_(std::move(socket)), shared_(shared), timer_(ws_.get_executor()) {}
@@ -230,14 +233,16 @@ private:
                 self->close();
                 return;
             }
+            if (!self->session_) return;  // closed while the read completed
+            const auto read_at = Clock::now();  // the Beast read's completion: the server's first hop
             if (!self->ws_.got_text()) {
                 self->send(json{{"type", "error"}, {"message", "malformed message: binary frames are not part of the protocol"}}.dump());
             } else {
                 const std::string text = beast::buffers_to_string(self->buffer_.data());
-                for (const json& r : self->session_->handle(text)) self->send(r.dump());
+                for (const json& r : self->session_->handle(text, read_at)) self->send(r.dump());
             }
             self->buffer_.consume(self->buffer_.size());
-            const auto now = Clock::now();
+            const auto now = read_at;
             // At rest the timer may be a frame period away: bring it forward.
             if (!self->interacting(now)) self->timer_.expires_after(kLivePoll);
             self->last_message_ = now;
@@ -245,7 +250,6 @@ private:
         });
     }
 
-    using Clock = std::chrono::steady_clock;
     static constexpr auto kRestInterval = std::chrono::microseconds(1'000'000 / kStateFrameHz);
     static constexpr auto kLiveInterval = std::chrono::microseconds(1'000'000 / kLiveFrameHz);
 
@@ -273,7 +277,9 @@ private:
         const auto since = now - last_frame_;
         const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->has_news());
         if (due && queue_.size() < 4) {
-            send(session_->state_frame().dump());
+            bool answers_pointer = false;
+            std::string frame = session_->state_frame(&answers_pointer).dump();
+            send(std::move(frame), answers_pointer ? session_->pointer_seq() : 0);
             last_frame_ = now;
         }
         const auto rest = last_frame_ + kRestInterval - now;
@@ -281,18 +287,33 @@ private:
         wait();
     }
 
-    void send(std::string text) {
+    // One message waiting to be written; a state frame that answers a pointer message
+    // keeps its seq and when it was queued, so that its write time can be reported.
+    struct Outgoing {
+        std::string text;
+        int64_t pointer_seq = 0;
+        size_t ahead = 0;  // messages queued before it
+        Clock::time_point queued{};
+    };
+
+    void send(std::string text, int64_t pointer_seq = 0) {
         if (closed_ || queue_.size() >= kMaxQueuedFrames) return;
-        queue_.push_back(std::move(text));
+        queue_.push_back(Outgoing{std::move(text), pointer_seq, queue_.size(), Clock::now()});
         if (queue_.size() == 1) write();
     }
 
     void write() {
         ws_.text(true);
-        ws_.async_write(asio::buffer(queue_.front()), [self = shared_from_this()](beast::error_code ec, size_t) {
+        ws_.async_write(asio::buffer(queue_.front().text), [self = shared_from_this()](beast::error_code ec, size_t) {
             if (ec) {
                 self->close();
                 return;
+            }
+            const Outgoing& done = self->queue_.front();
+            if (done.pointer_seq != 0 && self->session_) {
+                self->session_->note_pointer_written(
+                    done.pointer_seq, done.ahead,
+                    std::chrono::duration<double, std::micro>(Clock::now() - done.queued).count());
             }
             self->queue_.pop_front();
             if (!self->queue_.empty()) self->write();
@@ -317,7 +338,7 @@ private:
     Shared& shared_;
     asio::steady_timer timer_;
     beast::flat_buffer buffer_;
-    std::deque<std::string> queue_;
+    std::deque<Outgoing> queue_;
     std::optional<LiveSession> session_;
     bool closed_ = false;
     bool waiting_ = false;                  // a wait on timer_ is outstanding

@@ -2,13 +2,14 @@
 // simulated stick, a WebSocket client (Node's) that plays a spring of coefficient 5000,
 // moves the stiff hand's target between -6000 and +6000 every 30 ms, and times each move
 // to the first state frame whose force changed (total: the client's clock; server: the
-// frame's pointer_age_us, the server's clock). Prints p50/p99/max (docs/studio.md,
-// "Latency").
+// frame's pointer_age_us, the server's clock), with the server's hops (pointer_hops: the
+// target handed to the hand, the first report with the new force, the frame built).
+// Prints p50/p99/max and the load average (docs/studio.md, "Latency").
 //
 //   node --experimental-websocket studio/bench/server-latency.mjs build/apps/feel/feel [moves]
 import { spawn } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { loadavg, tmpdir } from 'node:os';
 import { join } from 'node:path';
 
 const feel = process.argv[2] ?? 'build/apps/feel/feel';
@@ -29,9 +30,13 @@ const host = await new Promise((ok, fail) => {
 const ws = new WebSocket(`ws://${host}/live`);
 let last = null;
 let waiter = null;
+// Every report's device time, from the frames' samples: the plot's completeness (the device
+// reports every 2 ms; a longer gap is reports the plot never got).
+const sampleTimes = [];
 ws.onmessage = (e) => {
   const m = JSON.parse(e.data);
   if (m.type !== 'state') return;
+  for (const row of m.samples) sampleTimes.push(row[0]);
   last = m;
   waiter?.(m);
 };
@@ -46,12 +51,18 @@ await sleep(300);
 
 const total = [];
 const server = [];
+const hops = { apply: [], device: [], frame: [] };
 for (let i = 1; i <= moves; ++i) {
   const before = last.force[0];
   const t0 = performance.now();
   ws.send(JSON.stringify({ type: 'pointer', seq: i, x: i % 2 ? 6000 : -6000, y: 0 }));
   for (;;) {
     const m = await new Promise((ok) => (waiter = ok));
+    if (m.pointer_hops?.seq === i) {
+      hops.apply.push(m.pointer_hops.apply_us / 1000);
+      hops.device.push(m.pointer_hops.device_us / 1000);
+      hops.frame.push(m.pointer_hops.frame_us / 1000);
+    }
     if (m.pointer_seq >= i && Math.abs(m.force[0] - before) > 20) {
       total.push(performance.now() - t0);
       server.push(m.pointer_age_us / 1000);
@@ -66,7 +77,20 @@ const q = (list, p) => {
 };
 console.log(`pointer message -> frame with the new force (n=${moves}): client p50=${q(total, 0.5)} ms ` +
   `p99=${q(total, 0.99)} ms max=${q(total, 1)} ms; server p50=${q(server, 0.5)} ms p99=${q(server, 0.99)} ms ` +
-  `max=${q(server, 1)} ms`);
+  `max=${q(server, 1)} ms; hops p50/p99: apply ${q(hops.apply, 0.5)}/${q(hops.apply, 0.99)}, ` +
+  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)}, frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
+  `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
+let missing = 0;
+const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 3 ms
+for (let i = 1; i < sampleTimes.length; ++i) {
+  const gap = Math.round(sampleTimes[i] - sampleTimes[i - 1]);
+  missing += Math.max(0, Math.round(gap / 2) - 1);
+  if (gap > 2) gaps.set(gap, (gaps.get(gap) ?? 0) + 1);
+}
+console.log(`plot samples: ${sampleTimes.length} received, ${missing} missing by the device's clock ` +
+  `(${((100 * missing) / (sampleTimes.length + missing)).toFixed(2)}%; gaps in ms×count: ` +
+  `${[...gaps].sort((a, b) => a[0] - b[0]).map(([g, n]) => `${g}×${n}`).join(' ') || 'none'}), ` +
+  `the sampler's queue dropped ${last.dropped_reports}`);
 ws.close();
 proc.kill('SIGTERM');
 rmSync(workspace, { recursive: true, force: true });

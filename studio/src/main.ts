@@ -15,7 +15,7 @@ import { designView, type EffectLive } from './views/design';
 import { exportView } from './views/export';
 import { filebarView } from './views/filebar';
 import { libraryView } from './views/library';
-import { Pad } from './views/pad';
+import { Pad, type PointerHops, type PointerWritten } from './views/pad';
 import { paletteView, type Preset } from './views/palette';
 import { Plot } from './views/plot';
 import { triggersView } from './views/triggers';
@@ -124,7 +124,14 @@ live.on((m) => {
       ++frames;
       waveLiveFeed.push(m);
       plot.push(m.samples as number[][]);
-      pad.update(m.position as number[], m.force as number[], m.pointer_seq, m.pointer_age_us);
+      pad.update(
+        m.position as number[],
+        m.force as number[],
+        m.pointer_seq,
+        m.pointer_age_us,
+        m.pointer_hops as PointerHops | undefined,
+        m.pointer_written as PointerWritten | undefined,
+      );
       editorsFrame();
       if ((m.effects as EffectLive[]).length || liveStates.length) {
         // redraw the views only when a state, a start count or an arming changed
@@ -149,8 +156,10 @@ live.on((m) => {
       break;
   }
 });
-// The plot is redrawn at most 30 times a second, when new samples came.
-window.setInterval(() => plot.draw(), 33);
+// The plot is redrawn at most 20 times a second, when new samples came: its redraw holds the
+// page's one thread (a state frame waits meanwhile), and 20 Hz scrolls a 5 s window smoothly
+// enough (docs/studio.md, "Latency").
+window.setInterval(() => plot.draw(), 50);
 
 // The user's presets (§9.3): the sensations of favorites.feel.json, under the heading
 // before the first '.' of their name. No file yet (404) is no presets; any other problem

@@ -277,6 +277,51 @@ TEST_F(ServerTest, RefusesOversizedWebSocketMessages) {
 // A dynamic that asks for interim reports (§5.2) has them in the state frames, at the
 // rate the device announces, with the mass's offset per axis of the effect; one that does
 // not ask has none.
+TEST_F(ServerTest, APointerMoveIsTimedHopByHop) {
+    auto ws = open_live();
+    (void)next(*ws, "hello");
+    const json condition = {{"pos_coefficient", 5000}, {"neg_coefficient", 5000}};
+    const json spring = {{"type", "spring"}, {"duration_us", "infinite"}, {"axes", {"x", "y"}},
+                         {"conditions", {condition, condition}}};
+    ws->write(asio::buffer(json{{"type", "set_sensation"}, {"seq", 1}, {"name", "s"}, {"effects", {spring}}}.dump()));
+    ASSERT_TRUE(next(*ws, "validated")["ok"].get<bool>());
+    ws->write(asio::buffer(json{{"type", "play"}, {"effect", 0}}.dump()));
+    // Until the spring plays (its state in the frames), then the pointer to +6000.
+    for (const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+         std::chrono::steady_clock::now() < end;) {
+        const json st = next(*ws, "state");
+        if (!st["effects"].empty() && st["effects"][0]["state"] == "playing") break;
+    }
+    ws->write(asio::buffer(json{{"type", "pointer"}, {"seq", 7}, {"x", 6000}, {"y", 0}}.dump()));
+    json hops, written, shown;
+    for (const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+         written.is_null() && std::chrono::steady_clock::now() < end;) {
+        const json st = next(*ws, "state");
+        EXPECT_EQ(st["dropped_reports"], 0);
+        EXPECT_EQ(st["position"].size(), 2u);  // every frame has the state, news or not
+        if (st.contains("pointer_hops")) {
+            EXPECT_TRUE(hops.is_null()) << "one frame answers a pointer message: " << st["pointer_hops"];
+            hops = st["pointer_hops"];
+            shown = st;
+        }
+        if (st.contains("pointer_written")) written = st["pointer_written"];
+    }
+    ASSERT_FALSE(hops.is_null());
+    EXPECT_EQ(hops["seq"], 7);
+    // The frame that answers shows the spring pulling back toward the centre (§3.1: the
+    // force opposes the displacement), the handle on its way to +6000.
+    EXPECT_GT(shown["position"][0].get<double>(), 0);
+    EXPECT_LT(shown["force"][0].get<double>(), -20);
+    for (const char* k : {"apply_us", "device_us", "frame_us"}) EXPECT_GE(hops[k].get<double>(), 0) << k;
+    // The hops add up to the span between the read and the frame on the other clock.
+    const double span = hops["built_wall_us"].get<double>() - hops["read_wall_us"].get<double>();
+    const double sum = hops["apply_us"].get<double>() + hops["device_us"].get<double>() + hops["frame_us"].get<double>();
+    EXPECT_NEAR(span, sum, 1000) << hops;
+    ASSERT_FALSE(written.is_null());
+    EXPECT_EQ(written["seq"], 7);
+    EXPECT_GE(written["write_us"].get<double>(), 0);
+}
+
 TEST_F(ServerTest, StateFramesCarryADynamicsInterimReports) {
     auto ws = open_live();
     const json hello = next(*ws, "hello");

@@ -176,6 +176,52 @@ private:
     uint64_t id_ = 0;
 };
 
+// Every state round the device reports, in order (Device::subscribe_input): what a
+// subscriber's queue held when it was taken.
+struct InputBatch {
+    std::vector<InputState> reports;  // oldest first
+    // Rounds lost since the previous batch because the queue was full (the oldest go
+    // first: `reports` then starts after a gap). 0 when nothing was lost.
+    uint64_t dropped = 0;
+    [[nodiscard]] bool overflowed() const noexcept { return dropped != 0; }
+};
+
+struct InputQueue;  // one subscriber's bounded queue (private)
+
+// A per-report subscription to a device's input (Device::subscribe_input). The device's
+// I/O thread appends every complete state round (joystick report and device status) to
+// this subscriber's queue, a ring of fixed capacity allocated at subscription: memory
+// never grows. When the ring is full the oldest round is dropped and counted; the next
+// batch says how many went. Unsubscribes when destroyed (or reset()). Thread-safe: take()
+// and wait() may be called from any thread, one or several (each round goes to exactly one
+// of the callers); the I/O thread never waits for a subscriber.
+class InputSubscription {
+public:
+    InputSubscription() = default;
+    InputSubscription(InputSubscription&&) noexcept;
+    InputSubscription& operator=(InputSubscription&&) noexcept;
+    ~InputSubscription();
+    void reset() noexcept;
+    [[nodiscard]] bool active() const noexcept { return queue_ != nullptr; }
+
+    // What is queued now; never blocks (beyond the queue's lock, held for a copy).
+    [[nodiscard]] InputBatch take();
+    // Blocks until at least one round is queued, then takes the queue as take() does.
+    // Errors: timeout (nothing within `timeout`), disconnected (nothing queued and the
+    // device is gone), invalid_handle (an empty subscription). A zero timeout never blocks.
+    [[nodiscard]] Result<InputBatch> wait(std::chrono::milliseconds timeout);
+    [[nodiscard]] size_t capacity() const noexcept;
+    // Rounds dropped for a full queue since the subscription began.
+    [[nodiscard]] uint64_t dropped_total() const;
+
+private:
+    friend class Device;
+    InputSubscription(std::weak_ptr<DeviceCore> core, std::shared_ptr<InputQueue> queue)
+        : core_(std::move(core)), queue_(std::move(queue)) {}
+    std::weak_ptr<DeviceCore> core_;
+    std::shared_ptr<InputQueue> queue_;
+};
+
 // What Effect::status() tells (GetEffectStatus, and more).
 struct EffectStatusInfo {
     runtime::ReportedEffectState state = runtime::ReportedEffectState::stopped;
@@ -287,6 +333,12 @@ public:
     [[nodiscard]] InputState input() const;
     // Waits until a state report newer than the current one arrives (or timeout).
     [[nodiscard]] Result<InputState> wait_input(std::chrono::milliseconds timeout);
+    // Every state round from now on, in order, in a queue of `capacity` rounds
+    // (1..kMaxInputQueue; 1024 is 2 s at 500 Hz). For a reader that must not miss reports
+    // (a plot, a recorder): wait_input() gives only the newest. invalid_parameter for a
+    // capacity out of range, disconnected for a device that is gone.
+    static constexpr size_t kMaxInputQueue = 16384;
+    [[nodiscard]] Result<InputSubscription> subscribe_input(size_t capacity = 1024);
 
     // Force streaming (§2.4): one sample of the host's force, per device axis, ±10000,
     // physical sign; up to 1 kHz. The device smooths slower streams without overshoot and

@@ -73,6 +73,15 @@ export const schema = {
       // how long ago (server clock) the pointer message pointer_seq arrived: the server's
       // share of the pointer -> force shown latency
       pointer_age_us: { type: 'number' },
+      // on the frame that first shows the newest pointer message's force change: its hops
+      // through the server (seq, read_wall_us and built_wall_us on the wall clock, apply_us
+      // read -> hand target set, device_us -> the first report with the new force,
+      // frame_us -> this frame built); docs/studio.md, "Latency"
+      pointer_hops: { type: 'object', optional: true },
+      // that frame's write: seq, ahead (messages queued before it), write_us (queued -> written)
+      pointer_written: { type: 'object', optional: true },
+      // reports the server's sampler lost because its queue was full (0 on a healthy server)
+      dropped_reports: { type: 'integer', min: 0, max: 9007199254740991 },
       effects: { type: 'array', maxItems: 32 },
       // the dynamics' interim and final reports since the last frame (§5.2): effect, kind,
       // t_ms, position/velocity (mass minus handle) and handle_velocity per axis

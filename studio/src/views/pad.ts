@@ -19,12 +19,41 @@ export interface PadState {
 // received -> the state frame that shows the new force built: the device's loop, its
 // report, the frame's pacing), -> that frame received (transport: the sockets, both
 // ends' queues), -> the canvas drawn with it in the next animation frame (paint).
+//
+// The server's hops (pointer_hops, on the frame that first shows the change) split these
+// further, all in ms: sendToRead (the message sent -> the server's socket read, both on
+// the wall clock), apply (read -> the hand's target set), device (-> the first report
+// with the new force in the server's sampler: the device's tick, its report, the
+// in-process link, the sampler's wake-up), frame (-> the state frame built: the frame
+// timer), builtToArrive (-> the browser's onmessage, wall clock), and, a frame later,
+// write (the frame queued -> written to the socket) and ahead (messages before it).
 export interface LatencySample {
+  seq: number;
   total: number;
   input: number;
   server: number;
   transport: number;
   paint: number;
+  sendToRead?: number;
+  apply?: number;
+  device?: number;
+  frame?: number;
+  builtToArrive?: number;
+  write?: number;
+  ahead?: number;
+}
+export interface PointerHops {
+  seq: number;
+  read_wall_us: number;
+  built_wall_us: number;
+  apply_us: number;
+  device_us: number;
+  frame_us: number;
+}
+export interface PointerWritten {
+  seq: number;
+  ahead: number;
+  write_us: number;
 }
 interface Probe {
   seq: number;
@@ -33,6 +62,7 @@ interface Probe {
   force: number[];
   arrived?: number;
   server?: number;
+  hops?: PointerHops;
 }
 
 const kSize = 320;
@@ -100,14 +130,29 @@ export class Pad {
 
   // A state frame: the device's newest position and force. The first frame that answers
   // the newest pointer message with a changed force ends its probe once it is drawn.
-  update(position: number[], force: number[], pointerSeq: number, pointerAgeUs: number): void {
+  update(
+    position: number[],
+    force: number[],
+    pointerSeq: number,
+    pointerAgeUs: number,
+    hops?: PointerHops,
+    written?: PointerWritten,
+  ): void {
     this.state.position = position;
     this.state.force = force;
     const p = this.probe;
+    if (p && hops?.seq === p.seq) p.hops = hops;
     if (p && p.arrived === undefined && pointerSeq >= p.seq) {
       if (force.some((f, a) => Math.abs(f - (p.force[a] ?? 0)) > 20)) {
         p.arrived = performance.now();
         p.server = pointerAgeUs / 1000;
+      }
+    }
+    if (written) {
+      const l = this.latencies.find((s) => s.seq === written.seq);
+      if (l) {
+        l.write = written.write_us / 1000;
+        l.ahead = written.ahead;
       }
     }
     this.draw();
@@ -124,13 +169,23 @@ export class Pad {
       if (p?.arrived !== undefined) {
         const painted = performance.now();
         const server = Math.min(p.server ?? 0, p.arrived - p.sent);
-        this.latencies.push({
+        const sample: LatencySample = {
+          seq: p.seq,
           total: painted - p.event,
           input: p.sent - p.event,
           server,
           transport: p.arrived - p.sent - server,
           paint: painted - p.arrived,
-        });
+        };
+        if (p.hops) {
+          const wall = (t: number) => (performance.timeOrigin + t) * 1000; // µs
+          sample.sendToRead = (p.hops.read_wall_us - wall(p.sent)) / 1000;
+          sample.apply = p.hops.apply_us / 1000;
+          sample.device = p.hops.device_us / 1000;
+          sample.frame = p.hops.frame_us / 1000;
+          sample.builtToArrive = (wall(p.arrived) - p.hops.built_wall_us) / 1000;
+        }
+        this.latencies.push(sample);
         if (this.latencies.length > 5000) this.latencies.shift();
         this.probe = null;
       }

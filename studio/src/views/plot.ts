@@ -16,7 +16,10 @@ export class Plot {
     this.axisNames = names;
     const series: uPlot.Series[] = [{ label: 't (s)' }];
     names.forEach((n, i) => series.push({ label: `force ${n}`, stroke: kColors[i % 6], width: 1.5, scale: 'f' }));
-    names.forEach((n, i) => series.push({ label: `position ${n}`, stroke: kColors[i % 6], dash: [4, 3], width: 1, scale: 'f' }));
+    // Position: the axis's colour, thin and faded. Not dashed: a dashed 2500-point path is
+    // the costliest thing the page's one thread drew (Chromium strokes dashes in software
+    // without a GPU), and a state frame waits while it draws (docs/studio.md, "Latency").
+    names.forEach((n, i) => series.push({ label: `position ${n}`, stroke: `${kColors[i % 6]}80`, width: 1, scale: 'f' }));
     this.plot?.destroy();
     this.plot = new uPlot(
       {
