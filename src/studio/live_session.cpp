@@ -351,6 +351,7 @@ json LiveSession::state_frame(bool* pointer_answered) {
     // The first report, taken after the pointer's target was handed to the hand, whose
     // force moved (by more than the browser's probe threshold, 0.2% of full scale).
     std::optional<int64_t> force_seen_us;
+    int64_t force_seen_transit_us = 0;
     const int64_t applied_us = steady_us(pointer_.applied);
     for (const DeviceSample& s : samples) {
         json row = json::array({static_cast<double>(s.t_us) / 1000.0});
@@ -358,9 +359,14 @@ json LiveSession::state_frame(bool* pointer_answered) {
         for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.position[a]));
         rows.push_back(row);
         last_sample_ = s.seq;
+        const int64_t offset = s.host_us - s.t_us;
+        if (!min_offset_us_ || offset < *min_offset_us_) min_offset_us_ = offset;
         if (!pointer_.answered && !force_seen_us && s.host_us >= applied_us) {
             for (int a = 0; a < s.axis_count; ++a) {
-                if (std::fabs(s.force[a] - pointer_.force[a]) > 20) force_seen_us = s.host_us;
+                if (std::fabs(s.force[a] - pointer_.force[a]) > 20) {
+                    force_seen_us = s.host_us;
+                    force_seen_transit_us = offset - *min_offset_us_;
+                }
             }
         }
     }
@@ -395,6 +401,7 @@ json LiveSession::state_frame(bool* pointer_answered) {
                                  {"built_wall_us", wall_us(built)},
                                  {"apply_us", us_between(pointer_.read, pointer_.applied)},
                                  {"device_us", static_cast<double>(*force_seen_us - applied_us)},
+                                 {"transit_us", static_cast<double>(force_seen_transit_us)},
                                  {"frame_us", static_cast<double>(steady_us(built) - *force_seen_us)}};
     }
     if (pointer_answered) *pointer_answered = force_seen_us.has_value();

@@ -110,6 +110,11 @@ private:
         bool answered = true;         // a frame showed its force change
     };
     PointerTrace pointer_;
+    // The smallest (sampler time - device time) seen: a report's transit from its tick to
+    // the sampler is its own (sampler - device) less this (the clocks' offset plus the
+    // fastest transit), which splits the device hop into the device's loop and the way
+    // back (pointer_hops.transit_us).
+    std::optional<int64_t> min_offset_us_;
     nlohmann::json pointer_written_;  // the answering frame's write, for the next frame
     std::chrono::steady_clock::time_point effect_states_at_{};  // when last_effect_states_ was read
     nlohmann::json last_effect_states_ = nlohmann::json::array();

@@ -51,7 +51,7 @@ await sleep(300);
 
 const total = [];
 const server = [];
-const hops = { apply: [], device: [], frame: [] };
+const hops = { apply: [], device: [], transit: [], frame: [] };
 for (let i = 1; i <= moves; ++i) {
   const before = last.force[0];
   const t0 = performance.now();
@@ -61,6 +61,7 @@ for (let i = 1; i <= moves; ++i) {
     if (m.pointer_hops?.seq === i) {
       hops.apply.push(m.pointer_hops.apply_us / 1000);
       hops.device.push(m.pointer_hops.device_us / 1000);
+      hops.transit.push(m.pointer_hops.transit_us / 1000);
       hops.frame.push(m.pointer_hops.frame_us / 1000);
     }
     if (m.pointer_seq >= i && Math.abs(m.force[0] - before) > 20) {
@@ -78,7 +79,7 @@ const q = (list, p) => {
 console.log(`pointer message -> frame with the new force (n=${moves}): client p50=${q(total, 0.5)} ms ` +
   `p99=${q(total, 0.99)} ms max=${q(total, 1)} ms; server p50=${q(server, 0.5)} ms p99=${q(server, 0.99)} ms ` +
   `max=${q(server, 1)} ms; hops p50/p99: apply ${q(hops.apply, 0.5)}/${q(hops.apply, 0.99)}, ` +
-  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)}, frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
+  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)} (of it transit ${q(hops.transit, 0.5)}/${q(hops.transit, 0.99)}), frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
   `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
 let missing = 0;
 const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 3 ms

@@ -75,7 +75,8 @@ export const schema = {
       pointer_age_us: { type: 'number' },
       // on the frame that first shows the newest pointer message's force change: its hops
       // through the server (seq, read_wall_us and built_wall_us on the wall clock, apply_us
-      // read -> hand target set, device_us -> the first report with the new force,
+      // read -> hand target set, device_us -> the first report with the new force (transit_us of it: from
+      // that report's device tick to the sampler, less the fastest such transit),
       // frame_us -> this frame built); docs/studio.md, "Latency"
       pointer_hops: { type: 'object', optional: true },
       // that frame's write: seq, ahead (messages queued before it), write_us (queued -> written)

@@ -37,6 +37,7 @@ export interface LatencySample {
   sendToRead?: number;
   apply?: number;
   device?: number;
+  transit?: number;
   frame?: number;
   builtToArrive?: number;
   write?: number;
@@ -48,6 +49,7 @@ export interface PointerHops {
   built_wall_us: number;
   apply_us: number;
   device_us: number;
+  transit_us: number;
   frame_us: number;
 }
 export interface PointerWritten {
@@ -182,6 +184,7 @@ export class Pad {
           sample.sendToRead = (p.hops.read_wall_us - wall(p.sent)) / 1000;
           sample.apply = p.hops.apply_us / 1000;
           sample.device = p.hops.device_us / 1000;
+          sample.transit = p.hops.transit_us / 1000;
           sample.frame = p.hops.frame_us / 1000;
           sample.builtToArrive = (wall(p.arrived) - p.hops.built_wall_us) / 1000;
         }
