@@ -792,7 +792,9 @@ struct DeviceSession::Impl {
             // sends it alone to change a level, and a host streams a force through it
             // (host emulation). So on a committed block with nothing else pending, the
             // level is an update of its own, not part of a transaction.
-            if (b->is_committed && b->shadow == b->committed) return apply_level(r, *b);
+            if (b->type == EffectType::constant && b->is_committed && b->shadow == b->committed) {
+                return apply_level(r, *b);
+            }
         }
         detail::apply_type_block(protocol::AnyReport{r}, *b);
         answer_now(status_entry(r.sequence, id, r.block));
