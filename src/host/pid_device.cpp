@@ -3,9 +3,10 @@
 //
 // Design. The caller's thread sends and, for the two gets a PID host makes (PID Block Load
 // after Create New Effect, PID Pool), waits on a condition variable for the reply the I/O
-// thread files. The I/O thread is the only reader of the connection: it files replies and
-// drops input reports (a PID device streams its joystick state; this class does not read
-// it). A device that goes away wakes every wait with the transport's reason.
+// thread files. The I/O thread is the only reader of the connection: it files replies and,
+// once host emulation runs, renders each Input report and sends the force
+// (emulation/pid_emulation.hpp); otherwise it drops input reports. Both threads send, under
+// send_mu. A device that goes away wakes every wait with the transport's reason.
 #include "feel/host/pid_device.hpp"
 
 #include <atomic>
@@ -13,13 +14,16 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "descriptor_check.hpp"
+#include "emulation/pid_emulation.hpp"
 #include "feel/effect_validation.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/pid_effect_reports.hpp"
 #include "feel/transport/transport.hpp"
+#include "host_errors.hpp"
 
 namespace feel::host {
 
@@ -49,6 +53,13 @@ struct PidDeviceCore {
     int wanted_id = -1;
     std::optional<std::vector<uint8_t>> reply;
     std::map<uint16_t, EffectParams> effects;
+    std::shared_ptr<emulation::PidEmulation> emulation;  // host emulation, once its link exists
+    std::set<uint16_t> link_blocks;                      // the link's Constant Force effects
+    uint16_t next_handle = PidDevice::kHostHandleBase;
+
+    std::mutex send_mu;       // both threads send
+    std::mutex emulation_mu;  // one link set-up at a time
+    PidDevice::HostClock clock;
 
     std::thread io;
     std::atomic<bool> stopping{false};
@@ -57,23 +68,76 @@ struct PidDeviceCore {
         io = std::thread([this] { run(); });
     }
 
+    std::shared_ptr<emulation::PidEmulation> emulation_now() {
+        std::lock_guard lock(mu);
+        return emulation;
+    }
+
+    // Files a reply, or renders an Input report. False when the connection is lost to
+    // another host.
+    bool handle(Frame& f, emulation::PidEmulation* em, bool& rendered) {
+        if (f.kind == FrameKind::busy) {
+            mark_gone("the device " + address + " is in use by another host");
+            return false;
+        }
+        if (f.kind == FrameKind::input_report) {
+            protocol::pid::JoystickReading reading;
+            if (em != nullptr && protocol::pid::read_joystick(layout, f.payload, reading)) {
+                std::lock_guard lock(em->mu);
+                em->render(clock(), reading);
+                rendered = true;
+            }
+            return true;
+        }
+        if (f.kind != FrameKind::feature_reply && f.kind != FrameKind::descriptor_reply) return true;
+        std::lock_guard lock(mu);
+        const bool id_matches = f.kind == FrameKind::descriptor_reply || (!f.payload.empty() && f.payload[0] == wanted_id);
+        if (f.kind == wanted_kind && id_matches) {
+            reply = std::move(f.payload);
+            cv.notify_all();
+        }
+        return true;
+    }
+
+    // The force's Set Constant Force reports, fire and forget.
+    void send_due(emulation::PidEmulation& em) {
+        std::vector<std::pair<uint16_t, int32_t>> due;
+        {
+            std::lock_guard lock(em.mu);
+            em.take_due(due);
+        }
+        for (const auto& [block, level] : due) {
+            std::string error;
+            std::optional<std::vector<uint8_t>> bytes = protocol::pid::set_constant_force(layout, block, level, error);
+            if (bytes) (void)send(FrameKind::output_report, std::move(*bytes), "host emulation: Set Constant Force");
+        }
+    }
+
     void run() noexcept {
         while (!stopping) {
             try {
-                std::optional<Frame> f = connection->receive(std::chrono::milliseconds(50));
-                if (!f) continue;
-                if (f->kind == FrameKind::busy) {
-                    mark_gone("the device " + address + " is in use by another host");
-                    return;
+                const std::shared_ptr<emulation::PidEmulation> em = emulation_now();
+                // While emulating, wake often enough to notice a device that went quiet.
+                std::optional<Frame> f = connection->receive(std::chrono::milliseconds(em ? 1 : 50));
+                if (!f) {
+                    bool stalled = false;
+                    if (em) {
+                        std::lock_guard lock(em->mu);
+                        stalled = em->render_if_stalled(clock());
+                    }
+                    if (stalled) send_due(*em);
+                    continue;
                 }
-                if (f->kind != FrameKind::feature_reply && f->kind != FrameKind::descriptor_reply) continue;
-                std::lock_guard lock(mu);
-                const bool id_matches = f->kind == FrameKind::descriptor_reply ||
-                                        (!f->payload.empty() && f->payload[0] == wanted_id);
-                if (f->kind == wanted_kind && id_matches) {
-                    reply = std::move(f->payload);
-                    cv.notify_all();
+                bool rendered = false;
+                if (!handle(*f, em.get(), rendered)) return;
+                // Everything already queued is read before the force goes: the newest force,
+                // never a backlog.
+                while (rendered) {
+                    std::optional<Frame> more = connection->receive(std::chrono::milliseconds(0));
+                    if (!more) break;
+                    if (!handle(*more, em.get(), rendered)) return;
                 }
+                if (rendered) send_due(*em);
             } catch (const std::exception& e) {
                 mark_gone(std::string("the device is gone: ") + e.what());
                 return;
@@ -100,6 +164,7 @@ struct PidDeviceCore {
             if (!connected) return Status::failure(ErrorKind::disconnected, what + ": " + gone_reason);
         }
         try {
+            std::lock_guard lock(send_mu);
             connection->send(Frame{kind, std::move(bytes)});
             return Status::success();
         } catch (const transport::TransportError& e) {
@@ -193,8 +258,45 @@ Result<PidDevice> PidDevice::open(std::string_view address, const OpenOptions& o
 
 Result<PidDevice> PidDevice::attach(std::unique_ptr<transport::Connection> connection, std::string name,
                                     const OpenOptions& options) {
+    const auto epoch = std::chrono::steady_clock::now();
+    return attach(std::move(connection), std::move(name), options, [epoch] {
+        return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - epoch).count();
+    });
+}
+
+namespace {
+
+// What host emulation can do on a device of this layout (PidCaps::emulated_types).
+void describe_emulation(const PidLayout& layout, PidCaps& caps) {
+    // (caps.max_effects and caps.axes are already read.)
+    caps.input_axes = layout.input_axes();
+    bool force_axis = false;
+    for (const Axis a : caps.input_axes) force_axis |= std::find(caps.axes.begin(), caps.axes.end(), a) != caps.axes.end();
+    if (caps.input_axes.empty()) {
+        caps.emulation_problem = "its descriptor declares no Input report with a position (Generic Desktop X..Rz), "
+                                 "so the host has nothing to render on";
+    } else if (!caps.supports(EffectType::constant)) {
+        caps.emulation_problem = "it does not play Constant Force, the effect the host streams its force through";
+    } else if (!force_axis) {
+        caps.emulation_problem = "no axis both reports a position and takes a force (Set Effect's Axes Enable)";
+    } else if (caps.max_effects >= PidDevice::kHostHandleBase) {
+        // Its blocks (at most the pool's Simultaneous Effects Max) would reach the host's handles.
+        caps.emulation_problem = "it may hold " + std::to_string(caps.max_effects) +
+                                 " effects, and its blocks would reach the host's handles (" +
+                                 std::to_string(PidDevice::kHostHandleBase) + ")";
+    } else {
+        caps.emulated_types = kAllEffectTypes & ~caps.supported_types;
+    }
+}
+
+}  // namespace
+
+Result<PidDevice> PidDevice::attach(std::unique_ptr<transport::Connection> connection, std::string name,
+                                    const OpenOptions& options, HostClock clock) {
     if (!connection) return Status::failure(ErrorKind::invalid_parameter, "open " + name + ": no connection");
+    if (!clock) return Status::failure(ErrorKind::invalid_parameter, "open " + name + ": no clock");
     auto core = std::make_shared<PidDeviceCore>(std::move(connection), name, options);
+    core->clock = std::move(clock);
     core->start();
     const std::string what = "open " + name;
     std::lock_guard call(core->call_mu);
@@ -222,6 +324,9 @@ Result<PidDevice> PidDevice::attach(std::unique_ptr<transport::Connection> conne
         if (p.ram_pool_size) caps.pool_bytes = static_cast<int32_t>(std::min<int64_t>(*p.ram_pool_size, INT32_MAX));
         if (p.device_managed_pool) caps.device_managed_pool = *p.device_managed_pool;
     }
+    caps.profile = options.emulation_profile;
+    if (caps.profile.empty() && name.rfind("sim:", 0) == 0) caps.profile = name.substr(4);
+    describe_emulation(core->layout, caps);
     return PidDevice(std::move(core));
 }
 
@@ -238,9 +343,12 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
     const std::string what = "create " + std::string(effect_type_name(params.type));
     if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
     if (!core_->caps.supports(params.type)) {
-        return Status::failure(ErrorKind::not_supported, what + ": the device at " + core_->address +
-                                                             " does not play " + std::string(effect_type_name(params.type)) +
-                                                             " (its descriptor's Effect Type does not list it)");
+        if ((core_->caps.emulated_types & effect_type_bit(params.type)) != 0) return create_emulated(params, what);
+        return Status::failure(ErrorKind::not_supported,
+                               what + ": the device at " + core_->address + " does not play " +
+                                   std::string(effect_type_name(params.type)) +
+                                   " (its descriptor's Effect Type does not list it), and the host cannot render it "
+                                   "there: " + core_->caps.emulation_problem);
     }
     std::string error;
     // Everything is encoded before the device is asked for a block, so that a refusal
@@ -281,6 +389,13 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
 Status PidDevice::set_effect(uint16_t block, const EffectParams& params) {
     const std::string what = "set effect " + std::to_string(block);
     if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    if (emulated(block)) {
+        Result<HostEffect> h = host_effect(block, what);
+        if (!h) return h.status();
+        if (Status s = check_emulable(params, *h->em, what); !s.ok()) return s;
+        std::lock_guard lock(h->em->mu);
+        return status_from_error(h->em->renderer.update(h->id, params, effect_field::kAll, false), what);
+    }
     std::lock_guard call(core_->call_mu);
     {
         std::lock_guard lock(core_->mu);
@@ -306,6 +421,17 @@ Status PidDevice::set_effect(uint16_t block, const EffectParams& params) {
 
 Status PidDevice::start(uint16_t block, int32_t iterations, bool solo) {
     const std::string what = "start effect " + std::to_string(block);
+    if (emulated(block)) {
+        Result<HostEffect> h = host_effect(block, what);
+        if (!h) return h.status();
+        if (solo) {
+            // Solo stops every other effect of this host, the device's too (not the link's).
+            for (const uint16_t other : effects())
+                if (!emulated(other)) (void)stop(other);
+        }
+        std::lock_guard lock(h->em->mu);
+        return status_from_error(h->em->renderer.start(h->id, iterations, solo), what);
+    }
     int32_t loops = iterations;
     {
         std::lock_guard lock(core_->mu);
@@ -328,6 +454,12 @@ Status PidDevice::start(uint16_t block, int32_t iterations, bool solo) {
 
 Status PidDevice::stop(uint16_t block) {
     const std::string what = "stop effect " + std::to_string(block);
+    if (emulated(block)) {
+        Result<HostEffect> h = host_effect(block, what);
+        if (!h) return h.status();
+        std::lock_guard lock(h->em->mu);
+        return status_from_error(h->em->renderer.stop(h->id), what);
+    }
     std::string error;
     std::optional<std::vector<uint8_t>> op =
         protocol::pid::effect_operation(core_->layout, block, protocol::pid::Operation::stop, 1, error);
@@ -338,8 +470,19 @@ Status PidDevice::stop(uint16_t block) {
 
 Status PidDevice::free_effect(uint16_t block) {
     const std::string what = "free effect " + std::to_string(block);
+    if (emulated(block)) {
+        Result<HostEffect> h = host_effect(block, what);
+        if (!h) return h.status();
+        std::lock_guard lock(h->em->mu);
+        h->em->handles.erase(block);
+        return status_from_error(h->em->renderer.destroy(h->id), what);
+    }
     {
         std::lock_guard lock(core_->mu);
+        if (core_->link_blocks.count(block) != 0) {
+            return Status::failure(ErrorKind::invalid_handle,
+                                   what + ": block " + std::to_string(block) + " is host emulation's force link");
+        }
         if (core_->effects.erase(block) == 0)
             return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
     }
@@ -368,9 +511,34 @@ Status PidDevice::command(runtime::DeviceControl control) {
     if (!report) return encode_error("device control", error, ErrorKind::not_supported);
     std::lock_guard call(core_->call_mu);
     if (Status s = core_->send(FrameKind::output_report, std::move(*report), "device control"); !s.ok()) return s;
+    std::shared_ptr<emulation::PidEmulation> em = core_->emulation_now();
     if (control == runtime::DeviceControl::reset) {
+        // A reset frees every block (PID 1.0, DC Device Reset): the link's too, so the
+        // host's effects go with them (a new one sets the link up again).
         std::lock_guard lock(core_->mu);
-        core_->effects.clear();  // a reset frees every block (PID 1.0, DC Device Reset)
+        core_->effects.clear();
+        core_->link_blocks.clear();
+        core_->emulation.reset();
+        return Status::success();
+    }
+    if (!em) return Status::success();
+    {
+        std::lock_guard lock(em->mu);
+        if (control == runtime::DeviceControl::stop_all) em->renderer.stop_all();
+        if (control == runtime::DeviceControl::pause) em->renderer.pause();
+        if (control == runtime::DeviceControl::resume) em->renderer.resume();
+    }
+    if (control == runtime::DeviceControl::stop_all) {
+        // Stop All stopped the link's Constant Force effects too: they carry on at 0.
+        for (const emulation::PidEmulation::LinkAxis& l : em->link()) {
+            std::optional<std::vector<uint8_t>> op = protocol::pid::effect_operation(
+                core_->layout, l.block, protocol::pid::Operation::start, kInfiniteIterations, error);
+            if (!op) return encode_error("device control: restarting host emulation's force link", error);
+            if (Status s = core_->send(FrameKind::output_report, std::move(*op), "device control: restarting the force link");
+                !s.ok()) {
+                return s;
+            }
+        }
     }
     return Status::success();
 }
@@ -385,15 +553,136 @@ Result<protocol::pid::Pool> PidDevice::pool() {
 }
 
 std::vector<uint16_t> PidDevice::effects() const {
-    std::lock_guard lock(core_->mu);
+    std::shared_ptr<emulation::PidEmulation> em;
     std::vector<uint16_t> out;
-    for (const auto& [block, params] : core_->effects) out.push_back(block);
+    {
+        std::lock_guard lock(core_->mu);
+        for (const auto& [block, params] : core_->effects)
+            if (core_->link_blocks.count(block) == 0) out.push_back(block);
+        em = core_->emulation;
+    }
+    if (em) {
+        std::lock_guard lock(em->mu);
+        for (const auto& [handle, id] : em->handles) out.push_back(handle);
+    }
     return out;
+}
+
+Result<EffectStatusInfo> PidDevice::status(uint16_t handle) {
+    const std::string what = "status of effect " + std::to_string(handle);
+    if (!emulated(handle)) {
+        return Status::failure(ErrorKind::not_supported,
+                               what + ": a standard PID device reports no per-effect status to this host "
+                                      "(only host-rendered effects have one)");
+    }
+    Result<HostEffect> h = host_effect(handle, what);
+    if (!h) return h.status();
+    std::lock_guard lock(h->em->mu);
+    return emulation::emulated_status(h->em->renderer.status(h->id));
+}
+
+PidEmulationStats PidDevice::emulation_stats() const {
+    PidEmulationStats out;
+    const std::shared_ptr<emulation::PidEmulation> em = core_->emulation_now();
+    if (!em) return out;
+    std::lock_guard lock(em->mu);
+    out.active = true;
+    out.updates = em->updates;
+    out.levels_sent = em->levels_sent;
+    for (const emulation::PidEmulation::LinkAxis& l : em->link()) out.link_blocks.push_back(l.block);
+    return out;
+}
+
+Result<PidDevice::HostEffect> PidDevice::host_effect(uint16_t handle, const std::string& what) const {
+    std::shared_ptr<emulation::PidEmulation> em = core_->emulation_now();
+    if (em) {
+        std::lock_guard lock(em->mu);
+        auto it = em->handles.find(handle);
+        if (it != em->handles.end()) return HostEffect{em, it->second};
+    }
+    return Status::failure(ErrorKind::invalid_handle,
+                           what + ": this host renders no effect with handle " + std::to_string(handle) +
+                               " (freed, or freed by a device reset)");
+}
+
+Status PidDevice::check_emulable(const EffectParams& params, const emulation::PidEmulation& em, const std::string& what) {
+    if (params.trigger.kind != TriggerKind::none) {
+        return Status::failure(ErrorKind::not_supported,
+                               what + ": a trigger on a host-rendered effect of a standard PID device is not mapped "
+                                      "(start it from the host on the button instead)");
+    }
+    for (int32_t i = 0; i < params.axis_count; ++i) {
+        if (!em.links(params.axes[i])) {
+            return Status::failure(ErrorKind::invalid_parameter,
+                                   what + ": axis " + std::string(axis_name(params.axes[i])) +
+                                       " both reports no position or takes no force on " + core_->address +
+                                       " (host emulation renders on the axes that do both)");
+        }
+    }
+    return Status::success();
+}
+
+Result<std::shared_ptr<emulation::PidEmulation>> PidDevice::ensure_link(const std::string& what) {
+    std::lock_guard setup(core_->emulation_mu);
+    if (std::shared_ptr<emulation::PidEmulation> em = core_->emulation_now()) return em;
+    std::vector<emulation::PidEmulation::LinkAxis> link;
+    const PidCaps& caps = core_->caps;
+    for (const Axis a : caps.input_axes) {
+        if (std::find(caps.axes.begin(), caps.axes.end(), a) == caps.axes.end()) continue;
+        // One Constant Force along this axis alone, endless, level 0 until the first update.
+        EffectParams p;
+        p.type = EffectType::constant;
+        p.duration_us = kInfiniteUs;
+        p.axis_count = 1;
+        p.axes[0] = a;
+        p.direction.kind = DirectionKind::none;
+        p.constant.magnitude = 0;
+        Result<uint16_t> block = create_effect(p);
+        if (block) {
+            Status s = start(*block, kInfiniteIterations);
+            if (!s.ok()) block = s;
+        }
+        if (!block) {
+            for (const emulation::PidEmulation::LinkAxis& made : link) (void)free_effect(made.block);
+            return Status::failure(block.status().kind, what + ": setting up host emulation's force link: " +
+                                                            block.status().message);
+        }
+        link.push_back({a, *block, 0});
+    }
+    auto em = std::make_shared<emulation::PidEmulation>(emulation::pid_engine_config(caps.profile, core_->layout),
+                                                        std::move(link));
+    std::lock_guard lock(core_->mu);
+    for (const emulation::PidEmulation::LinkAxis& l : em->link()) core_->link_blocks.insert(l.block);
+    core_->emulation = em;
+    return em;
+}
+
+Result<uint16_t> PidDevice::create_emulated(const EffectParams& params, const std::string& what) {
+    Result<std::shared_ptr<emulation::PidEmulation>> em = ensure_link(what);
+    if (!em) return em.status();
+    emulation::PidEmulation& e = *em.value();
+    if (Status s = check_emulable(params, e, what); !s.ok()) return s;
+    std::lock_guard lock(e.mu);
+    std::lock_guard core_lock(core_->mu);
+    if (core_->next_handle == 0xFFFF)
+        return Status::failure(ErrorKind::device_full, what + ": the host's effect handles are used up (close and open again)");
+    const CreateResult r = e.renderer.create(params);
+    if (!r.error.ok()) return status_from_error(r.error, what + " (host emulation)");
+    const uint16_t handle = core_->next_handle++;
+    e.handles[handle] = r.id;
+    return handle;
 }
 
 void PidDevice::close() {
     if (!core_) return;
-    for (const uint16_t block : effects()) (void)free_effect(block);
+    std::vector<uint16_t> blocks;
+    {
+        std::lock_guard lock(core_->mu);
+        for (const auto& [block, params] : core_->effects) blocks.push_back(block);
+        core_->link_blocks.clear();
+        core_->emulation.reset();  // nothing more is rendered or sent
+    }
+    for (const uint16_t block : blocks) (void)free_effect(block);
     core_->close();
 }
 

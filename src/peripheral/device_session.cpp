@@ -787,8 +787,36 @@ struct DeviceSession::Impl {
                 return Step::done;
             }
         }
+        if constexpr (std::is_same_v<R, protocol::SetConstantForceReport>) {
+            // A standard PID device plays a new Constant Force level at once: hid-pidff
+            // sends it alone to change a level, and a host streams a force through it
+            // (host emulation). So on a committed block with nothing else pending, the
+            // level is an update of its own, not part of a transaction.
+            if (b->type == EffectType::constant && b->is_committed && b->shadow == b->committed) {
+                return apply_level(r, *b);
+            }
+        }
         detail::apply_type_block(protocol::AnyReport{r}, *b);
         answer_now(status_entry(r.sequence, id, r.block));
+        return Step::done;
+    }
+
+    Step apply_level(const protocol::SetConstantForceReport& r, detail::Block& b) {
+        if (fence_in_flight) return Step::blocked;
+        EffectParams next = b.committed;
+        next.constant.magnitude = r.magnitude;
+        uint32_t runtime_sequence = 0;
+        if (!send(runtime::make_update(0, b.effect, next, effect_field::kTypeSpecific, false), runtime_sequence)) {
+            return Step::blocked;
+        }
+        // The engine takes a valid level on a live effect; should the effect have ended
+        // meanwhile, the ack's error goes to the host and the next commit sets it anew.
+        b.committed = next;
+        b.shadow = next;
+        Pending p = status_entry(r.sequence, ReportId::set_constant_force, r.block);
+        p.waiting = true;
+        p.runtime_sequence = runtime_sequence;
+        push_waiting(std::move(p));
         return Step::done;
     }
 

@@ -164,11 +164,13 @@ std::vector<OutgoingReport> effect_reports(const PidLayout& layout, uint16_t blo
         if (!w.ok()) return writer_error(w, "periodic");
         out.push_back({PidReport::set_periodic, w.bytes()});
     } else if (p.type == EffectType::constant) {
-        PidReportWriter w(layout, PidReport::set_constant_force);
-        w.set(u::kEffectBlockIndex, block, Scale::raw);
-        w.set(u::kMagnitude, p.constant.magnitude, Scale::level);
-        if (!w.ok()) return writer_error(w, "constant");
-        out.push_back({PidReport::set_constant_force, w.bytes()});
+        std::string why;
+        std::optional<std::vector<uint8_t>> bytes = set_constant_force(layout, block, p.constant.magnitude, why);
+        if (!bytes) {
+            error = "constant: " + why;
+            return {};
+        }
+        out.push_back({PidReport::set_constant_force, std::move(*bytes)});
     } else if (p.type == EffectType::ramp) {
         PidReportWriter w(layout, PidReport::set_ramp_force);
         w.set(u::kEffectBlockIndex, block, Scale::raw);
@@ -236,6 +238,14 @@ std::optional<std::vector<uint8_t>> effect_operation(const PidLayout& layout, ui
             w.set(u::kLoopCount, loop_count, Scale::raw, loop_count != 1);
         }
     }
+    return finish(w, error);
+}
+
+std::optional<std::vector<uint8_t>> set_constant_force(const PidLayout& layout, uint16_t block, int32_t magnitude,
+                                                       std::string& error) {
+    PidReportWriter w(layout, PidReport::set_constant_force);
+    w.set(u::kEffectBlockIndex, block, Scale::raw);
+    w.set(u::kMagnitude, magnitude, Scale::level);
     return finish(w, error);
 }
 

@@ -119,6 +119,44 @@ uint64_t read_bits(std::span<const uint8_t> bytes, std::size_t bit, uint32_t siz
 // buffers, 0 for an unnumbered device, as hidraw wants it).
 constexpr std::size_t kIdBits = 8;
 
+// The first Input report with a Generic Desktop axis, mapped (JoystickInputLayout).
+JoystickInputLayout map_joystick(const hid::ParsedDescriptor& d) {
+    JoystickInputLayout out;
+    for (const hid::DescriptorReport& r : d.reports) {
+        if (r.kind != MainItemKind::input) continue;
+        JoystickInputLayout j;
+        j.id = r.id;
+        j.bytes = 1 + (r.bit_length + 7) / 8;
+        j.fields = r.fields;
+        for (std::size_t i = 0; i < r.fields.size(); ++i) {
+            const DescriptorField& f = r.fields[i];
+            if (f.is_constant() || !f.is_variable()) continue;
+            for (uint32_t k = 0; k < f.report_count; ++k) {
+                const uint32_t use = f.usage_of(k);
+                if (use >= usage::gd::kX && use <= usage::gd::kRz) {
+                    j.axes.push_back({use, i, k});
+                } else if (use == usage::gd::kHatSwitch && j.hats.size() < 4) {
+                    j.hats.push_back({use, i, k});
+                } else if (usage::page_of(use) == usage::kPageButton && usage::id_of(use) >= 1 &&
+                           usage::id_of(use) <= 32 && f.report_size == 1) {
+                    j.buttons.push_back({use, i, k});
+                }
+            }
+        }
+        if (j.axes.empty()) continue;
+        j.present = true;
+        return j;
+    }
+    return out;
+}
+
+int64_t read_element(const DescriptorField& f, uint32_t element, std::span<const uint8_t> bytes) {
+    const uint32_t size = std::min<uint32_t>(f.report_size, 63);
+    uint64_t raw = read_bits(bytes, kIdBits + f.bit_offset + static_cast<std::size_t>(element) * f.report_size, size);
+    if (f.logical_min < 0 && size > 0 && ((raw >> (size - 1)) & 1u)) raw |= ~uint64_t{0} << size;  // sign-extend
+    return static_cast<int64_t>(raw);
+}
+
 }  // namespace
 
 std::string_view pid_report_name(PidReport report) noexcept { return kReports[static_cast<int>(report)].name; }
@@ -145,6 +183,7 @@ std::optional<PidLayout> PidLayout::map(const hid::ParsedDescriptor& d, std::str
     }
     PidLayout out;
     out.uses_report_ids_ = d.uses_report_ids;
+    out.joystick_ = map_joystick(d);
     for (const ReportKey& key : kReports) {
         ReportLayout& slot = out.reports_[static_cast<int>(key.report)];
         for (const hid::DescriptorReport& r : d.reports) {
@@ -353,6 +392,35 @@ std::optional<int64_t> read_field(const PidLayout& layout, PidReport report, std
     uint64_t raw = read_bits(bytes, at, size);
     if (f.logical_min < 0 && size > 0 && ((raw >> (size - 1)) & 1u)) raw |= ~uint64_t{0} << size;  // sign-extend
     return static_cast<int64_t>(raw);
+}
+
+std::vector<Axis> PidLayout::input_axes() const {
+    std::vector<Axis> out;
+    for (const JoystickInputLayout::Place& p : joystick_.axes) out.push_back(static_cast<Axis>(p.usage - usage::gd::kX));
+    return out;
+}
+
+bool read_joystick(const PidLayout& layout, std::span<const uint8_t> bytes, JoystickReading& out) noexcept {
+    const JoystickInputLayout& j = layout.joystick_input();
+    if (!j.present || bytes.size() < j.bytes || bytes[0] != j.id) return false;
+    out = JoystickReading{};
+    for (const JoystickInputLayout::Place& p : j.axes) {
+        const DescriptorField& f = j.fields[p.field];
+        const double span = static_cast<double>(f.logical_max - f.logical_min);
+        const double middle = (static_cast<double>(f.logical_max) + static_cast<double>(f.logical_min)) / 2;
+        const double v = static_cast<double>(read_element(f, p.element, bytes));
+        const double normalized = span > 0 ? (v - middle) * (2.0 * kFullScale) / span : 0.0;
+        out.position[p.usage - usage::gd::kX] = static_cast<float>(std::clamp(normalized, -1.0 * kFullScale, 1.0 * kFullScale));
+    }
+    for (const JoystickInputLayout::Place& p : j.buttons) {
+        if (read_element(j.fields[p.field], p.element, bytes) != 0) out.buttons |= 1u << (usage::id_of(p.usage) - 1);
+    }
+    for (std::size_t h = 0; h < j.hats.size(); ++h) {
+        const DescriptorField& f = j.fields[j.hats[h].field];
+        const int64_t v = read_element(f, j.hats[h].element, bytes);
+        if (v >= f.logical_min && v <= f.logical_max) out.hats |= 1u << h;
+    }
+    return true;
 }
 
 std::optional<uint32_t> read_selection(const PidLayout& layout, PidReport report, std::span<const uint8_t> bytes,

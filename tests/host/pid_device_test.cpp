@@ -172,9 +172,6 @@ TEST(PidDevice, RefusesWhatTheDeviceCannotPlayBeforeSendingAnything) {
     Result<PidDevice> device = PidDevice::attach(relay.host_end(), "sim:iforce2");
     ASSERT_TRUE(device) << device.status().message;
     relay.clear();
-    Result<uint16_t> wall = device->create_effect(test::valid_effect(EffectType::axis_wall));
-    ASSERT_FALSE(wall);
-    EXPECT_EQ(wall.status().kind, ErrorKind::not_supported);
     EffectParams bad = test::valid_effect(EffectType::constant);
     bad.constant.magnitude = 20000;
     Result<uint16_t> refused = device->create_effect(bad);

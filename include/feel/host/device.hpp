@@ -291,6 +291,10 @@ struct OpenOptions {
     // sim: only, peripheral::PeripheralOptions::pid_effects_only: the in-process device
     // plays only HID PID 1.0's effect types, and the host renders the others (emulated).
     bool sim_pid_effects_only = false;
+    // PidDevice only: the feel profile whose mechanism (damping, sensor step, wall
+    // stiffness) host emulation's engine assumes; empty: the sim: address's profile, else
+    // the engine's defaults. A real wheel's figures are not known to the host.
+    std::string emulation_profile;
 };
 
 // An open device. A shared handle: copies refer to the same device, which closes when the

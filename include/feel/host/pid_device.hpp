@@ -22,12 +22,22 @@
 // checked before it is sent (validate_effect, then the device's field ranges), and a
 // refused value is an error naming the field and what the device can hold.
 //
+// Host emulation (§1.2.c). A type the device does not play (walls, barriers, textures,
+// sweeps, smart pops, Dynamics: feel's types PID has no usage for, and PID's own that the
+// descriptor leaves out) is rendered by feel's engine on the host, on the positions the
+// device's Input report carries, and streamed to the device as the level of a Constant
+// Force effect per axis (src/host/emulation/pid_emulation.hpp). Its handle is
+// kHostHandleBase or above, emulated(handle) is true and status(handle) says "emulated"
+// while it plays. docs/real-devices.md, "Host emulation", has the limits.
+//
 // Threads. One thread at a time (calls are serialized inside). An I/O thread reads the
-// device's input reports and hands feature replies to the waiting call.
+// device's input reports, hands feature replies to the waiting call, and runs host
+// emulation's updates.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -44,6 +54,9 @@
 namespace feel::host {
 
 struct PidDeviceCore;  // private
+namespace emulation {
+class PidEmulation;
+}
 
 struct PidCaps {
     std::string address;
@@ -55,12 +68,35 @@ struct PidCaps {
     int32_t pool_bytes = 0;       // PID Pool's RAM Pool Size, bytes; 0 when the device does not say
     bool device_managed_pool = true;
     bool has_pool_report = false;
+    std::vector<Axis> input_axes;  // the axes the Input report carries positions of
+    // The types the host renders here (host emulation): every type the device does not
+    // play, when it can (positions in its Input report, a Constant Force to stream through,
+    // an axis both report and force); else 0 and `emulation_problem` says why.
+    uint64_t emulated_types = 0;
+    std::string emulation_problem;
+    // The feel profile whose mechanism the host's engine assumes (sim:PROFILE, or a HID name
+    // "feel PROFILE"); empty: the engine's defaults.
+    std::string profile;
 
     [[nodiscard]] bool supports(EffectType t) const noexcept { return (supported_types & effect_type_bit(t)) != 0; }
 };
 
+// Host emulation's figures (PidDevice::emulation_stats()).
+struct PidEmulationStats {
+    bool active = false;        // the link's Constant Force effects exist
+    int64_t updates = 0;        // renders of the host's engine (one per Input report, or stall)
+    int64_t levels_sent = 0;    // Set Constant Force reports sent
+    std::vector<uint16_t> link_blocks;  // the device's Constant Force effect per force axis
+};
+
 class PidDevice {
 public:
+    // Handles of host-rendered effects start here (device blocks are below it).
+    static constexpr uint16_t kHostHandleBase = 0x8000;
+    // The clock host emulation stamps updates with, µs (default: the steady clock). Tests
+    // give the simulated device's time.
+    using HostClock = std::function<int64_t()>;
+
     // Opens "hidraw:/dev/hidrawN", "usb:VID:PID[:SERIAL]", or any of Device::open's
     // addresses (sim:, unix:, tcp: — a feel device driven as a standard PID one). Reads the
     // descriptor and maps it, then reads PID Pool. Errors: invalid_parameter (bad address),
@@ -69,14 +105,18 @@ public:
     [[nodiscard]] static Result<PidDevice> open(std::string_view address, const OpenOptions& options = {});
     [[nodiscard]] static Result<PidDevice> attach(std::unique_ptr<transport::Connection> connection, std::string name,
                                                   const OpenOptions& options = {});
+    [[nodiscard]] static Result<PidDevice> attach(std::unique_ptr<transport::Connection> connection, std::string name,
+                                                  const OpenOptions& options, HostClock clock);
 
     [[nodiscard]] const PidCaps& capabilities() const noexcept;
     [[nodiscard]] const protocol::pid::PidLayout& layout() const noexcept;
     [[nodiscard]] std::string address() const;
 
     // Create New Effect, PID Block Load, then the effect's reports. Returns the device's
-    // effect block. not_supported for a type the device does not play; device_full when
-    // Block Load says full; invalid_parameter naming the field otherwise.
+    // effect block. A type the device does not play is rendered by the host (its handle is
+    // kHostHandleBase or above; the first one creates the force link's Constant Force
+    // effects); not_supported when the host cannot (capabilities().emulation_problem);
+    // device_full when Block Load says full; invalid_parameter naming the field otherwise.
     [[nodiscard]] Result<uint16_t> create_effect(const EffectParams& params);
     // Sends the effect's reports again with new parameters (the same type).
     Status set_effect(uint16_t block, const EffectParams& params);
@@ -88,8 +128,15 @@ public:
     Status set_gain(int32_t gain);                   // 0..10000
     Status command(runtime::DeviceControl control);  // PID Device Control
     [[nodiscard]] Result<protocol::pid::Pool> pool();
-    // The blocks this host created and has not freed.
+    // The blocks and host handles this host created and has not freed (not the force
+    // link's own Constant Force effects).
     [[nodiscard]] std::vector<uint16_t> effects() const;
+    // Whether `handle` is a host-rendered effect.
+    [[nodiscard]] bool emulated(uint16_t handle) const noexcept { return handle >= kHostHandleBase; }
+    // A host-rendered effect's status ("emulated" while it plays). A standard PID device
+    // tells a host nothing per effect: not_supported for a device block.
+    [[nodiscard]] Result<EffectStatusInfo> status(uint16_t handle);
+    [[nodiscard]] PidEmulationStats emulation_stats() const;
 
     [[nodiscard]] bool connected() const noexcept;
     // Frees this host's effects, closes the connection. Harmless twice.
@@ -97,6 +144,15 @@ public:
 
 private:
     explicit PidDevice(std::shared_ptr<PidDeviceCore> core) : core_(std::move(core)) {}
+    struct HostEffect {
+        std::shared_ptr<emulation::PidEmulation> em;
+        EffectId id{};
+    };
+    [[nodiscard]] Result<HostEffect> host_effect(uint16_t handle, const std::string& what) const;
+    [[nodiscard]] Status check_emulable(const EffectParams& params, const emulation::PidEmulation& em,
+                                        const std::string& what);
+    [[nodiscard]] Result<std::shared_ptr<emulation::PidEmulation>> ensure_link(const std::string& what);
+    [[nodiscard]] Result<uint16_t> create_emulated(const EffectParams& params, const std::string& what);
     std::shared_ptr<PidDeviceCore> core_;
 };
 

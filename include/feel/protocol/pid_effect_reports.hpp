@@ -46,6 +46,10 @@ enum class Operation : uint8_t { start, start_solo, stop };
 [[nodiscard]] std::optional<std::vector<uint8_t>> effect_operation(const PidLayout& layout, uint16_t block,
                                                                    Operation operation, int32_t loop_count,
                                                                    std::string& error);
+// Set Constant Force alone: a constant effect's level (−10000..10000), the report a host
+// that streams a force through a standard PID device rewrites each update.
+[[nodiscard]] std::optional<std::vector<uint8_t>> set_constant_force(const PidLayout& layout, uint16_t block,
+                                                                     int32_t magnitude, std::string& error);
 [[nodiscard]] std::optional<std::vector<uint8_t>> block_free(const PidLayout& layout, uint16_t block,
                                                              std::string& error);
 [[nodiscard]] std::optional<std::vector<uint8_t>> device_control(const PidLayout& layout,

@@ -88,6 +88,33 @@ struct EffectTypeEntry {
     std::string why_not;           // when !usable: what is missing
 };
 
+// The joystick's inputs in the device's own Input report (the first Input report with a
+// Generic Desktop axis X..Rz): where each axis, button and hat is. What a host emulation
+// layer reads the handle's positions from (a standard PID device reports them there).
+struct JoystickInputLayout {
+    bool present = false;
+    uint8_t id = 0;
+    std::size_t bytes = 0;  // with the ID byte
+    struct Place {
+        uint32_t usage = 0;      // Generic Desktop X..Rz, Button n, Hat Switch
+        std::size_t field = 0;   // index into fields
+        uint32_t element = 0;
+    };
+    std::vector<Place> axes, buttons, hats;  // in report order; buttons 1..32, hats 1..4 only
+    std::vector<hid::DescriptorField> fields;
+};
+
+// One Input report read in feel's units. position[axis_index(a)] for each of the layout's
+// axes: the logical value normalized onto ±10000, the middle of the logical range being 0
+// (feel's own −10000..10000 reads as is; a 0..1023 wheel's 511.5 is 0). buttons: bit n−1
+// for Button n; hats: bit h−1 when hat h is pushed (a value inside its logical range; the
+// null state, outside it, is centred).
+struct JoystickReading {
+    float position[kMaxAxes] = {};
+    uint32_t buttons = 0;
+    uint32_t hats = 0;
+};
+
 class PidLayout {
 public:
     // Maps a parsed descriptor. Returns std::nullopt with `error` naming what is missing
@@ -109,6 +136,10 @@ public:
     [[nodiscard]] int64_t max_block_index() const noexcept { return max_block_; }
     // The axes Set Effect's Axes Enable names (Generic Desktop X..Rz), in order.
     [[nodiscard]] const std::vector<Axis>& axes() const noexcept { return axes_; }
+    // The joystick's Input report (present false when the descriptor declares no axis input).
+    [[nodiscard]] const JoystickInputLayout& joystick_input() const noexcept { return joystick_; }
+    // The axes that report a position, in report order.
+    [[nodiscard]] std::vector<Axis> input_axes() const;
 
     // The place of `usage` in report r: a Var field's element whose usage it is, or the
     // Array field that lists it. `within`: only fields inside a collection of that usage
@@ -122,6 +153,7 @@ private:
     uint64_t supported_ = 0;
     int64_t max_block_ = 0;
     std::vector<Axis> axes_;
+    JoystickInputLayout joystick_;
 };
 
 // How a value is read in feel's units before it is scaled into a field.
@@ -167,6 +199,9 @@ private:
 // the selected usage. std::nullopt when the report lacks the field or is too short.
 [[nodiscard]] std::optional<int64_t> read_field(const PidLayout& layout, PidReport report,
                                                 std::span<const uint8_t> bytes, uint32_t usage);
+// Reads the joystick's Input report (bytes with the ID byte first). False when the bytes are
+// not that report (another ID, or too short).
+[[nodiscard]] bool read_joystick(const PidLayout& layout, std::span<const uint8_t> bytes, JoystickReading& out) noexcept;
 [[nodiscard]] std::optional<uint32_t> read_selection(const PidLayout& layout, PidReport report,
                                                      std::span<const uint8_t> bytes, uint32_t array);
 

@@ -7,6 +7,7 @@
 
 #include "device_core.hpp"
 #include "emulation/emulation_config.hpp"
+#include "emulation/pid_emulation.hpp"
 #include "feel/runtime/runtime_messages.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
 #include "host_errors.hpp"
@@ -183,18 +184,7 @@ Result<EffectStatusInfo> status(DeviceCore& core, EffectRecord& record, const st
     Held h = held(core, record, what);
     if (!h.status.ok()) return h.status;
     std::lock_guard lock(h.emulation->mu);
-    const EffectStatus s = h.emulation->renderer.status(h.id);
-    EffectStatusInfo info;
-    info.emulated = true;
-    // Playing (or about to, or inside its start delay) on the host's behalf: "emulated".
-    const bool playing = s.state == EffectState::pending || s.state == EffectState::delayed ||
-                         s.state == EffectState::playing;
-    info.state = playing ? runtime::ReportedEffectState::emulated : runtime::ReportedEffectState::stopped;
-    info.iterations = s.iterations;
-    info.completed_iterations = s.completed_iterations;
-    info.elapsed_us = s.elapsed_us;
-    info.last_end = s.last_end;
-    return info;
+    return emulated_status(h.emulation->renderer.status(h.id));
 }
 
 Status update(DeviceCore& core, EffectRecord& record, const EffectParams& merged, std::span<const int16_t> samples,
