@@ -11,12 +11,19 @@
 //
 // (percentiles of the period error, the overrun events, the ticks run). Figures are
 // measured, not asserted: they depend on the machine and its load.
+//
+// --floor runs the very same loop (pacing, privileges, histograms) with an empty tick: what
+// the machine itself allows. A virtual machine's wake-ups may come tens of µs late and, now
+// and then, milliseconds late whatever the loop does; the device's figures mean something
+// only next to that floor, taken on the same machine at the same time (docs/runtime.md).
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+
+#include <unistd.h>
 
 #include "busy_mix.hpp"
 #include "cli.hpp"
@@ -65,12 +72,55 @@ double checked_seconds(double seconds) {
     return seconds;
 }
 
+int32_t checked_cpu(double cpu) {
+    const bool whole = std::isfinite(cpu) && std::floor(cpu) == cpu;
+    const long cpus = sysconf(_SC_NPROCESSORS_CONF);
+    if (!whole || cpu < -1 || cpu >= static_cast<double>(cpus)) {
+        throw UsageError("--cpu = " + number(cpu) + " is out of range (allowed -1 for any CPU, or a whole 0.." +
+                         std::to_string(cpus - 1) + ", this machine's CPUs)");
+    }
+    return static_cast<int32_t>(cpu);
+}
+
+void print_stats(const runtime::RealtimeLoopStats& s, int32_t rate, int playing_effects, std::ostream& out) {
+    out << "work per tick: p50=" << us(s.callback_p50_us) << " p99=" << us(s.callback_p99_us)
+        << " p99.9=" << us(s.callback_p999_us) << " max=" << us(s.callback_max_us) << " of a "
+        << us(1e6 / rate) << " period\n"
+        << "latency after deadline: p50=" << us(s.latency_p50_us) << " p99=" << us(s.latency_p99_us)
+        << " p99.9=" << us(s.latency_p999_us) << " max=" << us(s.latency_max_us) << '\n'
+        << "page faults of the loop thread during the run: minor=" << s.minor_faults << " major=" << s.major_faults
+        << '\n'
+        << "period error: max=" << us(s.period_error_max_us) << ", missed ticks=" << s.missed_ticks
+        << ", effects playing at the end=" << playing_effects << '\n'
+        << "p50=" << us(s.period_error_p50_us) << " p99=" << us(s.period_error_p99_us)
+        << " p99.9=" << us(s.period_error_p999_us) << " overruns=" << s.overruns << " ticks=" << s.ticks << '\n';
+}
+
+void run_floor(int32_t rate, double seconds, int64_t ticks, const runtime::RealtimeLoopOptions& options,
+               std::ostream& out) {
+    out << "feel bench loop --floor: the same loop with an empty tick at " << rate << " Hz for " << number(seconds)
+        << " s (" << ticks << " ticks): the machine's own timing floor\n";
+    runtime::RealtimeLoop loop;
+    loop.start(options, [](int64_t, int64_t) {});
+    out << loop.setup().describe() << '\n' << std::flush;
+    loop.wait();
+    print_stats(loop.stats(), rate, 0, out);
+}
+
 }  // namespace
 
 void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& /*err*/) {
     const int32_t rate = checked_rate(args.rate_hz);
     const double seconds = checked_seconds(args.seconds);
     const int64_t ticks = std::llround(seconds * rate);
+    runtime::RealtimeLoopOptions options;
+    options.rate_hz = rate;
+    options.tick_limit = ticks;
+    options.cpu = checked_cpu(args.cpu);
+    if (args.floor) {
+        run_floor(rate, seconds, ticks, options, out);
+        return;
+    }
 
     const sim::DeviceProfile* profile = sim::find_device_profile(kDeviceName);
     if (profile == nullptr) throw std::runtime_error(std::string("no built-in device \"") + kDeviceName + "\"");
@@ -96,9 +146,6 @@ void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& 
     // allocation test runs the same work under a counting allocator).
     int64_t previous_t_us = -1;
     TickOutput output;
-    runtime::RealtimeLoopOptions options;
-    options.rate_hz = rate;
-    options.tick_limit = ticks;
     runtime::RealtimeLoop loop;
     loop.start(options, [&](int64_t, int64_t t_us) {
         TickInput in;
@@ -114,16 +161,7 @@ void run_bench_loop(const BenchLoopArgs& args, std::ostream& out, std::ostream& 
     out << loop.setup().describe() << '\n' << std::flush;
     loop.wait();
 
-    const runtime::RealtimeLoopStats s = loop.stats();
-    out << "work per tick: p50=" << us(s.callback_p50_us) << " p99=" << us(s.callback_p99_us)
-        << " p99.9=" << us(s.callback_p999_us) << " max=" << us(s.callback_max_us) << " of a "
-        << us(1e6 / rate) << " period\n"
-        << "latency after deadline: p50=" << us(s.latency_p50_us) << " p99=" << us(s.latency_p99_us)
-        << " p99.9=" << us(s.latency_p999_us) << " max=" << us(s.latency_max_us) << '\n'
-        << "period error: max=" << us(s.period_error_max_us) << ", missed ticks=" << s.missed_ticks
-        << ", effects playing at the end=" << output.playing_effects << '\n'
-        << "p50=" << us(s.period_error_p50_us) << " p99=" << us(s.period_error_p99_us)
-        << " p99.9=" << us(s.period_error_p999_us) << " overruns=" << s.overruns << " ticks=" << s.ticks << '\n';
+    print_stats(loop.stats(), rate, output.playing_effects, out);
 }
 
 }  // namespace feel::cli

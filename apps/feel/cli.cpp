@@ -230,6 +230,10 @@ void add_bench(CLI::App& app, BenchLoopArgs& a) {
                 "overruns=N ticks=N");
     loop->add_option("--rate", a.rate_hz, "Loop rate in whole Hz, 100..20000")->capture_default_str();
     loop->add_option("--seconds", a.seconds, "Seconds to run, 1..3600")->capture_default_str();
+    loop->add_option("--cpu", a.cpu, "Pin the loop thread to this CPU, 0..(CPUs - 1); -1: any CPU")->capture_default_str();
+    loop->add_flag("--floor", a.floor,
+                   "Run the same loop with an empty tick instead of the device's work: the machine's own "
+                   "timing floor, to compare the device's figures with");
     loop->footer(exit_codes("the loop cannot run"));
 }
 

@@ -68,6 +68,8 @@ struct DescriptorArgs {
 struct BenchLoopArgs {
     double rate_hz = 1000;  // whole Hz, runtime::kMinLoopRateHz..kMaxLoopRateHz
     double seconds = 60;    // 1..3600
+    double cpu = -1;        // the loop thread's CPU, 0..CPUs−1, or −1: any (a double: checked whole)
+    bool floor = false;     // an empty tick: the machine's timing floor under the same loop
 };
 
 // The commands that run for a while redraw one status line (or block) in place when

@@ -26,6 +26,9 @@ TEST_F(BenchLoop, OutOfRangeFlagsNameTheFlagAndTheRange) {
         {{"--seconds", "0.5"}, "--seconds", "1..3600"},
         {{"--seconds", "3601"}, "--seconds", "1..3600"},
         {{"--seconds", "nan"}, "--seconds", "1..3600"},
+        {{"--cpu", "-2"}, "--cpu", "allowed -1 for any CPU"},
+        {{"--cpu", "0.5"}, "--cpu", "allowed -1 for any CPU"},
+        {{"--cpu", "4096"}, "--cpu", "this machine's CPUs"},
     };
     for (const Case& c : cases) {
         std::vector<std::string> argv{"feel", "bench", "loop"};
@@ -66,6 +69,25 @@ TEST_F(BenchLoop, EndsWithTheSummaryLine) {
     EXPECT_EQ(std::stol(m[5]) + std::stol(mm[1]), 500);
     EXPECT_EQ(std::stol(mm[1]) == 0, std::stol(m[4]) == 0);
     EXPECT_NE(r.out.find("scheduler: "), std::string::npos);
+}
+
+// --floor runs the same loop with an empty tick: same summary line, no effects, and the
+// setup line says the loop is pinned when --cpu asks for it.
+TEST_F(BenchLoop, TheFloorRunsTheSameLoopWithAnEmptyTick) {
+    const Result r = run_cli({"bench", "loop", "--floor", "--seconds", "1", "--rate", "500", "--cpu", "0"});
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    EXPECT_NE(r.out.find("empty tick"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("cpu: 0"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("effects playing at the end=0"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("page faults of the loop thread during the run: minor="), std::string::npos) << r.out;
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    const std::regex line(R"(p50=(\d+\.\d)us p99=(\d+\.\d)us p99\.9=(\d+\.\d)us overruns=(\d+) ticks=(\d+)\n)");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(last, m, line)) << last;
+    const std::regex missed(R"(missed ticks=(\d+))");
+    std::smatch mm;
+    ASSERT_TRUE(std::regex_search(r.out, mm, missed)) << r.out;
+    EXPECT_EQ(std::stol(m[5]) + std::stol(mm[1]), 500);
 }
 
 }  // namespace

@@ -67,6 +67,9 @@ struct RealtimeLoopOptions {
     bool realtime_priority = true;         // try SCHED_FIFO; off: stay an ordinary thread
     int32_t fifo_priority = 80;            // 1..99 (Linux SCHED_FIFO range), when trying
     bool lock_memory = true;               // try mlockall(MCL_CURRENT | MCL_FUTURE)
+    // Pin the loop thread to this CPU (0..CPU count − 1, pthread_setaffinity_np); -1: no pinning,
+    // the thread may run on any CPU. A refusal is reported in setup(), never fatal.
+    int32_t cpu = -1;
 };
 
 // What the loop obtained from the system. Filled by start(), before it returns.
@@ -76,9 +79,12 @@ struct RealtimeLoopSetup {
     std::string scheduling_note;  // when not fifo: why (not asked, or the system's refusal)
     bool memory_locked = false;   // mlockall held while this loop runs
     std::string memory_note;      // when not locked: why
+    int32_t cpu = -1;             // the CPU the thread is pinned to, -1 when not pinned
+    std::string cpu_note;         // when pinning was asked for and refused: why
 
     // One line, e.g. "scheduler: SCHED_FIFO priority 80; memory: locked (mlockall)" or
-    // "scheduler: SCHED_OTHER (SCHED_FIFO refused: Operation not permitted); memory: ...".
+    // "scheduler: SCHED_OTHER (SCHED_FIFO refused: Operation not permitted); memory: ...",
+    // followed by "; cpu: 1" or "; cpu: any" (or why pinning was refused).
     [[nodiscard]] std::string describe() const;
 };
 
@@ -104,6 +110,11 @@ struct RealtimeLoopStats {
     double callback_p99_us = 0;
     double callback_p999_us = 0;
     double callback_max_us = 0;
+    // Page faults the loop thread took between its first tick and its last (getrusage
+    // RUSAGE_THREAD; minor: the page was in memory but not mapped, major: read from disk).
+    // Set when the loop has stopped; 0 while it runs.
+    int64_t minor_faults = 0;
+    int64_t major_faults = 0;
 };
 
 // Tick n's nominal time, µs: round(n · 1e6 / rate_hz) (halves up), exact whenever it fits
