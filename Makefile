@@ -74,7 +74,7 @@ test-studio: build
 # scripts/lsan.supp (third-party leaks only, each entry says why).
 # --fresh: the options below always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
-SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DFEEL_WERROR=OFF -DFEEL_BUILD_BENCH=OFF -DFEEL_TEST_PCH=ON
 # The ASan+UBSan tree also holds the libFuzzer targets (fuzz/CMakeLists.txt): its libraries

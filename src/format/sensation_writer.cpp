@@ -22,7 +22,7 @@ using detail::BlockLayout;
 using detail::BlockShape;
 using detail::FieldSpec;
 using detail::ValueKind;
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 const EffectParams kDefaults{};
 
@@ -35,16 +35,16 @@ public:
     EffectWriter(const std::string& sensation, std::string prefix, const EffectSpec& spec)
         : sensation_(sensation), prefix_(std::move(prefix)), spec_(spec), p_(spec.params) {}
 
-    void write(Json& j) const {
+    void write(OrderedJson& j) const {
         if (const Error e = validate_effect(p_, spec_.samples)) fail(sensation_, prefix_ + e.message());
         j["type"] = std::string(effect_type_name(p_.type));
         const bool endless_vector_force = p_.type == EffectType::vector_force && p_.duration_us == kInfiniteUs;
         if (!endless_vector_force || is_explicit("/duration_us")) j["duration_us"] = time_or_infinite(p_.duration_us);
         if (p_.start_delay_us != 0 || is_explicit("/start_delay_us")) j["start_delay_us"] = p_.start_delay_us;
         if (p_.iterations != kDefaults.iterations || is_explicit("/iterations")) {
-            j["iterations"] = p_.iterations == kInfiniteIterations ? Json("infinite") : Json(p_.iterations);
+            j["iterations"] = p_.iterations == kInfiniteIterations ? OrderedJson("infinite") : OrderedJson(p_.iterations);
         }
-        Json axes = Json::array();
+        OrderedJson axes = OrderedJson::array();
         for (int i = 0; i < p_.axis_count; ++i) axes.push_back(std::string(axis_name(p_.axes[i])));
         j["axes"] = std::move(axes);
         if (p_.direction.kind != DirectionKind::none) j["direction"] = direction();
@@ -64,13 +64,13 @@ private:
                spec_.explicit_fields.end();
     }
 
-    static Json time_or_infinite(int64_t us) { return us == kInfiniteUs ? Json("infinite") : Json(us); }
+    static OrderedJson time_or_infinite(int64_t us) { return us == kInfiniteUs ? OrderedJson("infinite") : OrderedJson(us); }
 
-    [[nodiscard]] Json direction() const {
+    [[nodiscard]] OrderedJson direction() const {
         const Direction& d = p_.direction;
-        Json out = Json::object();
+        OrderedJson out = OrderedJson::object();
         auto components = [&](int n) {
-            Json a = Json::array();
+            OrderedJson a = OrderedJson::array();
             for (int i = 0; i < n; ++i) a.push_back(d.value[i]);
             return a;
         };
@@ -84,22 +84,22 @@ private:
         return out;
     }
 
-    [[nodiscard]] Json value(const FieldSpec& f, int64_t v) const {
+    [[nodiscard]] OrderedJson value(const FieldSpec& f, int64_t v) const {
         switch (f.kind) {
             case ValueKind::i32:
-            case ValueKind::i64: return Json(v);
-            case ValueKind::boolean: return Json(v != 0);
+            case ValueKind::i64: return OrderedJson(v);
+            case ValueKind::boolean: return OrderedJson(v != 0);
             case ValueKind::choice:
                 if (v < 0 || static_cast<size_t>(v) >= f.choices.size()) {  // the validator checks every choice
                     fail(sensation_, prefix_ + std::string(f.name) + " has no name for value " + std::to_string(v));
                 }
-                return Json(std::string(f.choices[static_cast<size_t>(v)]));
+                return OrderedJson(std::string(f.choices[static_cast<size_t>(v)]));
         }
-        return Json();
+        return OrderedJson();
     }
 
-    [[nodiscard]] Json fields(std::span<const FieldSpec> table, int slot, const std::string& pointer) const {
-        Json out = Json::object();
+    [[nodiscard]] OrderedJson fields(std::span<const FieldSpec> table, int slot, const std::string& pointer) const {
+        OrderedJson out = OrderedJson::object();
         for (const FieldSpec& f : table) {
             const int64_t v = f.get(p_, slot);
             if (f.required || v != f.get(kDefaults, slot) || is_explicit(pointer + "/" + std::string(f.name))) {
@@ -109,29 +109,29 @@ private:
         return out;
     }
 
-    void write_block(Json& j) const {
+    void write_block(OrderedJson& j) const {
         const BlockLayout layout = detail::block_layout(p_.type);
         const std::string key(layout.key);
         if (layout.shape != BlockShape::object) {
             const int blocks =
                 layout.shape == BlockShape::per_axis && !is_directed_condition(p_) ? p_.axis_count : 1;
-            Json a = Json::array();
+            OrderedJson a = OrderedJson::array();
             for (int i = 0; i < blocks; ++i) a.push_back(fields(layout.fields, i, "/" + key + "/" + std::to_string(i)));
             j[key] = std::move(a);
             return;
         }
-        Json block = Json::object();
+        OrderedJson block = OrderedJson::object();
         if (layout.extra == BlockExtra::control_law) {
-            Json laws = Json::array();
+            OrderedJson laws = OrderedJson::array();
             for (int i = 0; i < p_.axis_count; ++i) {
                 laws.push_back(fields(detail::control_law_fields(), i, "/dynamic/control_law/" + std::to_string(i)));
             }
             block["control_law"] = std::move(laws);
         }
-        const Json plain = fields(layout.fields, 0, "/" + key);
+        const OrderedJson plain = fields(layout.fields, 0, "/" + key);
         for (const auto& [name, v] : plain.items()) block[name] = v;
         if (layout.extra == BlockExtra::samples) {
-            Json samples = Json::array();
+            OrderedJson samples = OrderedJson::array();
             for (int16_t s : spec_.samples) samples.push_back(s);
             block["samples"] = std::move(samples);
         }
@@ -156,9 +156,9 @@ std::string write_sensation_file(const SensationFile& file) {
         throw FormatError("cannot write " + std::to_string(effect_count) + " effects in one file (allowed 1.." +
                           std::to_string(kMaxFileEffects) + ": a reader would refuse it)");
     }
-    Json root = Json::object();
+    OrderedJson root = OrderedJson::object();
     root["format"] = std::string(kFormatVersion);
-    Json sensations = Json::object();
+    OrderedJson sensations = OrderedJson::object();
     std::set<std::string> names;
     for (const Sensation& s : file.sensations) {
         if (!is_valid_sensation_name(s.name)) {
@@ -170,19 +170,19 @@ std::string write_sensation_file(const SensationFile& file) {
             fail(s.name, "a sensation that is not a compound has exactly one effect, found " +
                              std::to_string(s.effects.size()));
         }
-        Json js = Json::object();
+        OrderedJson js = OrderedJson::object();
         if (s.description) {
             try {
-                (void)Json(*s.description).dump();
-            } catch (const Json::type_error&) {
+                (void)OrderedJson(*s.description).dump();
+            } catch (const OrderedJson::type_error&) {
                 fail(s.name, "the description is not valid UTF-8");
             }
             js["description"] = *s.description;
         }
         if (s.compound) {
-            Json effects = Json::array();
+            OrderedJson effects = OrderedJson::array();
             for (size_t i = 0; i < s.effects.size(); ++i) {
-                Json e = Json::object();
+                OrderedJson e = OrderedJson::object();
                 EffectWriter(s.name, "effects[" + std::to_string(i) + "].", s.effects[i]).write(e);
                 effects.push_back(std::move(e));
             }

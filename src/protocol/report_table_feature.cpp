@@ -10,7 +10,7 @@ namespace {
 using namespace usage;
 
 // Effect Type: a 1-based PID named array (report_table_pid.cpp): v selects EffectType v - 1.
-constexpr Range kEffectTypeIndex{1, kEffectTypeCount};
+constexpr Range kNewEffectTypeIndex{1, kEffectTypeCount};
 constexpr Range kBlockLoadStatus{1, 3};
 constexpr Range kDeviceClass{1, 2};  // sim::DeviceClass: 1 I-FORCE 1.x, 2 I-FORCE 2.0
 static_assert(static_cast<int>(sim::DeviceClass::iforce1) == kDeviceClass.min, "DeviceClass's first");
@@ -26,7 +26,7 @@ constexpr uint32_t kBlockLoadUsages[] = {pid::kBlockLoadSuccess, pid::kBlockLoad
 constexpr FieldSpec kCreateNewEffect[] = {
     FEEL_FIELD(CreateNewEffectReport, sequence, u32(vendor::kSequence, kAnyU32)),
     FEEL_MAPPED(CreateNewEffectReport, "type",
-                u8(0, kEffectTypeIndex).selects(pid::kEffectType, kEffectTypeUsages),
+                u8(0, kNewEffectTypeIndex).selects(pid::kEffectType, kEffectTypeUsages),
                 [](const CreateNewEffectReport& r, int) noexcept -> int64_t {
                     return static_cast<int64_t>(r.type) + 1;
                 },
@@ -96,7 +96,7 @@ constexpr FieldSpec kDeviceInfo[] = {
 
 constexpr ReportKind kFeature = ReportKind::feature;
 
-constexpr ReportSpec kReports[] = {
+constexpr ReportSpec kFeatureReports[] = {
     report<CreateNewEffectReport>(ReportId::create_new_effect, kFeature, "Create New Effect",
                                   "create_new_effect", pid::kCreateNewEffectReport,
                                   kCreateNewEffect),
@@ -110,6 +110,6 @@ constexpr ReportSpec kReports[] = {
 
 }  // namespace
 
-std::span<const ReportSpec> feature_reports() noexcept { return kReports; }
+std::span<const ReportSpec> feature_reports() noexcept { return kFeatureReports; }
 
 }  // namespace feel::protocol::detail

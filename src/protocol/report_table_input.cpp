@@ -132,7 +132,7 @@ constexpr FieldSpec kDynamicReport[] = {
 
 constexpr ReportKind kIn = ReportKind::input;
 
-constexpr ReportSpec kReports[] = {
+constexpr ReportSpec kInputReports[] = {
     report<JoystickInputReport>(ReportId::joystick_input, kIn, "Joystick Input", "joystick_input",
                                 gd::kPointer, kJoystickInput),
     report<PidStateReport>(ReportId::pid_state, kIn, "PID State", "pid_state",
@@ -151,6 +151,6 @@ constexpr ReportSpec kReports[] = {
 
 }  // namespace
 
-std::span<const ReportSpec> input_reports() noexcept { return kReports; }
+std::span<const ReportSpec> input_reports() noexcept { return kInputReports; }
 
 }  // namespace feel::protocol::detail

@@ -316,7 +316,7 @@ constexpr FieldSpec kDeviceGain[] = {
 
 constexpr ReportKind kOut = ReportKind::output;
 
-constexpr ReportSpec kReports[] = {
+constexpr ReportSpec kPidReports[] = {
     report<SetEffectReport>(ReportId::set_effect, kOut, "Set Effect", "set_effect",
                             pid::kSetEffectReport, kSetEffect),
     report<SetEnvelopeReport>(ReportId::set_envelope, kOut, "Set Envelope", "set_envelope",
@@ -351,6 +351,6 @@ constexpr ReportSpec kReports[] = {
 
 }  // namespace
 
-std::span<const ReportSpec> pid_output_reports() noexcept { return kReports; }
+std::span<const ReportSpec> pid_output_reports() noexcept { return kPidReports; }
 
 }  // namespace feel::protocol::detail

@@ -151,36 +151,36 @@ constexpr FieldSpec kEffectStatusRequest[] = {
 #undef SEQUENCE
 #undef BLOCK
 
-constexpr ReportKind kOut = ReportKind::output;
+constexpr ReportKind kVendorOut = ReportKind::output;
 
-constexpr ReportSpec kReports[] = {
-    report<SetTextureReport>(ReportId::set_texture, kOut, "Set Texture", "set_texture",
+constexpr ReportSpec kVendorReports[] = {
+    report<SetTextureReport>(ReportId::set_texture, kVendorOut, "Set Texture", "set_texture",
                              vendor::kSetTextureReport, kSetTexture),
-    report<SetWallReport>(ReportId::set_wall, kOut, "Set Wall", "set_wall",
+    report<SetWallReport>(ReportId::set_wall, kVendorOut, "Set Wall", "set_wall",
                           vendor::kSetWallReport, kSetWall),
-    report<SetBarrierReport>(ReportId::set_barrier, kOut, "Set Barrier", "set_barrier",
+    report<SetBarrierReport>(ReportId::set_barrier, kVendorOut, "Set Barrier", "set_barrier",
                              vendor::kSetBarrierReport, kSetBarrier),
-    report<SetSweepReport>(ReportId::set_sweep, kOut, "Set Sweep", "set_sweep",
+    report<SetSweepReport>(ReportId::set_sweep, kVendorOut, "Set Sweep", "set_sweep",
                            vendor::kSetSweepReport, kSetSweep),
-    report<SetDynamicReport>(ReportId::set_dynamic, kOut, "Set Dynamic", "set_dynamic",
+    report<SetDynamicReport>(ReportId::set_dynamic, kVendorOut, "Set Dynamic", "set_dynamic",
                              vendor::kSetDynamicReport, kSetDynamic),
-    report<SetControlLawReport>(ReportId::set_control_law, kOut, "Set Control Law",
+    report<SetControlLawReport>(ReportId::set_control_law, kVendorOut, "Set Control Law",
                                 "set_control_law", vendor::kSetControlLawReport, kSetControlLaw),
-    report<ReflexReport>(ReportId::reflex, kOut, "Reflex", "reflex", vendor::kReflexReport,
+    report<ReflexReport>(ReportId::reflex, kVendorOut, "Reflex", "reflex", vendor::kReflexReport,
                          kReflex),
-    report<IdfSettingsReport>(ReportId::idf_settings, kOut, "IDF Settings", "idf_settings",
+    report<IdfSettingsReport>(ReportId::idf_settings, kVendorOut, "IDF Settings", "idf_settings",
                               vendor::kIdfSettingsReport, kIdfSettings),
-    report<ReportRateReport>(ReportId::report_rate, kOut, "Report Rate", "report_rate",
+    report<ReportRateReport>(ReportId::report_rate, kVendorOut, "Report Rate", "report_rate",
                              vendor::kReportRateReport, kReportRate),
-    report<KeepAliveReport>(ReportId::keep_alive, kOut, "Keep Alive", "keep_alive",
+    report<KeepAliveReport>(ReportId::keep_alive, kVendorOut, "Keep Alive", "keep_alive",
                             vendor::kKeepAliveReport, kKeepAlive),
-    report<EffectStatusRequestReport>(ReportId::effect_status_request, kOut,
+    report<EffectStatusRequestReport>(ReportId::effect_status_request, kVendorOut,
                                       "Effect Status Request", "effect_status_request",
                                       vendor::kEffectStatusRequestReport, kEffectStatusRequest),
 };
 
 }  // namespace
 
-std::span<const ReportSpec> vendor_output_reports() noexcept { return kReports; }
+std::span<const ReportSpec> vendor_output_reports() noexcept { return kVendorReports; }
 
 }  // namespace feel::protocol::detail

@@ -186,7 +186,7 @@ constexpr DeviceProfile kProfiles[] = {
     },
 };
 
-std::string format_number(double v) {
+std::string profile_number(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.10g", v);
     return buf;
@@ -197,8 +197,8 @@ std::string check_at_least(const std::string& field, double v, double lo, bool s
                            const char* unit) {
     const bool ok = std::isfinite(v) && (strict ? v > lo : v >= lo);
     if (ok) return {};
-    return field + " = " + format_number(v) + " is out of range (allowed a finite value " +
-           (strict ? "> " : ">= ") + format_number(lo) + ", " + unit + ")";
+    return field + " = " + profile_number(v) + " is out of range (allowed a finite value " +
+           (strict ? "> " : ">= ") + profile_number(lo) + ", " + unit + ")";
 }
 
 std::string check_grip(const std::string& name, const GripModel& g) {

@@ -25,7 +25,7 @@ namespace {
 constexpr std::string_view kForms =
     "hold:X[,Y[,Z]], ramp:AXIS:FROM:TO, sine:AXIS:AMPLITUDE:HZ, circle:RADIUS:HZ or csv:PATH";
 
-std::string format_number(double v) {
+std::string motion_number(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.10g", v);
     return buf;
@@ -135,9 +135,9 @@ private:
                  std::string_view what) const {
         const double v = number(token, name);
         if (v < lo || v > hi) {
-            fail(std::string(name) + " = " + format_number(v) + " is outside " +
-                 std::string(what) + " (allowed " + format_number(lo) + ".." +
-                 format_number(hi) + ")");
+            fail(std::string(name) + " = " + motion_number(v) + " is outside " +
+                 std::string(what) + " (allowed " + motion_number(lo) + ".." +
+                 motion_number(hi) + ")");
         }
         return v;
     }
@@ -149,8 +149,8 @@ private:
     double hz(std::string_view token) const {
         const double v = number(token, "HZ");
         if (!(v > 0) || v > kMaxMotionHz) {
-            fail("HZ = " + format_number(v) + " is out of range (allowed 0 < HZ <= " +
-                 format_number(kMaxMotionHz) + ")");
+            fail("HZ = " + motion_number(v) + " is out of range (allowed 0 < HZ <= " +
+                 motion_number(kMaxMotionHz) + ")");
         }
         return v;
     }
@@ -193,7 +193,7 @@ private:
         m.b_ = position(parts[2], "TO");
         if (!std::isfinite(duration_s) || !(duration_s > 0)) {
             fail("ramp runs over the render's duration, which must be finite and > 0 (got " +
-                 format_number(duration_s) + " s)");
+                 motion_number(duration_s) + " s)");
         }
         m.duration_s_ = duration_s;
         m.used_axes_ = m.axis_ + 1;
@@ -263,12 +263,12 @@ private:
             }
             const double t_us = number(fields[0], where + ": t_us");
             if (t_us < 0) {
-                fail(where + ": t_us = " + format_number(t_us) + " is negative (allowed >= 0)");
+                fail(where + ": t_us = " + motion_number(t_us) + " is negative (allowed >= 0)");
             }
             const double t_s = t_us * 1e-6;
             if (!m.table_t_.empty() && !(t_s > m.table_t_.back())) {
-                fail(where + ": t_us = " + format_number(t_us) + " is not after the previous "
-                     "row's " + format_number(m.table_t_.back() * 1e6) +
+                fail(where + ": t_us = " + motion_number(t_us) + " is not after the previous "
+                     "row's " + motion_number(m.table_t_.back() * 1e6) +
                      " (times must strictly increase)");
             }
             m.table_t_.push_back(t_s);
