@@ -1,0 +1,234 @@
+// PidDevice's reflexes (Set Effect's Trigger Button and Trigger Repeat Interval, or the
+// host's run of a trigger the device cannot name) and its custom forces (Set Custom Force
+// and Custom Force Data), against feel's simulated device in lockstep (pid_lockstep.hpp):
+// every tick's motor force is recorded, so when an effect starts is read to the tick.
+//
+// Truth.
+//  - A reflex (§1.2.c): the effect starts when its button is pressed and, with a repeat
+//    interval R, again every R while held. Run by the device, it starts on the tick of the
+//    press (the device's reflex, no host in the loop). Run by the host, the press is seen in
+//    the first Input report at or after it and the start reaches the device one tick later
+//    (the rig's link): within one report period T of the press; each repeat k lands in
+//    [s_0 + k·R, s_0 + k·R + T − 1 tick] (the host fires at the first report at or after
+//    the due time).
+//  - A custom force (§4.3.a): each sample is played for one sample period, channel i on the
+//    effect's axis i, so the force at a tick τ into the play is sample ⌊τ / period⌋.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "../support/valid_effects.hpp"
+#include "feel/host/pid_device.hpp"
+#include "pid_lockstep.hpp"
+
+namespace feel::host {
+namespace {
+
+// A short push on x alone, a reflex on `trigger` repeating every `repeat_us`.
+EffectParams jolt(Trigger trigger, int64_t repeat_us) {
+    EffectParams p;
+    p.type = EffectType::constant;
+    p.duration_us = 5'000;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    p.direction.kind = DirectionKind::none;
+    p.constant.magnitude = 6000;
+    p.trigger = trigger;
+    p.trigger_repeat_interval_us = repeat_us;
+    return p;
+}
+
+struct Rig {
+    Lockstep lockstep;
+    std::optional<PidDevice> dev;
+    Rig(int32_t report_rate_hz) : lockstep("iforce2", "hold:0", report_rate_hz) {
+        lockstep.background(true);
+        Result<PidDevice> opened = PidDevice::attach(lockstep.host_end(), "sim:iforce2", OpenOptions{},
+                                                     [this] { return lockstep.now_us(); });
+        lockstep.background(false);
+        if (!opened) {
+            ADD_FAILURE() << opened.status().message;
+            return;
+        }
+        dev.emplace(std::move(opened.value()));
+    }
+    ~Rig() {
+        lockstep.background(true);
+        if (dev) dev->close();
+        lockstep.background(false);
+    }
+    // A host call that waits for the device (Create New Effect's Block Load): steps meanwhile.
+    template <class F>
+    auto with_device(F&& f) {
+        lockstep.background(true);
+        auto r = f();
+        lockstep.background(false);
+        return r;
+    }
+    runtime::SimBackend& backend() { return static_cast<runtime::SimBackend&>(lockstep.pipeline().backend()); }
+    float force_x() { return lockstep.pipeline().motor_force()[0]; }
+};
+
+// The ticks (from `from`) on which the force on x went from rest to pushing (at rest before
+// the first: the callers check that nothing played before the press).
+std::vector<int64_t> starts(const std::vector<float>& force_x, int64_t from) {
+    std::vector<int64_t> out;
+    for (std::size_t m = 0; m < force_x.size(); ++m) {
+        const bool before = m > 0 && std::abs(force_x[m - 1]) > 100.0f;
+        if (std::abs(force_x[m]) > 100.0f && !before) out.push_back(from + static_cast<int64_t>(m));
+    }
+    return out;
+}
+
+// Holds `press` (buttons or hats) from tick `press_tick` for `held` ticks; the force on x
+// per tick from press_tick on.
+std::vector<float> press_and_hold(Rig& rig, bool hat, int64_t press_tick, int held) {
+    while (rig.lockstep.tick() < press_tick) rig.lockstep.step();
+    EXPECT_TRUE(hat ? rig.backend().set_hats(0b1) : rig.backend().set_buttons(0b1));
+    std::vector<float> force;
+    for (int i = 0; i < held; ++i) {
+        rig.lockstep.step();
+        force.push_back(rig.force_x());
+    }
+    EXPECT_TRUE(hat ? rig.backend().set_hats(0) : rig.backend().set_buttons(0));
+    return force;
+}
+
+constexpr int64_t kRepeatTicks = 20;  // R = 20 ms
+
+TEST(PidReflex, TheDeviceRunsAButtonReflexFromSetEffectsTriggerButton) {
+    Rig rig(1000);
+    ASSERT_TRUE(rig.dev);
+    Result<uint16_t> block = rig.with_device([&] {
+        return rig.dev->create_effect(jolt({TriggerKind::button, 1}, kRepeatTicks * kTickUs));
+    });
+    ASSERT_TRUE(block) << block.status().message;
+    EXPECT_FALSE(rig.dev->trigger_emulated(*block));  // feel's Set Effect has a Trigger Button
+    const int64_t press = rig.lockstep.tick() + 50;
+    // Nothing plays before the press.
+    for (int i = 0; i < 40; ++i) {
+        rig.lockstep.step();
+        EXPECT_EQ(rig.force_x(), 0.0f);
+    }
+    const std::vector<float> force = press_and_hold(rig, false, press, 70);
+    const std::vector<int64_t> s = starts(force, 0);
+    // Pressed at tick 0 of the recording (sensed by the tick that records it): the device
+    // starts it at once, then every R while held (70 ticks: starts at 0, 20, 40, 60).
+    ASSERT_EQ(s.size(), 4u) << "starts at " << ::testing::PrintToString(s);
+    for (std::size_t k = 0; k < s.size(); ++k) EXPECT_LE(std::abs(s[k] - static_cast<int64_t>(k) * kRepeatTicks), 1) << k;
+}
+
+TEST(PidReflex, TheHostRunsAHatReflexWithinAReportPeriod) {
+    for (const int32_t rate : {1000, 250}) {
+        SCOPED_TRACE("report rate " + std::to_string(rate) + " Hz");
+        const int64_t period = 1000 / rate;  // T, ticks
+        Rig rig(rate);
+        ASSERT_TRUE(rig.dev);
+        Result<uint16_t> block = rig.with_device([&] {
+            return rig.dev->create_effect(jolt({TriggerKind::hat, 1}, kRepeatTicks * kTickUs));
+        });
+        ASSERT_TRUE(block) << block.status().message;
+        // PID's Trigger Button names buttons only: the host runs a hat trigger.
+        EXPECT_TRUE(rig.dev->trigger_emulated(*block));
+        const int64_t press = rig.lockstep.tick() + 50;
+        const std::vector<float> force = press_and_hold(rig, true, press, 70);
+        const std::vector<int64_t> s = starts(force, 0);
+        ASSERT_GE(s.size(), 3u) << "starts at " << ::testing::PrintToString(s);
+        EXPECT_GE(s[0], 1);  // the host's start crosses the link: a tick at least
+        EXPECT_LE(s[0], period + 1);
+        for (std::size_t k = 1; k < s.size(); ++k) {
+            const int64_t due = s[0] + static_cast<int64_t>(k) * kRepeatTicks;
+            EXPECT_GE(s[k], due) << k;
+            EXPECT_LE(s[k], due + period - 1 + 1) << k;  // the next report, and at most a tick of rounding
+        }
+        // Released: no more starts.
+        for (int i = 0; i < 60; ++i) {
+            rig.lockstep.step();
+            EXPECT_EQ(rig.force_x(), 0.0f) << "tick " << i << " after the release";
+        }
+    }
+}
+
+TEST(PidReflex, AHostRenderedEffectPlaysOnItsButton) {
+    Rig rig(1000);
+    ASSERT_TRUE(rig.dev);
+    EffectParams recoil = test::valid_effect(EffectType::dynamic_recoil);
+    recoil.trigger = {TriggerKind::button, 2};
+    Result<uint16_t> handle = rig.with_device([&] { return rig.dev->create_effect(recoil); });
+    ASSERT_TRUE(handle) << handle.status().message;
+    EXPECT_TRUE(rig.dev->emulated(*handle));
+    EXPECT_TRUE(rig.dev->trigger_emulated(*handle));
+    for (int i = 0; i < 20; ++i) rig.lockstep.step();
+    EXPECT_EQ(rig.dev->status(*handle)->state, runtime::ReportedEffectState::stopped);
+    ASSERT_TRUE(rig.backend().set_buttons(0b10));
+    rig.lockstep.step();  // the press, in this tick's report
+    rig.lockstep.step();
+    EXPECT_EQ(rig.dev->status(*handle)->state, runtime::ReportedEffectState::emulated);
+}
+
+// --- custom force -----------------------------------------------------------------------
+
+TEST(PidCustomForce, FeelsDevicePlaysTheSamplesEachForItsPeriod) {
+    Rig rig(1000);
+    ASSERT_TRUE(rig.dev);
+    ASSERT_TRUE(rig.dev->capabilities().supports(EffectType::force_profile));
+    // Two channels, x and y, 30 frames of 2 ms: more than one Custom Force Data report.
+    constexpr int kFrames = 30;
+    constexpr int64_t kPeriodTicks = 2;
+    std::vector<int16_t> samples;
+    for (int f = 0; f < kFrames; ++f) {
+        samples.push_back(static_cast<int16_t>(300 * (f + 1)));
+        samples.push_back(static_cast<int16_t>(-200 * (f + 1)));
+    }
+    EffectParams p;
+    p.type = EffectType::force_profile;
+    p.duration_us = kFrames * kPeriodTicks * kTickUs;
+    p.axis_count = 2;
+    p.axes[0] = Axis::x;
+    p.axes[1] = Axis::y;
+    p.direction.kind = DirectionKind::none;
+    p.custom = {2, kPeriodTicks * kTickUs, 2 * kFrames};
+    Result<uint16_t> block = rig.with_device([&] { return rig.dev->create_effect(p, samples); });
+    ASSERT_TRUE(block) << block.status().message;
+    EXPECT_FALSE(rig.dev->emulated(*block));  // the device plays it
+    for (int i = 0; i < 10; ++i) rig.lockstep.step();
+    ASSERT_TRUE(rig.dev->start(*block).ok());
+    std::vector<float> fx, fy;
+    for (int i = 0; i < kFrames * kPeriodTicks + 10; ++i) {
+        rig.lockstep.step();
+        fx.push_back(rig.lockstep.pipeline().motor_force()[0]);
+        fy.push_back(rig.lockstep.pipeline().motor_force()[1]);
+    }
+    // The first tick that pushes is the play's start (the start crosses the link).
+    std::size_t s = 0;
+    while (s < fx.size() && fx[s] == 0.0f) ++s;
+    ASSERT_LT(s, 5u) << "the profile did not start";
+    for (int64_t tau = 0; tau < kFrames * kPeriodTicks; ++tau) {
+        const auto frame = static_cast<std::size_t>(tau / kPeriodTicks);
+        const auto m = s + static_cast<std::size_t>(tau);
+        EXPECT_NEAR(fx[m], samples[2 * frame], 1.0) << "tick " << tau;
+        EXPECT_NEAR(fy[m], samples[2 * frame + 1], 1.0) << "tick " << tau;
+    }
+    // Then it has ended.
+    EXPECT_EQ(fx[s + kFrames * kPeriodTicks + 2], 0.0f);
+}
+
+TEST(PidCustomForce, SamplesOutOfRangeAreRefusedNamingTheField) {
+    Rig rig(1000);
+    ASSERT_TRUE(rig.dev);
+    EffectParams p;
+    p.type = EffectType::force_profile;
+    p.duration_us = 10'000;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    p.custom = {1, 1'000, 2};
+    const std::vector<int16_t> samples = {20000, 0};
+    Result<uint16_t> refused = rig.with_device([&] { return rig.dev->create_effect(p, samples); });
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.status().kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(refused.status().message.find("custom.samples[0]"), std::string::npos) << refused.status().message;
+}
+
+}  // namespace
+}  // namespace feel::host
