@@ -15,7 +15,11 @@
 //    effect's axis i, so the force at a tick τ into the play is sample ⌊τ / period⌋.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <vector>
 
 #include "../support/valid_effects.hpp"
@@ -228,6 +232,130 @@ TEST(PidCustomForce, SamplesOutOfRangeAreRefusedNamingTheField) {
     ASSERT_FALSE(refused);
     EXPECT_EQ(refused.status().kind, ErrorKind::invalid_parameter);
     EXPECT_NE(refused.status().message.find("custom.samples[0]"), std::string::npos) << refused.status().message;
+}
+
+// --- a standard device without custom force: the host renders the profile ------------
+
+// Open FFBoard's descriptor (tests/protocol/pid_descriptors/) behind a scripted device that
+// answers as a PID device does: PID Pool, and PID Block Load after each Create New Effect
+// (blocks 1, 2, ...). Its Set Constant Force (ID 5) levels are kept per block.
+class FakeFfboard {
+public:
+    FakeFfboard() {
+        transport::ConnectionPair pair = transport::in_process_pair("ffboard");
+        host_ = std::move(pair.host);
+        device_ = std::move(pair.device);
+        std::ifstream in(std::string(FEEL_SOURCE_DIR) + "/tests/protocol/pid_descriptors/openffboard_2axis.bin",
+                         std::ios::binary);
+        descriptor_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        thread_ = std::thread([this] { run(); });
+    }
+    ~FakeFfboard() {
+        device_->close();
+        thread_.join();
+    }
+    std::unique_ptr<transport::Connection> host_end() { return std::move(host_); }
+    // Its Input report (ID 1: 64 one-bit buttons, then X..Rz, Slider, Dial, 16 bits each).
+    void push_input(int16_t x, int16_t y) {
+        std::vector<uint8_t> r(25, 0);
+        r[0] = 1;
+        r[9] = static_cast<uint8_t>(x & 0xFF);
+        r[10] = static_cast<uint8_t>((x >> 8) & 0xFF);
+        r[11] = static_cast<uint8_t>(y & 0xFF);
+        r[12] = static_cast<uint8_t>((y >> 8) & 0xFF);
+        device_->send(Frame{FrameKind::input_report, r});
+    }
+    std::map<int, int> levels() {
+        std::lock_guard lock(mu_);
+        return levels_;
+    }
+
+private:
+    void run() {
+        try {
+            int next_block = 1;
+            for (;;) {
+                std::optional<Frame> f = device_->receive(std::chrono::milliseconds(20));
+                if (!f) continue;
+                if (f->kind == FrameKind::get_descriptor) device_->send(Frame{FrameKind::descriptor_reply, descriptor_});
+                if (f->kind == FrameKind::get_feature && f->payload.size() == 1) {
+                    if (f->payload[0] == 19) device_->send(Frame{FrameKind::feature_reply, {19, 0, 0x10, 40, 0b01}});
+                    if (f->payload[0] == 18) {
+                        // Block Load: block, status 1 (Block Load Success), RAM Pool Available.
+                        device_->send(Frame{FrameKind::feature_reply,
+                                            {18, static_cast<uint8_t>(next_block++), 1, 0xFF, 0x0F}});
+                    }
+                }
+                if (f->kind == FrameKind::output_report && f->payload.size() == 4 && f->payload[0] == 5) {
+                    std::lock_guard lock(mu_);
+                    levels_[f->payload[1]] = static_cast<int16_t>(f->payload[2] | f->payload[3] << 8);
+                }
+            }
+        } catch (const std::exception&) {
+        }
+    }
+    std::unique_ptr<transport::Connection> host_, device_;
+    std::vector<uint8_t> descriptor_;
+    std::thread thread_;
+    std::mutex mu_;
+    std::map<int, int> levels_;
+};
+
+TEST(PidCustomForce, ADeviceWithoutItGetsTheProfileRenderedByTheHost) {
+    FakeFfboard board;
+    std::atomic<int64_t> now_us{0};
+    Result<PidDevice> dev = PidDevice::attach(board.host_end(), "ffboard", OpenOptions{}, [&] { return now_us.load(); });
+    ASSERT_TRUE(dev) << dev.status().message;
+    ASSERT_FALSE(dev->capabilities().supports(EffectType::force_profile));
+    ASSERT_NE(dev->capabilities().emulated_types & effect_type_bit(EffectType::force_profile), 0u)
+        << dev->capabilities().emulation_problem;
+    constexpr int kFrames = 4;
+    constexpr int64_t kPeriodUs = 10'000;
+    const std::vector<int16_t> samples = {4000, -2000, -7000, 1000, 10000, 0, -3000, 3000};
+    EffectParams p;
+    p.type = EffectType::force_profile;
+    p.duration_us = kFrames * kPeriodUs;
+    p.axis_count = 2;
+    p.axes[0] = Axis::x;
+    p.axes[1] = Axis::y;
+    p.direction.kind = DirectionKind::none;
+    p.custom = {2, kPeriodUs, 2 * kFrames};
+    Result<uint16_t> handle = dev->create_effect(p, samples);
+    ASSERT_TRUE(handle) << handle.status().message;
+    EXPECT_TRUE(dev->emulated(*handle));
+    const PidEmulationStats link = dev->emulation_stats();
+    ASSERT_EQ(link.link_blocks.size(), 2u);  // x and y: the axes both reported and in Axes Enable
+    ASSERT_TRUE(dev->start(*handle).ok());
+    // One report every 2 ms of host time; the host renders each and streams the level. The
+    // play's time starts at the update where the host's engine starts it (the first to push:
+    // within two updates of start()); from there the level is sample ⌊τ / period⌋ on its axis,
+    // scaled as a level onto Magnitude's -32767..32767 (PID: 10000 is the logical maximum).
+    std::vector<std::pair<int64_t, std::map<int, int>>> sent;
+    for (int64_t t = 1'000; t < 1'000 + kFrames * kPeriodUs + 4'000; t += 2'000) {
+        now_us = t;
+        const int64_t before = dev->emulation_stats().updates;
+        board.push_input(0, 0);
+        for (int i = 0; i < 500 && dev->emulation_stats().updates == before; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));  // the level's trip
+        sent.emplace_back(t, board.levels());
+    }
+    const int x_block = link.link_blocks[0], y_block = link.link_blocks[1];
+    std::size_t first = 0;
+    while (first < sent.size() && sent[first].second[x_block] == 0) ++first;
+    ASSERT_LE(first, 1u) << "the profile did not start within two updates";
+    const int64_t t0 = sent[first].first;
+    for (std::size_t k = first; k < sent.size(); ++k) {
+        const int64_t tau = sent[k].first - t0;
+        if (tau >= kFrames * kPeriodUs) break;
+        const auto frame = static_cast<std::size_t>(tau / kPeriodUs);
+        const double x = std::round(samples[2 * frame] * 32767.0 / 10000.0);
+        const double y = std::round(samples[2 * frame + 1] * 32767.0 / 10000.0);
+        // A unit of force is 3.3 counts of Magnitude: the host rounds its force to a unit.
+        EXPECT_NEAR(sent[k].second[x_block], x, 4.0) << "tau " << tau << " us";
+        EXPECT_NEAR(sent[k].second[y_block], y, 4.0) << "tau " << tau << " us";
+    }
+    dev->close();
 }
 
 }  // namespace
