@@ -185,14 +185,7 @@ TEST(PidCustomForce, FeelsDevicePlaysTheSamplesEachForItsPeriod) {
         samples.push_back(static_cast<int16_t>(300 * (f + 1)));
         samples.push_back(static_cast<int16_t>(-200 * (f + 1)));
     }
-    EffectParams p;
-    p.type = EffectType::force_profile;
-    p.duration_us = kFrames * kPeriodTicks * kTickUs;
-    p.axis_count = 2;
-    p.axes[0] = Axis::x;
-    p.axes[1] = Axis::y;
-    p.direction.kind = DirectionKind::none;
-    p.custom = {2, kPeriodTicks * kTickUs, 2 * kFrames};
+    const EffectParams p = test::profile_on_xy(kFrames, kPeriodTicks * kTickUs);
     Result<uint16_t> block = rig.with_device([&] { return rig.dev->create_effect(p, samples); });
     ASSERT_TRUE(block) << block.status().message;
     EXPECT_FALSE(rig.dev->emulated(*block));  // the device plays it
@@ -312,14 +305,7 @@ TEST(PidCustomForce, ADeviceWithoutItGetsTheProfileRenderedByTheHost) {
     constexpr int kFrames = 4;
     constexpr int64_t kPeriodUs = 10'000;
     const std::vector<int16_t> samples = {4000, -2000, -7000, 1000, 10000, 0, -3000, 3000};
-    EffectParams p;
-    p.type = EffectType::force_profile;
-    p.duration_us = kFrames * kPeriodUs;
-    p.axis_count = 2;
-    p.axes[0] = Axis::x;
-    p.axes[1] = Axis::y;
-    p.direction.kind = DirectionKind::none;
-    p.custom = {2, kPeriodUs, 2 * kFrames};
+    const EffectParams p = test::profile_on_xy(kFrames, kPeriodUs);
     Result<uint16_t> handle = dev->create_effect(p, samples);
     ASSERT_TRUE(handle) << handle.status().message;
     EXPECT_TRUE(dev->emulated(*handle));

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/valid_effects.hpp"
 #include "feel/protocol/codec.hpp"
 #include "feel/protocol/pid_effect_reports.hpp"
 #include "feel/protocol/pid_layout.hpp"
@@ -177,26 +178,13 @@ TEST(PidLayoutSidewinderFf2, DirectionIsAFractionOfItsTurn) {
     EXPECT_EQ(b[12], 64);
 }
 
-// A two-channel profile on x and y: channel 0 drives x, channel 1 drives y (§4.3.a).
-EffectParams profile_xy(int frames, int64_t period_us) {
-    EffectParams p;
-    p.type = EffectType::force_profile;
-    p.duration_us = frames * period_us;
-    p.axis_count = 2;
-    p.axes[0] = Axis::x;
-    p.axes[1] = Axis::y;
-    p.direction.kind = DirectionKind::none;
-    p.custom = {2, period_us, 2 * frames};
-    return p;
-}
-
 TEST(PidLayoutSidewinderFf2, WritesACustomForceInItsSampleFormat) {
     const PidLayout l = map_or_fail(load("sidewinder_ff2.bin"));
     std::string error;
     // 7 frames of (x, y): 14 values of its Custom Force Data (8 bits, -127..127, 12 a
     // report), so two reports, the second at offset 12.
     const std::vector<int16_t> samples = {10000, -10000, 5000, 0, 0, 0, 0, 0, 0, 0, 0, 0, -2500, 7500};
-    const EffectParams p = profile_xy(7, 5'000);
+    const EffectParams p = test::profile_on_xy(7, 5'000);
     const std::vector<OutgoingReport> r = effect_reports(l, 3, p, error, {samples, false});
     ASSERT_GE(r.size(), 4u) << error;
     ASSERT_EQ(r[0].report, PidReport::custom_force_data);
@@ -244,19 +232,19 @@ TEST(PidLayoutSidewinderFf2, RefusesACustomForceItsFieldsCannotHold) {
     std::string error;
     // 300 frames: Sample Count holds 0..255.
     std::vector<int16_t> many(600, 100);
-    EXPECT_TRUE(effect_reports(l, 1, profile_xy(300, 1'000), error, {many, false}).empty());
+    EXPECT_TRUE(effect_reports(l, 1, test::profile_on_xy(300, 1'000), error, {many, false}).empty());
     EXPECT_NE(error.find("custom.sample_count"), std::string::npos) << error;
     EXPECT_NE(error.find("0..255"), std::string::npos) << error;
     // 256 frames of 2 bytes: 512 bytes, and Byte Count holds 0..511.
     std::vector<int16_t> bytes512(512, 100);
-    EXPECT_FALSE(custom_force_bytes(l, profile_xy(256, 1'000), {bytes512, false}, error).has_value());
+    EXPECT_FALSE(custom_force_bytes(l, test::profile_on_xy(256, 1'000), {bytes512, false}, error).has_value());
     EXPECT_NE(error.find("Byte Count holds 0..511"), std::string::npos) << error;
     // Sample Period counts milliseconds: 400 µs is below it.
     const std::vector<int16_t> four(4, 100);
-    EXPECT_TRUE(effect_reports(l, 1, profile_xy(2, 400), error, {four, false}).empty());
+    EXPECT_TRUE(effect_reports(l, 1, test::profile_on_xy(2, 400), error, {four, false}).empty());
     EXPECT_NE(error.find("custom.sample_period_us"), std::string::npos) << error;
     // One channel along a direction on two axes: a sample holds one value per axis.
-    EffectParams along = profile_xy(4, 1'000);
+    EffectParams along = test::profile_on_xy(4, 1'000);
     along.custom = {1, 1'000, 4};
     along.direction = Direction{DirectionKind::polar, {9000, 0, 0}};
     EXPECT_TRUE(effect_reports(l, 1, along, error, {four, false}).empty());
@@ -373,7 +361,7 @@ TEST(PidLayoutFeel, FeelsCodecDecodesAGenericCustomForce) {
     // 30 values on 2 channels: feel's Custom Force Data carries 24 a report.
     std::vector<int16_t> samples;
     for (int i = 0; i < 30; ++i) samples.push_back(static_cast<int16_t>(i % 2 == 0 ? 300 * i : -200 * i));
-    const EffectParams p = profile_xy(15, 2'000);
+    const EffectParams p = test::profile_on_xy(15, 2'000);
     const std::vector<OutgoingReport> r = effect_reports(*l, 5, p, error, {samples, true});
     ASSERT_FALSE(r.empty()) << error;
     std::vector<int16_t> received;
