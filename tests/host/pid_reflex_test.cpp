@@ -231,16 +231,24 @@ TEST(PidCustomForce, SamplesOutOfRangeAreRefusedNamingTheField) {
 
 // Open FFBoard's descriptor (tests/protocol/pid_descriptors/) behind a scripted device that
 // answers as a PID device does: PID Pool, and PID Block Load after each Create New Effect
-// (blocks 1, 2, ...). Its Set Constant Force (ID 5) levels are kept per block.
+// (blocks 1, 2, ...). Its Set Constant Force (ID 5) levels are kept per block, and every
+// output report in order. `without_trigger_button` blanks Set Effect's Trigger Button
+// usage (its one Usage 0x53 item, byte 327, made Usage 0x00: the field stays, unnamed), a
+// device that cannot run reflexes.
 class FakeFfboard {
 public:
-    FakeFfboard() {
+    explicit FakeFfboard(bool without_trigger_button = false) {
         transport::ConnectionPair pair = transport::in_process_pair("ffboard");
         host_ = std::move(pair.host);
         device_ = std::move(pair.device);
         std::ifstream in(std::string(FEEL_SOURCE_DIR) + "/tests/protocol/pid_descriptors/openffboard_2axis.bin",
                          std::ios::binary);
         descriptor_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        if (without_trigger_button) {
+            EXPECT_EQ(descriptor_.at(327), 0x09);
+            EXPECT_EQ(descriptor_.at(328), 0x53);
+            descriptor_.at(328) = 0x00;
+        }
         thread_ = std::thread([this] { run(); });
     }
     ~FakeFfboard() {
@@ -249,9 +257,10 @@ public:
     }
     std::unique_ptr<transport::Connection> host_end() { return std::move(host_); }
     // Its Input report (ID 1: 64 one-bit buttons, then X..Rz, Slider, Dial, 16 bits each).
-    void push_input(int16_t x, int16_t y) {
+    void push_input(int16_t x, int16_t y, uint8_t buttons_1_to_8 = 0) {
         std::vector<uint8_t> r(25, 0);
         r[0] = 1;
+        r[1] = buttons_1_to_8;
         r[9] = static_cast<uint8_t>(x & 0xFF);
         r[10] = static_cast<uint8_t>((x >> 8) & 0xFF);
         r[11] = static_cast<uint8_t>(y & 0xFF);
@@ -261,6 +270,10 @@ public:
     std::map<int, int> levels() {
         std::lock_guard lock(mu_);
         return levels_;
+    }
+    std::vector<std::vector<uint8_t>> outputs() {
+        std::lock_guard lock(mu_);
+        return outputs_;
     }
 
 private:
@@ -279,9 +292,11 @@ private:
                                             {18, static_cast<uint8_t>(next_block++), 1, 0xFF, 0x0F}});
                     }
                 }
-                if (f->kind == FrameKind::output_report && f->payload.size() == 4 && f->payload[0] == 5) {
+                if (f->kind == FrameKind::output_report) {
                     std::lock_guard lock(mu_);
-                    levels_[f->payload[1]] = static_cast<int16_t>(f->payload[2] | f->payload[3] << 8);
+                    outputs_.push_back(f->payload);
+                    if (f->payload.size() == 4 && f->payload[0] == 5)
+                        levels_[f->payload[1]] = static_cast<int16_t>(f->payload[2] | f->payload[3] << 8);
                 }
             }
         } catch (const std::exception&) {
@@ -292,7 +307,51 @@ private:
     std::thread thread_;
     std::mutex mu_;
     std::map<int, int> levels_;
+    std::vector<std::vector<uint8_t>> outputs_;
 };
+
+TEST(PidReflex, WithoutTriggerButtonTheHostRunsAButtonReflex) {
+    FakeFfboard board(true);
+    std::atomic<int64_t> now_us{0};
+    Result<PidDevice> dev = PidDevice::attach(board.host_end(), "ffboard", OpenOptions{}, [&] { return now_us.load(); });
+    ASSERT_TRUE(dev) << dev.status().message;
+    EXPECT_FALSE(protocol::pid::device_runs_trigger(dev->layout(), Trigger{TriggerKind::button, 3}));
+    constexpr int64_t kRepeatUs = 20'000;
+    Result<uint16_t> block = dev->create_effect(jolt({TriggerKind::button, 3}, kRepeatUs));
+    ASSERT_TRUE(block) << block.status().message;
+    EXPECT_TRUE(dev->trigger_emulated(*block));
+    const uint8_t operation_id = dev->layout().report(protocol::pid::PidReport::effect_operation).id;
+    // Effect Operation Start (its array's first usage, Op Effect Start) of our block, per report.
+    auto started = [&] {
+        int n = 0;
+        for (const std::vector<uint8_t>& r : board.outputs())
+            n += r.size() >= 3 && r[0] == operation_id && r[1] == *block && r[2] == 1 ? 1 : 0;
+        return n;
+    };
+    // A report every T = 3 ms; button 3 held from the report at 10 ms to the one at 67 ms.
+    constexpr int64_t kReportUs = 3'000;
+    std::vector<int64_t> starts_at;
+    for (int64_t t = 1'000; t <= 100'000; t += kReportUs) {
+        now_us = t;
+        const bool held = t >= 10'000 && t <= 67'000;
+        const int before = started();
+        board.push_input(0, 0, held ? 0b100 : 0);
+        // The host answers a press by the report that shows it: wait for its Start, or
+        // long enough to be sure none comes.
+        for (int i = 0; i < 40 && started() == before; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        for (int n = started(); n > before; --n) starts_at.push_back(t);
+    }
+    // Starts at the press (10 ms), then due at 30 and 50 ms, each fired by the first report
+    // at or after its due time (31 and 52 ms: within T), none after the release.
+    ASSERT_EQ(starts_at.size(), 3u) << ::testing::PrintToString(starts_at);
+    EXPECT_EQ(starts_at[0], 10'000);
+    for (std::size_t k = 1; k < starts_at.size(); ++k) {
+        const int64_t due = starts_at[0] + static_cast<int64_t>(k) * kRepeatUs;
+        EXPECT_GE(starts_at[k], due) << k;
+        EXPECT_LT(starts_at[k], due + kReportUs) << k;
+    }
+    dev->close();
+}
 
 TEST(PidCustomForce, ADeviceWithoutItGetsTheProfileRenderedByTheHost) {
     FakeFfboard board;
