@@ -28,7 +28,10 @@
 // device's Input report carries, and streamed to the device as the level of a Constant
 // Force effect per axis (src/host/emulation/pid_emulation.hpp). Its handle is
 // kHostHandleBase or above, emulated(handle) is true and status(handle) says "emulated"
-// while it plays. docs/real-devices.md, "Host emulation", has the limits.
+// while it plays. docs/real-devices.md, "Host emulation", has the limits. Reflexes the
+// device cannot run (a hat trigger, no Trigger Button in Set Effect, a host-rendered
+// effect's) are run by the host on the Input report's buttons and hats
+// (emulation/trigger_watch.hpp; trigger_emulated(handle)).
 //
 // Threads. One thread at a time (calls are serialized inside). An I/O thread reads the
 // device's input reports, hands feature replies to the waiting call, and runs host
