@@ -3,10 +3,12 @@
 //
 // Design. The caller's thread sends and, for the two gets a PID host makes (PID Block Load
 // after Create New Effect, PID Pool), waits on a condition variable for the reply the I/O
-// thread files. The I/O thread is the only reader of the connection: it files replies and,
-// once host emulation runs, renders each Input report and sends the force
-// (emulation/pid_emulation.hpp); otherwise it drops input reports. Both threads send, under
-// send_mu. A device that goes away wakes every wait with the transport's reason.
+// thread files. The I/O thread is the only reader of the connection: it files replies,
+// reads each Input report's buttons and hats for the reflexes the host runs (a trigger the
+// device cannot name: the block is started with Effect Operation, emulation/trigger_watch.hpp)
+// and, once host emulation runs, renders the report and sends the force
+// (emulation/pid_emulation.hpp). Both threads send, under send_mu. A device that goes away
+// wakes every wait with the transport's reason.
 #include "feel/host/pid_device.hpp"
 
 #include <atomic>
