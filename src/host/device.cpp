@@ -15,6 +15,7 @@
 #include "feel/host/device.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/codec.hpp"
+#include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
 #include "feel/transport/transport.hpp"
 #include "host_errors.hpp"
@@ -173,6 +174,16 @@ Result<Device> Device::attach(std::unique_ptr<transport::Connection> connection,
         Result<protocol::AnyReport> info = core->get_feature(protocol::ReportId::device_info);
         if (!info) return prefixed(info.status(), what);
         const auto& report = std::get<protocol::DeviceInfoReport>(info.value());
+        if (report.vendor_revision != runtime::kProtocolVendorRevision) {
+            // The vendor reports' layouts are frozen within a revision only (docs/protocol.md,
+            // "Versioning"): another revision's reports may not mean what this host writes.
+            return Status::failure(ErrorKind::protocol,
+                                   what + ": the device speaks feel vendor revision " +
+                                       std::to_string(report.vendor_revision) + ", this host speaks revision " +
+                                       std::to_string(runtime::kProtocolVendorRevision) +
+                                       " (\"" + std::string(runtime::kProtocolVersion) +
+                                       "\"): update the host or the device's firmware so both speak the same revision");
+        }
         std::lock_guard lock(core->mu);
         core->caps = caps_from_info(report);
         core->input.axis_count = core->caps.axis_count;

@@ -654,6 +654,10 @@ void DeviceCore::on_dynamic(const protocol::DynamicReportReport& r) {
         event.handle_velocity[i] = static_cast<float>(part.handle_velocity_centi[slot]) / 100.0f;
     }
     dynamic_first_part.reset();
+    dispatch_dynamic(key, event);
+}
+
+void DeviceCore::dispatch_dynamic(uint64_t key, const DynamicEvent& event) {
     std::lock_guard lock(dispatch_mu);
     // Copy the ids first: a callback may unsubscribe (itself or another).
     std::vector<uint64_t> ids;

@@ -202,6 +202,10 @@ struct DeviceCore {
     // The host-rendered effects (emulation/host_emulation.hpp), made at the first one.
     std::shared_ptr<emulation::HostEmulation> emulation;
 
+    // A dynamic's event to its subscribers: those of effect `key` (0: none known) and those of
+    // every effect. Device-rendered (on_dynamic) and host-rendered (host emulation) alike.
+    void dispatch_dynamic(uint64_t key, const DynamicEvent& event);
+
     // Guarded by dispatch_mu.
     std::map<uint64_t, Subscriber> subscribers;
     uint64_t next_subscriber = 1;

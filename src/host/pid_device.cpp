@@ -3,10 +3,12 @@
 //
 // Design. The caller's thread sends and, for the two gets a PID host makes (PID Block Load
 // after Create New Effect, PID Pool), waits on a condition variable for the reply the I/O
-// thread files. The I/O thread is the only reader of the connection: it files replies and,
-// once host emulation runs, renders each Input report and sends the force
-// (emulation/pid_emulation.hpp); otherwise it drops input reports. Both threads send, under
-// send_mu. A device that goes away wakes every wait with the transport's reason.
+// thread files. The I/O thread is the only reader of the connection: it files replies,
+// reads each Input report's buttons and hats for the reflexes the host runs (a trigger the
+// device cannot name: the block is started with Effect Operation, emulation/trigger_watch.hpp)
+// and, once host emulation runs, renders the report and sends the force
+// (emulation/pid_emulation.hpp). Both threads send, under send_mu. A device that goes away
+// wakes every wait with the transport's reason.
 #include "feel/host/pid_device.hpp"
 
 #include <atomic>
@@ -19,6 +21,7 @@
 
 #include "descriptor_check.hpp"
 #include "emulation/pid_emulation.hpp"
+#include "emulation/trigger_watch.hpp"
 #include "feel/effect_validation.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/pid_effect_reports.hpp"
@@ -52,7 +55,17 @@ struct PidDeviceCore {
     FrameKind wanted_kind = FrameKind::busy;  // busy: nothing awaited
     int wanted_id = -1;
     std::optional<std::vector<uint8_t>> reply;
-    std::map<uint16_t, EffectParams> effects;
+    // The device's effects this host made: their parameters as the caller gave them (with a
+    // trigger the host runs, which the device was not told), and a force profile's samples.
+    struct DeviceEffect {
+        EffectParams params;
+        std::vector<int16_t> samples;
+    };
+    std::map<uint16_t, DeviceEffect> effects;
+    // Triggers the device cannot run (no Trigger Button, a hat): the host starts the block on
+    // the Input report's buttons and hats (emulation/trigger_watch.hpp).
+    emulation::TriggerWatch<uint16_t> host_triggers;
+    uint32_t buttons = 0, hats = 0;  // the last Input report's
     std::shared_ptr<emulation::PidEmulation> emulation;  // host emulation, once its link exists
     std::set<uint16_t> link_blocks;                      // the link's Constant Force effects
     uint16_t next_handle = PidDevice::kHostHandleBase;
@@ -63,6 +76,7 @@ struct PidDeviceCore {
 
     std::thread io;
     std::atomic<bool> stopping{false};
+    std::vector<uint16_t> fired;  // the I/O thread's: blocks whose host-run trigger fired
 
     void start() {
         io = std::thread([this] { run(); });
@@ -82,9 +96,17 @@ struct PidDeviceCore {
         }
         if (f.kind == FrameKind::input_report) {
             protocol::pid::JoystickReading reading;
-            if (em != nullptr && protocol::pid::read_joystick(layout, f.payload, reading)) {
+            if (!protocol::pid::read_joystick(layout, f.payload, reading)) return true;
+            const int64_t now = clock();
+            {
+                std::lock_guard lock(mu);
+                buttons = reading.buttons;
+                hats = reading.hats;
+                host_triggers.update(now, reading.buttons, reading.hats, fired);
+            }
+            if (em != nullptr) {
                 std::lock_guard lock(em->mu);
-                em->render(clock(), reading);
+                em->render(now, reading);
                 rendered = true;
             }
             return true;
@@ -138,11 +160,55 @@ struct PidDeviceCore {
                     if (!handle(*more, em.get(), rendered)) return;
                 }
                 if (rendered) send_due(*em);
+                start_fired();
             } catch (const std::exception& e) {
                 mark_gone(std::string("the device is gone: ") + e.what());
                 return;
             }
         }
+    }
+
+    // Effect Operation Start for each block whose host-run trigger fired, with the effect's
+    // own loop count, fire and forget (as the device's own reflex would start it).
+    void start_fired() {
+        for (const uint16_t block : fired) {
+            int32_t loops = 1;
+            {
+                std::lock_guard lock(mu);
+                auto it = effects.find(block);
+                if (it == effects.end()) continue;
+                loops = it->second.params.iterations;
+            }
+            std::string error;
+            std::optional<std::vector<uint8_t>> op =
+                protocol::pid::effect_operation(layout, block, protocol::pid::Operation::start, loops, error);
+            if (op) (void)send(FrameKind::output_report, std::move(*op), "trigger: start effect " + std::to_string(block));
+        }
+        fired.clear();
+    }
+
+    // The samples' format for this device: feel's on a feel device.
+    protocol::pid::ProfileSamples samples_of(std::span<const int16_t> values) const {
+        return {values, caps.feel_device};
+    }
+
+    // What the device is told: the caller's parameters without a trigger the host runs.
+    EffectParams for_device(const EffectParams& params) const {
+        EffectParams p = params;
+        if (!protocol::pid::device_runs_trigger(layout, p.trigger)) {
+            p.trigger = {};
+            p.trigger_repeat_interval_us = 0;
+        }
+        return p;
+    }
+
+    // Arms (or disarms) the host's run of a device block's trigger. Caller holds mu.
+    void arm_host_trigger(uint16_t block, const EffectParams& params) {
+        if (protocol::pid::device_runs_trigger(layout, params.trigger)) {
+            host_triggers.disarm(block);
+            return;
+        }
+        host_triggers.arm(block, block, params.trigger, params.trigger_repeat_interval_us, buttons, hats);
     }
 
     void mark_gone(std::string why) {
@@ -339,11 +405,13 @@ bool PidDevice::connected() const noexcept {
     return core_->connected;
 }
 
-Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
+Result<uint16_t> PidDevice::create_effect(const EffectParams& params, std::span<const int16_t> samples) {
     const std::string what = "create " + std::string(effect_type_name(params.type));
-    if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    if (const Error e = validate_effect(params, samples)) {
+        return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    }
     if (!core_->caps.supports(params.type)) {
-        if ((core_->caps.emulated_types & effect_type_bit(params.type)) != 0) return create_emulated(params, what);
+        if ((core_->caps.emulated_types & effect_type_bit(params.type)) != 0) return create_emulated(params, samples, what);
         return Status::failure(ErrorKind::not_supported,
                                what + ": the device at " + core_->address + " does not play " +
                                    std::string(effect_type_name(params.type)) +
@@ -351,11 +419,22 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
                                    "there: " + core_->caps.emulation_problem);
     }
     std::string error;
+    const EffectParams device_params = core_->for_device(params);
+    const protocol::pid::ProfileSamples profile = core_->samples_of(samples);
     // Everything is encoded before the device is asked for a block, so that a refusal
     // leaves no block behind (block 1 stands in; the layout is the same for any block).
-    if (protocol::pid::effect_reports(core_->layout, 1, params, error).empty()) return encode_error(what, error);
+    if (protocol::pid::effect_reports(core_->layout, 1, device_params, error, profile).empty()) {
+        return encode_error(what, error);
+    }
+    int64_t byte_count = 0;
+    if (params.type == EffectType::force_profile) {
+        const std::optional<int64_t> bytes = protocol::pid::custom_force_bytes(core_->layout, params, profile, error);
+        if (!bytes) return encode_error(what, error);
+        byte_count = *bytes;
+    }
     std::lock_guard call(core_->call_mu);
-    std::optional<std::vector<uint8_t>> create = protocol::pid::create_new_effect(core_->layout, params.type, error);
+    std::optional<std::vector<uint8_t>> create =
+        protocol::pid::create_new_effect(core_->layout, params.type, error, byte_count);
     if (!create) return encode_error(what, error, ErrorKind::not_supported);
     if (Status s = core_->send(FrameKind::set_feature, std::move(*create), what + ": Create New Effect"); !s.ok()) return s;
     // A device may stall the get while it is still placing the effect (feel's USB device
@@ -374,7 +453,8 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
                                                         (block->status == BlockStatus::error ? "error" : "no status") +
                                                         " (block " + std::to_string(block->block) + ")");
     }
-    for (const protocol::pid::OutgoingReport& r : protocol::pid::effect_reports(core_->layout, block->block, params, error)) {
+    for (const protocol::pid::OutgoingReport& r :
+         protocol::pid::effect_reports(core_->layout, block->block, device_params, error, profile)) {
         if (Status s = core_->send(FrameKind::output_report, r.bytes,
                                    what + ": " + std::string(protocol::pid::pid_report_name(r.report)));
             !s.ok()) {
@@ -382,19 +462,27 @@ Result<uint16_t> PidDevice::create_effect(const EffectParams& params) {
         }
     }
     std::lock_guard lock(core_->mu);
-    core_->effects[block->block] = params;
+    core_->effects[block->block] = {params, std::vector<int16_t>(samples.begin(), samples.end())};
+    core_->arm_host_trigger(block->block, params);
     return block->block;
 }
 
-Status PidDevice::set_effect(uint16_t block, const EffectParams& params) {
+Status PidDevice::set_effect(uint16_t block, const EffectParams& params, std::span<const int16_t> samples) {
     const std::string what = "set effect " + std::to_string(block);
-    if (const Error e = validate_effect(params)) return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    if (const Error e = validate_effect(params, samples)) {
+        return Status::failure(ErrorKind::invalid_parameter, what + ": " + e.message(), e);
+    }
     if (emulated(block)) {
         Result<HostEffect> h = host_effect(block, what);
         if (!h) return h.status();
         if (Status s = check_emulable(params, *h->em, what); !s.ok()) return s;
         std::lock_guard lock(h->em->mu);
-        return status_from_error(h->em->renderer.update(h->id, params, effect_field::kAll, false), what);
+        if (Status s = status_from_error(h->em->renderer.update(h->id, params, effect_field::kAll, false, samples), what);
+            !s.ok()) {
+            return s;
+        }
+        h->em->arm_trigger(block, h->id, params);
+        return Status::success();
     }
     std::lock_guard call(core_->call_mu);
     {
@@ -402,20 +490,22 @@ Status PidDevice::set_effect(uint16_t block, const EffectParams& params) {
         auto it = core_->effects.find(block);
         if (it == core_->effects.end())
             return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
-        if (it->second.type != params.type) {
+        if (it->second.params.type != params.type) {
             return Status::failure(ErrorKind::invalid_parameter,
                                    what + ": type " + std::string(effect_type_name(params.type)) + " differs from the effect's " +
-                                       std::string(effect_type_name(it->second.type)) + " (create a new effect)");
+                                       std::string(effect_type_name(it->second.params.type)) + " (create a new effect)");
         }
     }
     std::string error;
-    const std::vector<protocol::pid::OutgoingReport> reports = protocol::pid::effect_reports(core_->layout, block, params, error);
+    const std::vector<protocol::pid::OutgoingReport> reports = protocol::pid::effect_reports(
+        core_->layout, block, core_->for_device(params), error, core_->samples_of(samples));
     if (reports.empty()) return encode_error(what, error);
     for (const protocol::pid::OutgoingReport& r : reports) {
         if (Status s = core_->send(FrameKind::output_report, r.bytes, what); !s.ok()) return s;
     }
     std::lock_guard lock(core_->mu);
-    core_->effects[block] = params;
+    core_->effects[block] = {params, std::vector<int16_t>(samples.begin(), samples.end())};
+    core_->arm_host_trigger(block, params);
     return Status::success();
 }
 
@@ -438,7 +528,7 @@ Status PidDevice::start(uint16_t block, int32_t iterations, bool solo) {
         auto it = core_->effects.find(block);
         if (it == core_->effects.end())
             return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
-        if (loops == runtime::kEffectIterations) loops = it->second.iterations;
+        if (loops == runtime::kEffectIterations) loops = it->second.params.iterations;
     }
     if (loops != kInfiniteIterations && loops < 1) {
         return Status::failure(ErrorKind::invalid_parameter,
@@ -475,6 +565,7 @@ Status PidDevice::free_effect(uint16_t block) {
         if (!h) return h.status();
         std::lock_guard lock(h->em->mu);
         h->em->handles.erase(block);
+        h->em->triggers.disarm(block);
         return status_from_error(h->em->renderer.destroy(h->id), what);
     }
     {
@@ -485,6 +576,7 @@ Status PidDevice::free_effect(uint16_t block) {
         }
         if (core_->effects.erase(block) == 0)
             return Status::failure(ErrorKind::invalid_handle, what + ": this host created no effect in block " + std::to_string(block));
+        core_->host_triggers.disarm(block);
     }
     std::string error;
     std::optional<std::vector<uint8_t>> report = protocol::pid::block_free(core_->layout, block, error);
@@ -517,6 +609,7 @@ Status PidDevice::command(runtime::DeviceControl control) {
         // host's effects go with them (a new one sets the link up again).
         std::lock_guard lock(core_->mu);
         core_->effects.clear();
+        core_->host_triggers.clear();
         core_->link_blocks.clear();
         core_->emulation.reset();
         return Status::success();
@@ -557,7 +650,7 @@ std::vector<uint16_t> PidDevice::effects() const {
     std::vector<uint16_t> out;
     {
         std::lock_guard lock(core_->mu);
-        for (const auto& [block, params] : core_->effects)
+        for (const auto& [block, effect] : core_->effects)
             if (core_->link_blocks.count(block) == 0) out.push_back(block);
         em = core_->emulation;
     }
@@ -579,6 +672,17 @@ Result<EffectStatusInfo> PidDevice::status(uint16_t handle) {
     if (!h) return h.status();
     std::lock_guard lock(h->em->mu);
     return emulation::emulated_status(h->em->renderer.status(h->id));
+}
+
+bool PidDevice::trigger_emulated(uint16_t handle) const {
+    if (emulated(handle)) {
+        const std::shared_ptr<emulation::PidEmulation> em = core_->emulation_now();
+        if (!em) return false;
+        std::lock_guard lock(em->mu);
+        return em->triggers.armed(handle);
+    }
+    std::lock_guard lock(core_->mu);
+    return core_->host_triggers.armed(handle);
 }
 
 PidEmulationStats PidDevice::emulation_stats() const {
@@ -606,11 +710,6 @@ Result<PidDevice::HostEffect> PidDevice::host_effect(uint16_t handle, const std:
 }
 
 Status PidDevice::check_emulable(const EffectParams& params, const emulation::PidEmulation& em, const std::string& what) {
-    if (params.trigger.kind != TriggerKind::none) {
-        return Status::failure(ErrorKind::not_supported,
-                               what + ": a trigger on a host-rendered effect of a standard PID device is not mapped "
-                                      "(start it from the host on the button instead)");
-    }
     for (int32_t i = 0; i < params.axis_count; ++i) {
         if (!em.links(params.axes[i])) {
             return Status::failure(ErrorKind::invalid_parameter,
@@ -657,7 +756,8 @@ Result<std::shared_ptr<emulation::PidEmulation>> PidDevice::ensure_link(const st
     return em;
 }
 
-Result<uint16_t> PidDevice::create_emulated(const EffectParams& params, const std::string& what) {
+Result<uint16_t> PidDevice::create_emulated(const EffectParams& params, std::span<const int16_t> samples,
+                                            const std::string& what) {
     Result<std::shared_ptr<emulation::PidEmulation>> em = ensure_link(what);
     if (!em) return em.status();
     emulation::PidEmulation& e = *em.value();
@@ -666,10 +766,11 @@ Result<uint16_t> PidDevice::create_emulated(const EffectParams& params, const st
     std::lock_guard core_lock(core_->mu);
     if (core_->next_handle == 0xFFFF)
         return Status::failure(ErrorKind::device_full, what + ": the host's effect handles are used up (close and open again)");
-    const CreateResult r = e.renderer.create(params);
+    const CreateResult r = e.renderer.create(params, samples);
     if (!r.error.ok()) return status_from_error(r.error, what + " (host emulation)");
     const uint16_t handle = core_->next_handle++;
     e.handles[handle] = r.id;
+    e.arm_trigger(handle, r.id, params);
     return handle;
 }
 
@@ -678,7 +779,7 @@ void PidDevice::close() {
     std::vector<uint16_t> blocks;
     {
         std::lock_guard lock(core_->mu);
-        for (const auto& [block, params] : core_->effects) blocks.push_back(block);
+        for (const auto& [block, effect] : core_->effects) blocks.push_back(block);
         core_->link_blocks.clear();
         core_->emulation.reset();  // nothing more is rendered or sent
     }

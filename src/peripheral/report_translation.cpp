@@ -270,6 +270,9 @@ void apply_set_effect(const protocol::SetEffectReport& r, EffectParams& p, const
                                                             : int32_t{r.iterations};
     p.trigger.kind = r.trigger_kind;
     p.trigger.index = r.trigger_index;
+    // A standard PID host names a reflex by Trigger Button alone (PID 1.0: the button that
+    // starts the effect, 0 none) and leaves feel's trigger kind 0: a button.
+    if (p.trigger.kind == TriggerKind::none && r.trigger_index != 0) p.trigger.kind = TriggerKind::button;
     p.axis_count = r.axis_count;
     std::copy(std::begin(r.axes), std::end(r.axes), p.axes);
     if (r.axis_count == 0) {

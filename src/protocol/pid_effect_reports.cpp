@@ -33,6 +33,39 @@ int32_t polar_of(int32_t x, int32_t y) {
     return centi >= 36000 ? 0 : centi;
 }
 
+// Trigger Button and Trigger Repeat Interval (PID 1.0: the button that starts the effect,
+// and how often it starts again while held). No trigger leaves Trigger Button 0: "none" on
+// a 0..n field, the null on a 1..n one.
+bool trigger_fields(const PidLayout& layout, const EffectParams& p, PidReportWriter& w, std::string& error) {
+    if (p.trigger.kind == TriggerKind::none) return true;
+    if (p.trigger.kind == TriggerKind::hat) {
+        error = "trigger: a hat switch; PID's Trigger Button names a button only (the host runs hat triggers)";
+        return false;
+    }
+    const FieldPlace button = layout.find(PidReport::set_effect, u::kTriggerButton);
+    if (!button) {
+        error = "trigger: the device's Set Effect has no Trigger Button (0x53) (the host runs such triggers)";
+        return false;
+    }
+    if (p.trigger.index < button.field->logical_min || p.trigger.index > button.field->logical_max) {
+        error = "trigger.index: button " + std::to_string(p.trigger.index) + " is out of the device's Trigger Button range (allowed " +
+                std::to_string(button.field->logical_min) + ".." + std::to_string(button.field->logical_max) + ")";
+        return false;
+    }
+    w.set(u::kTriggerButton, p.trigger.index, Scale::raw);
+    const bool repeats = p.trigger_repeat_interval_us != 0;
+    if (repeats && !layout.find(PidReport::set_effect, u::kTriggerRepeatInterval)) {
+        error = "trigger_repeat_interval_us: the device's Set Effect has no Trigger Repeat Interval (0x54)";
+        return false;
+    }
+    w.set(u::kTriggerRepeatInterval, p.trigger_repeat_interval_us, Scale::time, false);
+    if (!w.ok()) {
+        error = "trigger_repeat_interval_us " + std::to_string(p.trigger_repeat_interval_us) + ": " + w.error();
+        return false;
+    }
+    return true;
+}
+
 bool set_effect_report(const PidLayout& layout, uint16_t block, const EffectParams& p, uint32_t type_usage,
                        std::vector<OutgoingReport>& out, std::string& error) {
     PidReportWriter w(layout, PidReport::set_effect);
@@ -42,8 +75,13 @@ bool set_effect_report(const PidLayout& layout, uint16_t block, const EffectPara
     w.set(u::kGain, p.gain, Scale::level);
     // Optional fields: absent is fine when the value is their default.
     w.set(u::kStartDelay, p.start_delay_us, Scale::time, p.start_delay_us != 0);
-    w.set(u::kTriggerRepeatInterval, 0, Scale::time, false);
-    w.set(u::kSamplePeriod, 0, Scale::time, false);
+    if (!w.ok()) {
+        error = w.error();
+        return false;
+    }
+    if (!trigger_fields(layout, p, w, error)) return false;
+    // A custom force's sample period is Set Effect's too (PID 1.0 has it in both).
+    w.set(u::kSamplePeriod, p.type == EffectType::force_profile ? p.custom.sample_period_us : 0, Scale::time, false);
     // Axes Enable: the effect's axes.
     for (int i = 0; i < p.axis_count && i < kMaxAxes; ++i) {
         const uint32_t axis_usage = usage::gd::kX + static_cast<uint32_t>(p.axes[i]);
@@ -121,9 +159,139 @@ bool condition_reports(const PidLayout& layout, uint16_t block, const EffectPara
     return true;
 }
 
+// A force profile as the device's sample stream: the elements of its Custom Force Data, in
+// order, and the Sample Count (ProfileSamples says both formats).
+struct SampleStream {
+    std::vector<int16_t> elements;
+    int64_t sample_count = 0;
+};
+
+bool sample_stream(const PidLayout& layout, const EffectParams& p, const ProfileSamples& samples, SampleStream& out,
+                   std::string& error) {
+    const CustomBlock& c = p.custom;
+    if (samples.values.size() != static_cast<std::size_t>(c.sample_count) || c.channels < 1 ||
+        c.sample_count % c.channels != 0) {
+        error = "custom.samples: " + std::to_string(samples.values.size()) + " samples passed, custom.sample_count is " +
+                std::to_string(c.sample_count) + " on " + std::to_string(c.channels) + " channels";
+        return false;
+    }
+    if (samples.feel_format) {
+        out.elements.assign(samples.values.begin(), samples.values.end());
+        out.sample_count = c.sample_count;
+        return true;
+    }
+    // One value per axis of the device's sample format; channel i drives the effect's axis i.
+    const std::vector<Axis> format = layout.sample_axes();
+    if (c.channels == 1 && p.axis_count > 1) {
+        error = "custom.channels: 1 channel on " + std::to_string(p.axis_count) +
+                " axes (along a direction); a standard device's sample holds one value per axis: give one channel "
+                "per axis (custom.channels = " + std::to_string(p.axis_count) + ")";
+        return false;
+    }
+    std::vector<int> slot(static_cast<std::size_t>(c.channels), -1);
+    for (int i = 0; i < c.channels; ++i) {
+        const auto at = std::find(format.begin(), format.end(), p.axes[i]);
+        if (at == format.end()) {
+            error = "axes[" + std::to_string(i) + "]: the device's custom force sample (Download Force Sample) has no " +
+                    std::string(axis_name(p.axes[i])) + " value";
+            return false;
+        }
+        slot[static_cast<std::size_t>(i)] = static_cast<int>(at - format.begin());
+    }
+    const std::size_t frames = static_cast<std::size_t>(c.sample_count / c.channels);
+    out.elements.assign(frames * format.size(), 0);
+    for (std::size_t f = 0; f < frames; ++f)
+        for (std::size_t i = 0; i < slot.size(); ++i)
+            out.elements[f * format.size() + static_cast<std::size_t>(slot[i])] =
+                samples.values[f * static_cast<std::size_t>(c.channels) + i];
+    out.sample_count = static_cast<int64_t>(frames);
+    return true;
+}
+
+std::optional<int64_t> stream_bytes(const PidLayout& layout, const SampleStream& stream) {
+    const FieldPlace data = layout.find(PidReport::custom_force_data, u::kCustomForceData);
+    if (!data) return std::nullopt;
+    return (static_cast<int64_t>(stream.elements.size()) * data.field->report_size + 7) / 8;
+}
+
+// Custom Force Data reports (the stream, a report's worth of elements at a time), then Set
+// Custom Force.
+bool custom_force_reports(const PidLayout& layout, uint16_t block, const EffectParams& p, const ProfileSamples& samples,
+                          std::vector<OutgoingReport>& out, std::string& error) {
+    SampleStream stream;
+    if (!sample_stream(layout, p, samples, stream, error)) return false;
+    const FieldPlace data = layout.find(PidReport::custom_force_data, u::kCustomForceData);
+    if (!data) {
+        error = "custom: the device declares no Custom Force Data (0x69)";
+        return false;
+    }
+    const std::size_t per_report = data.field->report_count - data.element;
+    for (std::size_t at = 0; at < stream.elements.size(); at += per_report) {
+        const std::size_t n = std::min(per_report, stream.elements.size() - at);
+        PidReportWriter w(layout, PidReport::custom_force_data);
+        w.set(u::kEffectBlockIndex, block, Scale::raw);
+        w.set(u::kCustomForceDataOffset, static_cast<int64_t>(at), Scale::raw);
+        if (samples.feel_format) w.set(usage::vendor::kDataCount, static_cast<int64_t>(n), Scale::raw);
+        for (std::size_t k = 0; k < n; ++k)
+            w.set_element(u::kCustomForceData, static_cast<uint32_t>(k), stream.elements[at + k], Scale::level);
+        if (!w.ok()) {
+            error = "custom.samples[" + std::to_string(at) + ".." + std::to_string(at + n - 1) + "]: " + w.error();
+            return false;
+        }
+        out.push_back({PidReport::custom_force_data, w.bytes()});
+    }
+    PidReportWriter w(layout, PidReport::set_custom_force);
+    w.set(u::kEffectBlockIndex, block, Scale::raw);
+    if (samples.feel_format) w.set(usage::vendor::kChannels, p.custom.channels, Scale::raw);
+    w.set(u::kSampleCount, stream.sample_count, Scale::raw);
+    if (!w.ok()) {
+        error = "custom.sample_count: " + std::to_string(stream.sample_count) + " samples: " + w.error();
+        return false;
+    }
+    const FieldPlace period = layout.find(PidReport::set_custom_force, u::kSamplePeriod);
+    if (period && time_to_logical(*period.field, p.custom.sample_period_us) == 0) {
+        error = "custom.sample_period_us: " + std::to_string(p.custom.sample_period_us) +
+                " µs is below the device's Sample Period resolution (its field counts " +
+                (time_to_logical(*period.field, 1000) == 1 ? std::string("milliseconds") : std::string("coarser units")) + ")";
+        return false;
+    }
+    w.set(u::kSamplePeriod, p.custom.sample_period_us, Scale::time);
+    if (!w.ok()) {
+        error = "custom.sample_period_us: " + w.error();
+        return false;
+    }
+    out.push_back({PidReport::set_custom_force, w.bytes()});
+    return true;
+}
+
 }  // namespace
 
-std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, EffectType type, std::string& error) {
+bool device_runs_trigger(const PidLayout& layout, const Trigger& trigger) noexcept {
+    return trigger.kind == TriggerKind::button && layout.find(PidReport::set_effect, u::kTriggerButton);
+}
+
+std::optional<int64_t> custom_force_bytes(const PidLayout& layout, const EffectParams& params,
+                                          const ProfileSamples& samples, std::string& error) {
+    SampleStream stream;
+    if (!sample_stream(layout, params, samples, stream, error)) return std::nullopt;
+    const std::optional<int64_t> bytes = stream_bytes(layout, stream);
+    if (!bytes) {
+        error = "custom: the device declares no Custom Force Data (0x69)";
+        return std::nullopt;
+    }
+    if (const FieldPlace count = layout.find(PidReport::create_new_effect, usage::gd::kByteCount)) {
+        if (*bytes > count.field->logical_max) {
+            error = "custom.sample_count: " + std::to_string(params.custom.sample_count) + " samples are " +
+                    std::to_string(*bytes) + " bytes of Custom Force Data; the device's Create New Effect Byte Count "
+                    "holds " + std::to_string(count.field->logical_min) + ".." + std::to_string(count.field->logical_max);
+            return std::nullopt;
+        }
+    }
+    return bytes;
+}
+
+std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, EffectType type, std::string& error,
+                                                      int64_t byte_count) {
     const std::optional<uint32_t> type_usage = pid_type_usage(type);
     if (!type_usage || !layout.supports(type)) {
         error = "the device does not play " + std::string(effect_type_name(type)) + " (its descriptor's Effect Type lists " +
@@ -132,27 +300,25 @@ std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, E
     }
     PidReportWriter w(layout, PidReport::create_new_effect);
     w.select(u::kEffectType, *type_usage);
-    w.set(usage::gd::kByteCount, 0, Scale::raw, false);
+    w.set(usage::gd::kByteCount, byte_count, Scale::raw, false);
     return finish(w, error);
 }
 
 std::vector<OutgoingReport> effect_reports(const PidLayout& layout, uint16_t block, const EffectParams& p,
-                                           std::string& error) {
+                                           std::string& error, const ProfileSamples& samples) {
     std::vector<OutgoingReport> out;
     const std::optional<uint32_t> type_usage = pid_type_usage(p.type);
     if (!type_usage || !layout.supports(p.type)) {
         error = "type: the device does not play " + std::string(effect_type_name(p.type));
         return {};
     }
-    if (p.trigger.kind != TriggerKind::none) {
-        error = "trigger: reflexes are not sent to a standard PID device (PID's Trigger Button is not mapped by this host)";
-        return {};
-    }
     auto writer_error = [&](const PidReportWriter& w, std::string_view where) {
         error = std::string(where) + ": " + w.error();
         return std::vector<OutgoingReport>{};
     };
-    if (has_condition_block(p.type)) {
+    if (p.type == EffectType::force_profile) {
+        if (!custom_force_reports(layout, block, p, samples, out, error)) return {};
+    } else if (has_condition_block(p.type)) {
         if (!condition_reports(layout, block, p, out, error)) return {};
     } else if (has_periodic_block(p.type)) {
         PidReportWriter w(layout, PidReport::set_periodic);

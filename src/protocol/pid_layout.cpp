@@ -40,6 +40,9 @@ constexpr ReportKey kReports[kPidReportCount] = {
     {PidReport::block_load, MainItemKind::feature, u::kPidBlockLoadReport, 0, "PID Block Load"},
     {PidReport::pool, MainItemKind::feature, u::kPidPoolReport, 0, "PID Pool"},
     {PidReport::state, MainItemKind::input, u::kPidStateReport, 0, "PID State"},
+    {PidReport::set_custom_force, MainItemKind::output, u::kSetCustomForceReport, 0, "Set Custom Force"},
+    {PidReport::custom_force_data, MainItemKind::output, u::kCustomForceDataReport, 0, "Custom Force Data"},
+    {PidReport::download_force_sample, MainItemKind::output, u::kDownloadForceSample, 0, "Download Force Sample"},
 };
 
 // PID 1.0's effect types (Effect Type's usages) and feel's types for them.
@@ -60,6 +63,9 @@ constexpr TypeUsage kTypes[] = {
     {u::kEtDamper, EffectType::damper, PidReport::set_condition},
     {u::kEtInertia, EffectType::inertia, PidReport::set_condition},
     {u::kEtFriction, EffectType::friction, PidReport::set_condition},
+    // feel's force profile is PID's custom force: Set Custom Force, its samples in Custom
+    // Force Data, in the format of Download Force Sample (checked in map()).
+    {u::kEtCustomForceData, EffectType::force_profile, PidReport::set_custom_force},
 };
 
 bool in_collection(const DescriptorField& f, uint32_t collection) {
@@ -226,13 +232,13 @@ std::optional<PidLayout> PidLayout::map(const hid::ParsedDescriptor& d, std::str
         for (const TypeUsage& t : kTypes)
             if (t.usage == usage_value) known = &t;
         if (known == nullptr) {
-            entry.why_not = usage_value == u::kEtCustomForceData
-                                ? "Custom Force Data: sample downloads to a standard PID device are not mapped by this host"
-                                : "usage " + hex(usage_value) + " is not one of PID 1.0's effect types";
+            entry.why_not = "usage " + hex(usage_value) + " is not one of PID 1.0's effect types";
         } else {
             entry.type = known->type;
             if (!out.report(known->parameters).present) {
                 entry.why_not = "the descriptor declares no " + std::string(pid_report_name(known->parameters)) + " report";
+            } else if (known->type == EffectType::force_profile && !out.custom_force_ready(entry.why_not)) {
+                // why_not says what the samples lack
             } else if (array_listing(create, u::kEffectType, usage_value) == nullptr) {
                 entry.why_not = "Create New Effect's Effect Type does not list it";
             } else {
@@ -247,6 +253,40 @@ std::optional<PidLayout> PidLayout::map(const hid::ParsedDescriptor& d, std::str
         for (uint32_t k = 0; k < f.report_count; ++k) {
             const uint32_t a = f.usage_of(k);
             if (a >= usage::gd::kX && a <= usage::gd::kRz) out.axes_.push_back(static_cast<Axis>(a - usage::gd::kX));
+        }
+    }
+    return out;
+}
+
+bool PidLayout::custom_force_ready(std::string& why_not) const {
+    const FieldPlace data = find(PidReport::custom_force_data, u::kCustomForceData);
+    if (!report(PidReport::custom_force_data).present || !data) {
+        why_not = "the descriptor declares no Custom Force Data report with Custom Force Data (0x69), where the samples go";
+        return false;
+    }
+    if (!find(PidReport::custom_force_data, u::kCustomForceDataOffset)) {
+        why_not = "its Custom Force Data report has no Custom Force Data Offset (0x6C)";
+        return false;
+    }
+    if (!find(PidReport::set_custom_force, u::kSampleCount) || !find(PidReport::set_custom_force, u::kSamplePeriod)) {
+        why_not = "its Set Custom Force report lacks Sample Count (0x6D) or Sample Period (0x51)";
+        return false;
+    }
+    if (sample_axes().empty()) {
+        why_not = "the descriptor declares no Download Force Sample report with axes (Generic Desktop X..Rz): "
+                  "the format of a sample";
+        return false;
+    }
+    return true;
+}
+
+std::vector<Axis> PidLayout::sample_axes() const {
+    std::vector<Axis> out;
+    for (const DescriptorField& f : report(PidReport::download_force_sample).fields) {
+        if (f.is_constant() || !f.is_variable()) continue;
+        for (uint32_t k = 0; k < f.report_count; ++k) {
+            const uint32_t a = f.usage_of(k);
+            if (a >= usage::gd::kX && a <= usage::gd::kRz) out.push_back(static_cast<Axis>(a - usage::gd::kX));
         }
     }
     return out;
@@ -331,6 +371,22 @@ bool PidReportWriter::set(uint32_t usage_value, int64_t value, Scale scale, bool
     if (!ok()) return false;
     const FieldPlace place = layout_.find(report_, usage_value, within);
     if (!place) return required ? fail("the device's report has no field " + hex(usage_value)) : true;
+    return scaled_write(place, value, scale, usage_value);
+}
+
+bool PidReportWriter::set_element(uint32_t usage_value, uint32_t element, int64_t value, Scale scale) {
+    if (!ok()) return false;
+    FieldPlace place = layout_.find(report_, usage_value);
+    if (!place) return fail("the device's report has no field " + hex(usage_value));
+    place.element += element;
+    if (place.element >= place.field->report_count) {
+        return fail("usage " + hex(usage_value) + " has " + std::to_string(place.field->report_count) +
+                    " elements, element " + std::to_string(place.element) + " asked");
+    }
+    return scaled_write(place, value, scale, usage_value);
+}
+
+bool PidReportWriter::scaled_write(const FieldPlace& place, int64_t value, Scale scale, uint32_t usage_value) {
     const DescriptorField& f = *place.field;
     int64_t logical = value;
     switch (scale) {

@@ -29,6 +29,7 @@ public:
     bool close_on_set_effect = false;  // goes away when the host commits an effect
     std::optional<std::vector<uint8_t>> descriptor;  // instead of the codec's
     protocol::BlockLoadReport block_load{1, protocol::BlockLoadStatus::success, 4096};
+    protocol::DeviceInfoReport device_info = info();  // what Get Feature(Device Info) answers
     Answer answer;
 
     FakeDevice() {
@@ -116,7 +117,7 @@ private:
                 if (f->kind == transport::FrameKind::get_feature) {
                     if (silent || f->payload.size() != 1) continue;
                     const auto id = static_cast<protocol::ReportId>(f->payload[0]);
-                    if (id == protocol::ReportId::device_info) send(transport::FrameKind::feature_reply, info());
+                    if (id == protocol::ReportId::device_info) send(transport::FrameKind::feature_reply, device_info);
                     if (id == protocol::ReportId::block_load) send(transport::FrameKind::feature_reply, block_load);
                     continue;
                 }

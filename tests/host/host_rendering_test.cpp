@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <thread>
 
 #include "../support/valid_effects.hpp"
@@ -101,6 +102,89 @@ TEST(HostRendering, Iforce1DynamicsAreCreatedAndPlayedByTheHost) {
     EXPECT_EQ(recoil->status()->state, runtime::ReportedEffectState::stopped);
     EXPECT_EQ(recoil->status()->last_end, PlayEnd::finished);
     EXPECT_TRUE(wait_until([&] { return std::abs(dev.input().force[1]) < 1.0f; }));
+}
+
+// A dynamic's interim and final reports (§5.2), as the effect's and the device's subscribers
+// receive them: `effect_events` those of the effect's own subscription.
+struct DynamicRun {
+    std::vector<DynamicEvent> effect_events, device_events, other_events;
+};
+
+DynamicRun play_reporting_recoil(Device& dev) {
+    EffectParams p = feel::test::valid_effect(EffectType::dynamic_recoil);
+    p.dynamic.interim_reporting = true;
+    Result<Effect> recoil = dev.create_effect(p);
+    Result<Effect> other = dev.create_effect(feel::test::valid_effect(EffectType::dynamic_recoil));
+    EXPECT_TRUE(recoil && other);
+    DynamicRun run;
+    if (!recoil || !other) return run;
+    std::mutex mu;
+    Subscription mine = recoil->subscribe([&](const DynamicEvent& ev) {
+        std::lock_guard lock(mu);
+        run.effect_events.push_back(ev);
+    });
+    Subscription every = dev.subscribe([&](const DynamicEvent& ev) {
+        std::lock_guard lock(mu);
+        run.device_events.push_back(ev);
+    });
+    Subscription theirs = other->subscribe([&](const DynamicEvent& ev) {
+        std::lock_guard lock(mu);
+        run.other_events.push_back(ev);
+    });
+    EXPECT_TRUE(recoil->start().ok());
+    EXPECT_TRUE(wait_until([&] { return recoil->status()->state == runtime::ReportedEffectState::stopped; }, 5s));
+    std::this_thread::sleep_for(100ms);  // the last report's trip
+    std::lock_guard lock(mu);
+    return run;
+}
+
+// What a device-rendered dynamic's subscribers get (§5.2's rules, independent of who renders):
+// interim reports at the engine's rate while it plays (the k-th due k periods after the
+// first, on a grid, so never more of them than the rate allows), in time order, and one
+// final report when it ends by itself, after them.
+void expect_reports_of_one_play(const DynamicRun& run, double interim_hz, const char* who) {
+    SCOPED_TRACE(who);
+    int interim = 0, finals = 0;
+    int64_t first_interim = -1;
+    const auto period = static_cast<int64_t>(1e6 / interim_hz);
+    for (std::size_t i = 0; i < run.effect_events.size(); ++i) {
+        const DynamicEvent& ev = run.effect_events[i];
+        EXPECT_EQ(ev.axis_count, 2);
+        if (ev.kind == DynamicReport::Kind::interim) {
+            EXPECT_EQ(finals, 0) << "an interim report after the final one";
+            if (first_interim < 0) first_interim = ev.t_us;
+            EXPECT_GE(ev.t_us - first_interim, interim * period - 1) << "interim report " << interim;
+            ++interim;
+        } else {
+            ++finals;
+        }
+        if (i > 0) {
+            EXPECT_GE(ev.t_us, run.effect_events[i - 1].t_us);
+        }
+    }
+    EXPECT_GE(interim, 3) << "the recoil plays for tenths of a second at " << interim_hz << " Hz";
+    EXPECT_LE(finals, 1);
+    // The device's subscription gets the same events; another effect's gets none.
+    EXPECT_EQ(run.device_events.size(), run.effect_events.size());
+    EXPECT_TRUE(run.other_events.empty());
+}
+
+TEST(HostRendering, HostRenderedDynamicsReportToSubscribersAsTheDevicesDo) {
+    // iforce1 has no Dynamics: the host renders the recoil. iforce2 renders it itself.
+    SimRig host_side = make_rig("iforce1", false, "firm", "hold:0");
+    ASSERT_FALSE(host_side.host->capabilities().supports(EffectType::dynamic_recoil));
+    const DynamicRun emulated = play_reporting_recoil(*host_side.host);
+    SimRig device_side = make_rig("iforce2", false, "firm", "hold:0");
+    ASSERT_TRUE(device_side.host->capabilities().supports(EffectType::dynamic_recoil));
+    const DynamicRun native = play_reporting_recoil(*device_side.host);
+    // The host's engine reports at the engine's rate, EngineConfig's default (iforce1's
+    // profile has none of its own: it has no Dynamics); iforce2 says its rate.
+    expect_reports_of_one_play(emulated, EngineConfig{}.interim_report_hz, "host-rendered on iforce1");
+    expect_reports_of_one_play(native, device_side.host->capabilities().interim_report_hz, "device-rendered on iforce2");
+    int emulated_finals = 0, native_finals = 0;
+    for (const DynamicEvent& ev : emulated.effect_events) emulated_finals += ev.kind == DynamicReport::Kind::final;
+    for (const DynamicEvent& ev : native.effect_events) native_finals += ev.kind == DynamicReport::Kind::final;
+    EXPECT_EQ(emulated_finals, native_finals);
 }
 
 TEST(HostRendering, TypesTheDevicePlaysStayOnTheDevice) {

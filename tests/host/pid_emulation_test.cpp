@@ -46,138 +46,11 @@
 #include "feel/runtime/runtime_backend.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
 #include "feel/sim/device_profile.hpp"
+#include "pid_lockstep.hpp"
 
 namespace feel::host {
 namespace {
 
-using transport::Frame;
-using transport::FrameKind;
-using namespace std::chrono_literals;
-
-constexpr int64_t kTickUs = 1000;  // the profile's 1 kHz loop
-
-runtime::RuntimeConfig quiet_config(const sim::DeviceProfile& p, int32_t report_rate_hz) {
-    runtime::RuntimeConfig c = runtime::runtime_config_for(p);
-    c.safety.fade_in_us = 0;                 // forces at once
-    c.safety.host_timeout_us = kInfiniteUs;  // a PID host sends no keep-alives
-    c.report_rate_hz = report_rate_hz;
-    return c;
-}
-
-// The device's pipeline with a kinematic hand following `motion`.
-std::unique_ptr<runtime::RuntimePipeline> make_pipeline(const sim::DeviceProfile& p, const std::string& motion,
-                                                        int32_t report_rate_hz) {
-    auto backend = std::make_unique<runtime::SimBackend>(p, sim::Grip::kinematic,
-                                                         sim::TargetMotion::parse(motion, 4.0, p.axis_count));
-    return std::make_unique<runtime::RuntimePipeline>(quiet_config(p, report_rate_hz), std::move(backend));
-}
-
-// The lockstep device: its DeviceSession, and the host's end of the "cable".
-class Lockstep {
-public:
-    Lockstep(const char* profile, const std::string& motion, int32_t report_rate_hz)
-        : profile_(sim::find_device_profile(profile)),
-          caps_(runtime::capabilities_for(*profile_)),
-          pipeline_(make_pipeline(*profile_, motion, report_rate_hz)),
-          link_(pipeline_->commands(), pipeline_->reports()),
-          session_(caps_, pipeline_->config(), link_) {}
-    ~Lockstep() { background(false); }
-
-    class End : public transport::Connection {
-    public:
-        explicit End(Lockstep& rig) : rig_(rig) {}
-        void send(const Frame& f) override {
-            std::lock_guard lock(rig_.mu_);
-            if (rig_.closed_) throw transport::TransportError(transport::TransportError::Kind::disconnected, "closed");
-            rig_.inbox_.push_back(f);
-        }
-        std::optional<Frame> receive(std::chrono::milliseconds timeout) override {
-            std::unique_lock lock(rig_.mu_);
-            if (rig_.outbox_.empty() && timeout.count() > 0) {
-                // Idle: everything handed over is handled and answered.
-                rig_.host_idle_ = true;
-                rig_.cv_.notify_all();
-                rig_.cv_.wait_for(lock, timeout, [&] { return !rig_.outbox_.empty() || rig_.closed_; });
-                rig_.host_idle_ = false;
-            }
-            if (rig_.closed_) throw transport::TransportError(transport::TransportError::Kind::disconnected, "closed");
-            if (rig_.outbox_.empty()) return std::nullopt;
-            Frame f = std::move(rig_.outbox_.front());
-            rig_.outbox_.pop_front();
-            return f;
-        }
-        void close() noexcept override {
-            std::lock_guard lock(rig_.mu_);
-            rig_.closed_ = true;
-            rig_.cv_.notify_all();
-        }
-        [[nodiscard]] std::string peer() const override { return "lockstep"; }
-
-    private:
-        Lockstep& rig_;
-    };
-
-    std::unique_ptr<transport::Connection> host_end() { return std::make_unique<End>(*this); }
-    int64_t now_us() const { return now_us_.load(); }
-
-    // One tick: the host's frames to the session, the tick, the device's frames to the host,
-    // then wait until the host has handled them (at most 2 s: a host that answers nothing
-    // is not waited for longer).
-    void step() {
-        std::vector<Frame> in;
-        {
-            std::lock_guard lock(mu_);
-            in.assign(inbox_.begin(), inbox_.end());
-            inbox_.clear();
-        }
-        for (Frame& f : in) {
-            if (!session_.offer(std::move(f))) ADD_FAILURE() << "the session's inbox is full";
-        }
-        std::vector<Frame> out;
-        session_.pump(out);
-        pipeline_->tick(tick_);
-        now_us_ = tick_ * kTickUs;
-        ++tick_;
-        session_.pump(out);
-        std::unique_lock lock(mu_);
-        for (Frame& f : out) outbox_.push_back(std::move(f));
-        host_idle_ = false;
-        cv_.notify_all();
-        cv_.wait_for(lock, 2s, [&] { return (outbox_.empty() && host_idle_) || closed_; });
-    }
-
-    // Steps on a thread of its own, while the test waits on a host call that needs answers.
-    void background(bool on) {
-        if (on && !driver_.joinable()) {
-            driving_ = true;
-            driver_ = std::thread([this] {
-                while (driving_) step();
-            });
-        } else if (!on && driver_.joinable()) {
-            driving_ = false;
-            driver_.join();
-        }
-    }
-
-    runtime::RuntimePipeline& pipeline() { return *pipeline_; }
-    int64_t tick() const { return tick_; }
-
-private:
-    const sim::DeviceProfile* profile_;
-    runtime::Capabilities caps_;
-    std::unique_ptr<runtime::RuntimePipeline> pipeline_;
-    runtime::HostLink link_;
-    peripheral::DeviceSession session_;
-    int64_t tick_ = 0;
-    std::atomic<int64_t> now_us_{0};
-    std::mutex mu_;
-    std::condition_variable cv_;
-    std::deque<Frame> inbox_, outbox_;
-    bool host_idle_ = false;
-    bool closed_ = false;
-    std::atomic<bool> driving_{false};
-    std::thread driver_;
-};
 
 struct Run {
     std::vector<float> force[2];     // the motor's force on x and y, per tick
@@ -356,12 +229,6 @@ TEST(PidEmulation, CapabilitiesSayWhatTheHostRenders) {
     EXPECT_NE(caps.emulated_types & effect_type_bit(EffectType::axis_wall), 0u);
     EXPECT_EQ(caps.emulated_types & effect_type_bit(EffectType::spring), 0u);  // the device's own
     EXPECT_EQ(caps.profile, "iforce2");
-    // A trigger on a host-rendered effect is refused with the reason.
-    EffectParams triggered = emulation::wall_on_x(1000);
-    triggered.trigger = {TriggerKind::button, 1};
-    Result<uint16_t> refused = dev->create_effect(triggered);
-    ASSERT_FALSE(refused);
-    EXPECT_EQ(refused.status().kind, ErrorKind::not_supported) << refused.status().message;
     // A device block has no status; a freed host handle is gone.
     Result<uint16_t> wall = dev->create_effect(emulation::wall_on_x(1000));
     ASSERT_TRUE(wall) << wall.status().message;

@@ -45,6 +45,20 @@ protocol::CommandAnswer refusal_rule(ErrorCode code, const char* field, const ch
     return s;
 }
 
+TEST(HostProtocolPaths, ADeviceOfAnotherVendorRevisionIsRefusedNamingBoth) {
+    // docs/protocol.md, "Versioning": the vendor layouts hold within one revision only.
+    for (const int revision : {1, 3}) {
+        FakeDevice fake;
+        fake.device_info.vendor_revision = static_cast<uint8_t>(revision);
+        Result<Device> dev = Device::attach(fake.host_end(), "fake");
+        ASSERT_FALSE(dev);
+        EXPECT_EQ(dev.status().kind, ErrorKind::protocol);
+        const std::string& m = dev.status().message;
+        EXPECT_NE(m.find("feel vendor revision " + std::to_string(revision)), std::string::npos) << m;
+        EXPECT_NE(m.find("this host speaks revision 2"), std::string::npos) << m;
+    }
+}
+
 TEST(HostProtocolPaths, OpensAFakeDeviceAndReadsItsCapabilities) {
     FakeDevice fake;
     Result<Device> dev = Device::attach(fake.host_end(), "fake");

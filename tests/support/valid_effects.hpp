@@ -146,4 +146,16 @@ inline EffectParams valid_effect(EffectType t) {
     return p;
 }
 
+// A force profile of `frames` frames on two channels, channel 0 on x and channel 1 on y
+// (§4.3.a), each frame held `period_us`; its samples are passed beside it (2 · frames).
+inline EffectParams profile_on_xy(int32_t frames, int64_t period_us) {
+    EffectParams p;
+    p.type = EffectType::force_profile;
+    p.duration_us = frames * period_us;
+    set_axes(p, {Axis::x, Axis::y});
+    p.direction.kind = DirectionKind::none;
+    p.custom = {2, period_us, 2 * frames};
+    return p;
+}
+
 }  // namespace feel::test

@@ -28,7 +28,10 @@
 // device's Input report carries, and streamed to the device as the level of a Constant
 // Force effect per axis (src/host/emulation/pid_emulation.hpp). Its handle is
 // kHostHandleBase or above, emulated(handle) is true and status(handle) says "emulated"
-// while it plays. docs/real-devices.md, "Host emulation", has the limits.
+// while it plays. docs/real-devices.md, "Host emulation", has the limits. Reflexes the
+// device cannot run (a hat trigger, no Trigger Button in Set Effect, a host-rendered
+// effect's) are run by the host on the Input report's buttons and hats
+// (emulation/trigger_watch.hpp; trigger_emulated(handle)).
 //
 // Threads. One thread at a time (calls are serialized inside). An I/O thread reads the
 // device's input reports, hands feature replies to the waiting call, and runs host
@@ -39,6 +42,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -117,9 +121,16 @@ public:
     // kHostHandleBase or above; the first one creates the force link's Constant Force
     // effects); not_supported when the host cannot (capabilities().emulation_problem);
     // device_full when Block Load says full; invalid_parameter naming the field otherwise.
-    [[nodiscard]] Result<uint16_t> create_effect(const EffectParams& params);
-    // Sends the effect's reports again with new parameters (the same type).
-    Status set_effect(uint16_t block, const EffectParams& params);
+    //
+    // A force profile (PID's custom force) comes with its samples: played by the device when
+    // its descriptor has Set Custom Force, Custom Force Data and a sample format (Download
+    // Force Sample), else rendered by the host. A trigger (a reflex) is run by the device
+    // when Set Effect has a Trigger Button and the trigger is a button; otherwise the host
+    // runs it on the Input report's buttons and hats (trigger_emulated()).
+    [[nodiscard]] Result<uint16_t> create_effect(const EffectParams& params, std::span<const int16_t> samples = {});
+    // Sends the effect's reports again with new parameters (the same type; a force profile's
+    // samples again).
+    Status set_effect(uint16_t block, const EffectParams& params, std::span<const int16_t> samples = {});
     // iterations: runtime::kEffectIterations (0) for the effect's own, 1.., or
     // kInfiniteIterations. solo: Op Effect Start Solo.
     Status start(uint16_t block, int32_t iterations = runtime::kEffectIterations, bool solo = false);
@@ -137,6 +148,9 @@ public:
     // tells a host nothing per effect: not_supported for a device block.
     [[nodiscard]] Result<EffectStatusInfo> status(uint16_t handle);
     [[nodiscard]] PidEmulationStats emulation_stats() const;
+    // Whether the host runs `handle`'s trigger (its state is "emulated"): a host-rendered
+    // effect's, a hat trigger, or a button on a device whose Set Effect has no Trigger Button.
+    [[nodiscard]] bool trigger_emulated(uint16_t handle) const;
 
     [[nodiscard]] bool connected() const noexcept;
     // Frees this host's effects, closes the connection. Harmless twice.
@@ -152,7 +166,8 @@ private:
     [[nodiscard]] Status check_emulable(const EffectParams& params, const emulation::PidEmulation& em,
                                         const std::string& what);
     [[nodiscard]] Result<std::shared_ptr<emulation::PidEmulation>> ensure_link(const std::string& what);
-    [[nodiscard]] Result<uint16_t> create_emulated(const EffectParams& params, const std::string& what);
+    [[nodiscard]] Result<uint16_t> create_emulated(const EffectParams& params, std::span<const int16_t> samples,
+                                                   const std::string& what);
     std::shared_ptr<PidDeviceCore> core_;
 };
 

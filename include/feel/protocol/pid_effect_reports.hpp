@@ -8,14 +8,16 @@
 // own descriptor (pid_layout.hpp).
 //
 // What a standard PID device cannot hold is refused here with the reason, before any byte
-// leaves: feel's types beyond PID's eleven, triggers (PID's Trigger Button is mapped by no
-// host here; host emulation plays reflexes), relative offsets, spherical and vector
-// directions on more than two axes, a negative level on an unsigned field, a time or a
-// level past a field's range.
+// leaves: feel's types beyond PID's eleven and its custom force, a hat trigger or a button
+// past the Trigger Button's range (a host runs the triggers a device cannot:
+// device_runs_trigger), relative offsets, spherical and vector directions on more than two
+// axes, a negative level on an unsigned field, a time, a level or a sample past a field's
+// range.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,15 +32,40 @@ struct OutgoingReport {
     std::vector<uint8_t> bytes;  // report ID first
 };
 
-// Create New Effect for `type` (and PID's Byte Count 0). Empty with `error` when the
-// device does not play it.
-[[nodiscard]] std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, EffectType type,
-                                                                    std::string& error);
+// A force profile's samples (EffectParams::custom says how many, on how many channels),
+// and how the device wants them:
+//  - a standard PID device: a sample is one value per axis of its Download Force Sample
+//    report (the FF2: X and Y), so the host writes frame f's channel i into the slot of the
+//    effect's axis i, 0 in the others; Sample Count counts frames; Custom Force Data Offset
+//    counts the data's elements from the first; Create New Effect's Byte Count is the data's
+//    size in bytes;
+//  - feel's own device (feel_format): feel's samples as they are, interleaved by channel, with
+//    feel's Channels and per-report sample count (its descriptor's vendor fields), Sample
+//    Count the number of values.
+struct ProfileSamples {
+    std::span<const int16_t> values;
+    bool feel_format = false;
+};
 
-// The reports that set effect `block` to `params`, in sending order (Set Effect last).
+// Whether the device runs `trigger` itself: a button trigger, and its Set Effect has a
+// Trigger Button (PID names buttons only: a hat trigger is always the host's to run).
+[[nodiscard]] bool device_runs_trigger(const PidLayout& layout, const Trigger& trigger) noexcept;
+
+// Create New Effect for `type`, with PID's Byte Count (the custom force data's bytes, 0 for
+// every other type). Empty with `error` when the device does not play it.
+[[nodiscard]] std::optional<std::vector<uint8_t>> create_new_effect(const PidLayout& layout, EffectType type,
+                                                                    std::string& error, int64_t byte_count = 0);
+// The bytes a force profile's samples take in the device's Custom Force Data (Create New
+// Effect's Byte Count). std::nullopt with `error` when the device cannot hold them.
+[[nodiscard]] std::optional<int64_t> custom_force_bytes(const PidLayout& layout, const EffectParams& params,
+                                                        const ProfileSamples& samples, std::string& error);
+
+// The reports that set effect `block` to `params`, in sending order (Set Effect last); a
+// force profile's Custom Force Data reports come first, then Set Custom Force.
 // Empty with `error` naming the field and the reason when the device cannot hold them.
 [[nodiscard]] std::vector<OutgoingReport> effect_reports(const PidLayout& layout, uint16_t block,
-                                                         const EffectParams& params, std::string& error);
+                                                         const EffectParams& params, std::string& error,
+                                                         const ProfileSamples& samples = {});
 
 enum class Operation : uint8_t { start, start_solo, stop };
 // Effect Operation. loop_count: iterations 1..n, or kInfiniteIterations (the field's null

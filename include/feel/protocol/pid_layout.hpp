@@ -57,8 +57,11 @@ enum class PidReport : uint8_t {
     block_load,         // Feature 0x89
     pool,               // Feature 0x7F
     state,              // Input 0x92
+    set_custom_force,   // Output 0x6B
+    custom_force_data,  // Output 0x68
+    download_force_sample,  // Output 0x66: the format of one sample (one value per axis)
 };
-inline constexpr int kPidReportCount = 14;
+inline constexpr int kPidReportCount = 17;
 [[nodiscard]] std::string_view pid_report_name(PidReport report) noexcept;
 // PID 1.0's Effect Type usage for one of feel's types; std::nullopt for feel's types PID has
 // no usage for (walls, textures, sweeps, dynamics, ...).
@@ -140,6 +143,13 @@ public:
     [[nodiscard]] const JoystickInputLayout& joystick_input() const noexcept { return joystick_; }
     // The axes that report a position, in report order.
     [[nodiscard]] std::vector<Axis> input_axes() const;
+    // The axes of one custom force sample (Download Force Sample's Generic Desktop X..Rz),
+    // in report order: a sample in Custom Force Data is one value for each.
+    [[nodiscard]] std::vector<Axis> sample_axes() const;
+    // Whether the descriptor has what a custom force needs (Set Custom Force with Sample
+    // Count and Sample Period, Custom Force Data with its Offset, a sample format); else
+    // false with the reason.
+    [[nodiscard]] bool custom_force_ready(std::string& why_not) const;
 
     // The place of `usage` in report r: a Var field's element whose usage it is, or the
     // Array field that lists it. `within`: only fields inside a collection of that usage
@@ -174,6 +184,9 @@ public:
     // Sets `usage` (inside collection `within` if given). A missing field is an error
     // when `required`, else ignored.
     bool set(uint32_t usage, int64_t value, Scale scale, bool required = true, uint32_t within = 0);
+    // Sets element `element` of the field of `usage` (counted from the usage's first
+    // element): a buffer such as Custom Force Data. A missing field is an error.
+    bool set_element(uint32_t usage, uint32_t element, int64_t value, Scale scale);
     // Selects `choice` in the named array `array` (Effect Type, Effect Operation, ...).
     bool select(uint32_t array, uint32_t choice);
     // A time that may be infinite (kInfiniteUs): the field's null (all ones, out of its
@@ -188,6 +201,7 @@ public:
 private:
     bool fail(std::string message);
     bool write(const FieldPlace& place, int64_t logical, uint32_t usage);
+    bool scaled_write(const FieldPlace& place, int64_t value, Scale scale, uint32_t usage);
     const PidLayout& layout_;
     PidReport report_;
     std::vector<uint8_t> bytes_;

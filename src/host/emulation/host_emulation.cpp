@@ -18,12 +18,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-bool pressed(const feel::Trigger& t, uint32_t buttons, uint32_t hats) {
-    if (t.kind == TriggerKind::none || t.index < 1 || t.index > 32) return false;
-    const uint32_t bits = t.kind == TriggerKind::hat ? hats : buttons;
-    return (bits >> (t.index - 1)) & 1u;
-}
-
 // The renderer's handle of a record, or invalid_handle naming why there is none.
 struct Held {
     Status status;
@@ -42,17 +36,7 @@ Held held(DeviceCore& core, EffectRecord& record, const std::string& what) {
 }
 
 void arm_trigger(HostEmulation& em, const EffectRecord& record, EffectId id, uint32_t buttons, uint32_t hats) {
-    if (record.params.trigger.kind == TriggerKind::none) {
-        em.triggers.erase(record.key);
-        return;
-    }
-    HostEmulation::Trigger t;
-    t.id = id;
-    t.trigger = record.params.trigger;
-    t.repeat_us = record.params.trigger_repeat_interval_us;
-    // A trigger already held when it is armed is not a press (the device's rule).
-    t.down = pressed(t.trigger, buttons, hats);
-    em.triggers[record.key] = t;
+    em.triggers.arm(record.key, id, record.params.trigger, record.params.trigger_repeat_interval_us, buttons, hats);
 }
 
 }  // namespace
@@ -65,26 +49,19 @@ int64_t HostEmulation::now_us(Clock::time_point t) const noexcept {
 }
 
 bool HostEmulation::update(Clock::time_point now, const protocol::JoystickInputReport& report,
-                           int32_t force[kMaxAxes]) {
+                           int32_t force[kMaxAxes], std::vector<DynamicReport>& reports) {
     std::lock_guard lock(mu);
     const int64_t t_us = now_us(now);
     // Triggers first, so that a press plays from this update on.
-    for (auto& [key, t] : triggers) {
-        const bool down = pressed(t.trigger, report.buttons, report.hats);
-        if (down && !t.down) {
-            (void)renderer.start(t.id, runtime::kEffectIterations, false);
-            t.next_repeat_us = t_us + t.repeat_us;
-        } else if (down && t.repeat_us > 0 && t_us >= t.next_repeat_us) {
-            (void)renderer.start(t.id, runtime::kEffectIterations, false);
-            t.next_repeat_us += t.repeat_us;
-            if (t.next_repeat_us <= t_us) t.next_repeat_us = t_us + t.repeat_us;  // skip missed repeats
-        }
-        t.down = down;
-    }
+    fired.clear();
+    triggers.update(t_us, report.buttons, report.hats, fired);
+    for (const EffectId id : fired) (void)renderer.start(id, runtime::kEffectIterations, false);
     float position[kMaxAxes] = {};
     for (int i = 0; i < axis_count; ++i) position[i] = report.position[i];
     const TickOutput& out = renderer.render(t_us, std::span<const float>(position, static_cast<size_t>(axis_count)),
                                             report.buttons, report.hats);
+    DynamicReport dynamic;
+    while (renderer.pop_report(dynamic)) reports.push_back(dynamic);
     const bool playing = renderer.playing();
     if (!playing && !was_playing) return false;
     was_playing = playing;
@@ -155,7 +132,7 @@ Status unload(DeviceCore& core, EffectRecord& record) {
     }
     if (!em || !id.valid()) return Status::success();
     std::lock_guard lock(em->mu);
-    em->triggers.erase(record.key);
+    em->triggers.disarm(record.key);
     (void)em->renderer.destroy(id);
     return Status::success();
 }
@@ -260,9 +237,31 @@ void on_joystick(DeviceCore& core, const protocol::JoystickInputReport& report) 
     }
     if (!em) return;
     int32_t force[kMaxAxes] = {};
-    if (!em->update(Clock::now(), report, force)) return;
-    (void)core.send_unanswered(force_sample(em->axis_count, force));
-    ++em->link_state.samples_sent;
+    std::vector<DynamicReport> reports;
+    const bool due = em->update(Clock::now(), report, force, reports);
+    if (due) {
+        (void)core.send_unanswered(force_sample(em->axis_count, force));
+        ++em->link_state.samples_sent;
+    }
+    // A host-rendered dynamic's reports go to subscribers as a device-rendered one's do.
+    for (const DynamicReport& r : reports) {
+        uint64_t key = 0;
+        {
+            std::lock_guard lock(core.mu);
+            for (const auto& [k, rec] : core.records)
+                if (rec->host_id.valid() && rec->host_id == r.effect) key = k;
+        }
+        DynamicEvent event;
+        event.kind = r.kind;
+        event.t_us = r.t_us;
+        event.axis_count = r.axis_count;
+        for (int i = 0; i < r.axis_count && i < kMaxAxes; ++i) {
+            event.position[i] = r.position[i];
+            event.velocity[i] = r.velocity[i];
+            event.handle_velocity[i] = r.handle_velocity[i];
+        }
+        core.dispatch_dynamic(key, event);
+    }
 }
 
 }  // namespace feel::host::emulation

@@ -31,10 +31,11 @@
 #include <memory>
 #include <mutex>
 #include <string>
-#include <unordered_map>
+#include <vector>
 
 #include "emulation/force_link.hpp"
 #include "emulation/host_renderer.hpp"
+#include "emulation/trigger_watch.hpp"
 #include "feel/host/device.hpp"
 #include "feel/protocol/reports.hpp"
 
@@ -50,21 +51,15 @@ public:
     HostEmulation(const DeviceCaps& caps, ForceLinkKind link);
 
     // The I/O thread, once per Joystick Input report: renders and, when a force is due,
-    // returns it (normalized ±10000 per device axis) in `force`.
+    // returns it (normalized ±10000 per device axis) in `force`. The dynamics' interim and
+    // final reports this render produced are appended to `reports`.
     bool update(std::chrono::steady_clock::time_point now, const protocol::JoystickInputReport& report,
-                int32_t force[kMaxAxes]);
-
-    struct Trigger {
-        EffectId id{};
-        feel::Trigger trigger{};
-        int64_t repeat_us = 0;
-        bool down = false;
-        int64_t next_repeat_us = 0;
-    };
+                int32_t force[kMaxAxes], std::vector<DynamicReport>& reports);
 
     std::mutex mu;
     HostRenderer renderer;                          // guarded by mu
-    std::unordered_map<uint64_t, Trigger> triggers;  // record key → its trigger; guarded by mu
+    TriggerWatch<EffectId> triggers;                // by record key; guarded by mu
+    std::vector<EffectId> fired;                    // update()'s triggers that fired; guarded by mu
     const ForceLinkKind link;
     ForceLinkState link_state;                       // the I/O thread's alone
     const std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();

@@ -56,6 +56,9 @@ public:
     // Whether the last render() produced a force from a playing effect: when it stops
     // being true the host sends one zero force (a streaming device holds the last value).
     [[nodiscard]] bool playing() const noexcept { return last_.playing_effects > 0; }
+    // The oldest interim or final report of a host-rendered dynamic, if any (the engine's
+    // queue: a render may produce some).
+    [[nodiscard]] bool pop_report(DynamicReport& report) noexcept { return engine_.pop_report(report); }
     [[nodiscard]] int32_t axis_count() const noexcept { return axis_count_; }
     [[nodiscard]] int64_t updates() const noexcept { return updates_; }
 

@@ -19,6 +19,9 @@ void PidEmulation::render(int64_t t_us, const protocol::pid::JoystickReading& re
     last_ = reading;
     has_reading_ = true;
     last_t_us_ = t_us;
+    fired_.clear();
+    triggers.update(t_us, reading.buttons, reading.hats, fired_);
+    for (const EffectId id : fired_) (void)renderer.start(id, HostRenderer::kOwnIterations, false);
     const TickOutput& out = renderer.render(
         t_us, std::span<const float>(reading.position, static_cast<std::size_t>(renderer.axis_count())),
         reading.buttons, reading.hats);
@@ -27,6 +30,10 @@ void PidEmulation::render(int64_t t_us, const protocol::pid::JoystickReading& re
         // The engine's force is within ±10000 and never NaN; rounding keeps it there.
         level_[i] = std::clamp(static_cast<int32_t>(std::lround(out.force[i])), -kFullScale, kFullScale);
     }
+}
+
+void PidEmulation::arm_trigger(uint16_t handle, EffectId id, const EffectParams& params) {
+    triggers.arm(handle, id, params.trigger, params.trigger_repeat_interval_us, last_.buttons, last_.hats);
 }
 
 bool PidEmulation::render_if_stalled(int64_t t_us) {

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "emulation/host_renderer.hpp"
+#include "emulation/trigger_watch.hpp"
 #include "feel/host/device.hpp"
 #include "feel/protocol/pid_layout.hpp"
 
@@ -52,8 +53,12 @@ public:
 
     PidEmulation(const EngineConfig& config, std::vector<LinkAxis> link);
 
-    // One update at host time t_us with the positions, buttons and hats of a report.
+    // One update at host time t_us with the positions, buttons and hats of a report: the
+    // reflexes whose trigger fired start first, so that a press plays from this update on.
     void render(int64_t t_us, const protocol::pid::JoystickReading& reading);
+    // Arms (or disarms, without a trigger) the reflex of host effect `handle` (renderer id
+    // `id`) on the buttons and hats of the last reading. Caller holds mu.
+    void arm_trigger(uint16_t handle, EffectId id, const EffectParams& params);
     // A render on the last reading when none came for kStallUs (false: not due).
     bool render_if_stalled(int64_t t_us);
     // The Set Constant Force levels due: (block, level) of each axis whose level changed
@@ -67,6 +72,7 @@ public:
     std::mutex mu;
     HostRenderer renderer;                 // guarded by mu
     std::map<uint16_t, EffectId> handles;  // the caller's handle → the renderer's effect; guarded by mu
+    TriggerWatch<EffectId> triggers;       // by handle: host effects' reflexes; guarded by mu
     int64_t updates = 0;                   // renders; guarded by mu
     int64_t levels_sent = 0;               // Set Constant Force reports taken; guarded by mu
 
@@ -76,6 +82,7 @@ private:
     bool has_reading_ = false;
     int64_t last_t_us_ = 0;
     int32_t level_[kMaxAxes] = {};  // the last render's force per axis index, rounded
+    std::vector<EffectId> fired_;   // render()'s reflexes to start
 };
 
 // The host engine's configuration for a PID device: feel's profile `profile` when it names
