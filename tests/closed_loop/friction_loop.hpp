@@ -25,14 +25,17 @@ struct LoopRow {
 };
 
 // Runs `effects` on `profile_name` held by `grip` following `motion` for duration_s at
-// rate_hz. set_velocity, if nonzero, is the handle's velocity on x at the start.
+// rate_hz. set_velocity, if nonzero, is the handle's velocity on x at the start. With
+// mass_known false the engine is told no device_mass, as a device that does not say it.
 inline std::vector<LoopRow> run_loop(const char* profile_name, sim::Grip grip, const std::string& motion,
                                      std::initializer_list<EffectParams> effects, double duration_s,
-                                     double rate_hz = 1000, double set_velocity = 0) {
+                                     double rate_hz = 1000, double set_velocity = 0, bool mass_known = true) {
     const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
     sim::SimDevice device(profile, grip, sim::TargetMotion::parse(motion, duration_s, profile.axis_count));
     if (set_velocity != 0) device.set_velocity(0, set_velocity);
-    Engine engine(sim::engine_config_for(profile));
+    EngineConfig config = sim::engine_config_for(profile);
+    if (!mass_known) config.device_mass = 0.0f;
+    Engine engine(config);
     for (const EffectParams& p : effects) {
         const CreateResult r = engine.create(p);
         EXPECT_TRUE(r.error.ok()) << r.error.message();

@@ -56,7 +56,9 @@
 // that prevents it.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "feel/engine.hpp"
 
@@ -104,11 +106,81 @@ struct PreslidingRule {
 // only (no tick to judge passivity by).
 [[nodiscard]] double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept;
 
+// e^(-u) for u >= 0, in single precision without a library call (issue 14: friction's cost
+// per effect): u = n·ln2 + r with |r| <= ln2/2, e^(-r) by its Taylor series to r^7 (relative
+// error below 2e-7, float's own precision), times 2^-n set in the exponent. At most 1, 0
+// beyond u = 87 (below float's smallest normal), deterministic, no table.
+[[nodiscard]] inline float exp_neg(float u) noexcept {
+    if (!(u < 87.0f)) return 0.0f;  // also a NaN argument: nothing a force can show
+    if (!(u > 0.0f)) return 1.0f;
+    constexpr float kLn2 = 0.693147180559945f;
+    constexpr float kInverseLn2 = 1.44269504088896f;
+    const int n = static_cast<int>(u * kInverseLn2 + 0.5f);
+    const float r = u - static_cast<float>(n) * kLn2;  // |r| <= ln2/2 (and a rounding)
+    // e^(-r) = 1 - r + r²/2 - r³/6 + r^4/24 - r^5/120 + r^6/720 - r^7/5040, in Horner form.
+    float p = 1.0f - r * (1.0f / 7.0f);
+    p = 1.0f - r * (1.0f / 6.0f) * p;
+    p = 1.0f - r * (1.0f / 5.0f) * p;
+    p = 1.0f - r * (1.0f / 4.0f) * p;
+    p = 1.0f - r * (1.0f / 3.0f) * p;
+    p = 1.0f - r * (1.0f / 2.0f) * p;
+    p = 1.0f - r * p;
+    // 2^-n, n in 0..126: a float with exponent field 127 - n.
+    const uint32_t bits = static_cast<uint32_t>(127 - n) << 23;
+    float scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    const float e = p * scale;
+    return e < 1.0f ? e : 1.0f;
+}
+
 // Moves the bristle with the handle now at `position` (along the bristle's line, position
 // units), less `slip` (how far the surface itself moved since the last tick, for a
-// friction with a velocity offset). Returns the new deflection z. Single precision (issue
-// 14): z is kept in float anyway, and a step's travel is a few counts.
-float advance(Bristle& b, float position, float slip, float presliding) noexcept;
+// friction with a velocity offset), over a presliding distance 1/inverse_presliding
+// (inverse_presliding 0: none, the bristle flips at once). Returns the new deflection z.
+// Single precision (issue 14): z is kept in float anyway, and a step's travel is a few
+// counts.
+[[nodiscard]] inline float advance(Bristle& b, float position, float slip, float inverse_presliding) noexcept {
+    if (!b.primed || !std::isfinite(position)) {
+        if (std::isfinite(position)) {
+            b.anchor = position;
+            b.primed = true;
+        }
+        return b.deflection;
+    }
+    const float dx = position - b.anchor - slip;
+    b.anchor = position;
+    float z = b.deflection;
+    // Fully slid in the direction of travel: the exact update leaves z at ±1 (the common
+    // case while sliding), so skip its exponential.
+    if ((z == 1.0f && dx >= 0) || (z == -1.0f && dx <= 0)) return z;
+    if (!(inverse_presliding > 0)) {
+        if (dx > 0) z = 1.0f;
+        if (dx < 0) z = -1.0f;
+    } else if (dx > 0) {
+        z = 1.0f + (z - 1.0f) * exp_neg(dx * inverse_presliding);
+    } else if (dx < 0) {
+        z = -1.0f + (z + 1.0f) * exp_neg(-dx * inverse_presliding);
+    }
+    if (!std::isfinite(z)) z = 0.0f;  // a non-finite slip: forget rather than output NaN
+    b.deflection = z;
+    return z;
+}
+
+// Stiction lets go with the push it held (issue 16 §1). Called when the handle has not
+// moved this tick, so the bristle holds it against the other effects (and whatever else
+// pushes it). When the others push less against the bristle (their force changed by
+// `change`, in this friction's force units, with the sign of the bristle's force), the
+// bristle holds less by as much, at once: Coulomb's static friction is whatever balances
+// the push, while a Dahl bristle alone keeps its deflection and throws the handle back when
+// the push ends (the joystick, friction 6000, a push of 3000 or 5000 held and released: 7
+// to 123 units back with the stop guard, 76 to 1403 without it). `held` is what the bristle
+// applied (after its saturation), `force` its unsaturated -c·z. Needs no mass: the engine
+// knows its own effects' forces (ConditionContext::others_force).
+inline void release_with_others(Bristle& bristle, float force, float held, float change) noexcept {
+    if (!(force * change > 0)) return;  // the push grew: the bristle loads as usual
+    const float ratio = (held - change) / force;
+    bristle.deflection *= ratio > 0 ? ratio : 0.0f;
+}
 
 // The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force
 // units per position unit) at deflection z, the handle moving at `velocity` (units/s)
@@ -116,7 +188,16 @@ float advance(Bristle& b, float position, float slip, float presliding) noexcept
 [[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
 // The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller, in
 // single precision.
-[[nodiscard]] float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept;
+[[nodiscard]] inline float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept {
+    if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0f;
+    const float rate = velocity * (1.0f - z * (velocity > 0 ? 1.0f : -1.0f));
+    if (rate == 0) return 0.0f;  // fully slid along the motion: no bristle rate to damp
+    const float r = velocity * inverse_fade_speed;
+    const float r2 = r * r;
+    // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
+    if (r2 > static_cast<float>(kDampingFadeCutoff)) return 0.0f;
+    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * exp_neg(r2);
+}
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
 // multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine

@@ -15,6 +15,10 @@ struct FrictionState {
     Bristle bristle[kMaxAxes] = {};
     // friction: the stop guard of each block (stop_guard.hpp).
     StopGuard guard[kMaxAxes] = {};
+    // The other effects' force along each block's line at the last tick (ConditionContext::
+    // others_force), what its stiction held against: friction_condition.cpp's release.
+    float others[kMaxAxes] = {};
+    bool others_known = false;
     // The guards' shared gains, recomputed only when the tick period changes (an exp each).
     StopGuardTick guard_tick{};
     double guard_tick_dt_s = -1.0;
