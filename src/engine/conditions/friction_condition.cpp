@@ -41,6 +41,16 @@ float deadband_gate(float relative_speed, float deadband) noexcept {
     return t * t * (3.0f - 2.0f * t);
 }
 
+// What every block of a friction shares at tick period dt_s.
+void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s) noexcept {
+    state.guard_tick = stop_guard_tick(config, dt_s);
+    const PreslidingRule rule = presliding_rule(config, dt_s);
+    state.passive = static_cast<float>(rule.passive);
+    state.cap = static_cast<float>(rule.cap);
+    state.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
+    state.tick_dt_s = dt_s;
+}
+
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
@@ -48,15 +58,10 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     const EngineConfig& config = *c.config;
     // Single precision (issue 14); what is per tick rather than per block is computed once.
     FrictionState& state = c.state->friction;
-    if (state.guard_tick_dt_s != c.dt_s) {
-        state.guard_tick = stop_guard_tick(config, c.dt_s);
-        state.guard_tick_dt_s = c.dt_s;
-    }
+    if (state.tick_dt_s != c.dt_s) remember_tick(state, config, c.dt_s);
     const StopGuardTick& guard = state.guard_tick;
-    const PreslidingRule rule = presliding_rule(config, c.dt_s);
-    const float passive = static_cast<float>(rule.passive), cap = static_cast<float>(rule.cap);
+    const float passive = state.passive, cap = state.cap, inverse_fade_speed = state.inverse_fade_speed;
     const float velocity_ref = config.velocity_ref;
-    const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * velocity_ref);
     const float dt_s = static_cast<float>(c.dt_s);
     constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;

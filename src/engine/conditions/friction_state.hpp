@@ -19,9 +19,12 @@ struct FrictionState {
     // others_force), what its stiction held against: friction_condition.cpp's release.
     float others[kMaxAxes] = {};
     bool others_known = false;
-    // The guards' shared gains, recomputed only when the tick period changes (an exp each).
+    // What every block shares at this tick period, recomputed only when it changes (issue
+    // 14: friction's cost per effect): the guards' gains (an exp), the presliding rule's
+    // bounds 2b/T and the resolution cap, and the microdamping's 1/fade speed.
     StopGuardTick guard_tick{};
-    double guard_tick_dt_s = -1.0;
+    float passive = 0.0f, cap = 0.0f, inverse_fade_speed = 0.0f;
+    double tick_dt_s = -1.0;
 };
 
 }  // namespace feel::detail
