@@ -126,8 +126,9 @@ TEST(FrictionShove, AReleasedHeldPushDoesNotSpringBack) {
 
 TEST(FrictionShove, AReleasedPushOnATextureDoesNotSpringBack) {
     // The same on a texture (§3.6, a patch of friction per bump): the handle rests on a bump's
-    // top (bumps 2000 apart and as wide, a sinusoidal washboard), held still by a push
-    // smaller than the roughness, then let go.
+    // top (bumps 10000 apart and as wide, a long sinusoidal washboard, so that the push holds
+    // on the bump rather than sliding off it), held still by a push smaller than the
+    // roughness, then let go.
     EffectParams texture;
     texture.type = EffectType::texture;
     texture.duration_us = kInfiniteUs;
@@ -135,7 +136,7 @@ TEST(FrictionShove, AReleasedPushOnATextureDoesNotSpringBack) {
     texture.axes[0] = Axis::x;
     texture.texture.pos_roughness = 6000;
     texture.texture.neg_roughness = 6000;
-    texture.texture.spacing = 2000;
+    texture.texture.spacing = 10000;
     texture.texture.density = 10000;
     for (const char* profile_name : {"joystick", "wheel", "3axis"}) {
         const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
