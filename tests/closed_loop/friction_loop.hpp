@@ -111,4 +111,18 @@ inline EffectParams constant_force_on_x(int32_t magnitude) {
     return p;
 }
 
+// A texture (§3.6) on x.
+inline EffectParams texture_on_x(int32_t pos_roughness, int32_t neg_roughness, int32_t spacing, int32_t density) {
+    EffectParams p;
+    p.type = EffectType::texture;
+    p.duration_us = kInfiniteUs;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    p.texture.pos_roughness = pos_roughness;
+    p.texture.neg_roughness = neg_roughness;
+    p.texture.spacing = spacing;
+    p.texture.density = density;
+    return p;
+}
+
 }  // namespace feel::test
