@@ -58,7 +58,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "feel/engine.hpp"
 
@@ -106,33 +105,6 @@ struct PreslidingRule {
 // only (no tick to judge passivity by).
 [[nodiscard]] double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept;
 
-// e^(-u) for u >= 0, in single precision without a library call (issue 14: friction's cost
-// per effect): u = n·ln2 + r with |r| <= ln2/2, e^(-r) by its Taylor series to r^7 (relative
-// error below 2e-7, float's own precision), times 2^-n set in the exponent. At most 1, 0
-// beyond u = 87 (below float's smallest normal), deterministic, no table.
-[[nodiscard]] inline float exp_neg(float u) noexcept {
-    if (!(u < 87.0f)) return 0.0f;  // also a NaN argument: nothing a force can show
-    if (!(u > 0.0f)) return 1.0f;
-    constexpr float kLn2 = 0.693147180559945f;
-    constexpr float kInverseLn2 = 1.44269504088896f;
-    const int n = static_cast<int>(u * kInverseLn2 + 0.5f);
-    const float r = u - static_cast<float>(n) * kLn2;  // |r| <= ln2/2 (and a rounding)
-    // e^(-r) = 1 - r + r²/2 - r³/6 + r^4/24 - r^5/120 + r^6/720 - r^7/5040, in Horner form.
-    float p = 1.0f - r * (1.0f / 7.0f);
-    p = 1.0f - r * (1.0f / 6.0f) * p;
-    p = 1.0f - r * (1.0f / 5.0f) * p;
-    p = 1.0f - r * (1.0f / 4.0f) * p;
-    p = 1.0f - r * (1.0f / 3.0f) * p;
-    p = 1.0f - r * (1.0f / 2.0f) * p;
-    p = 1.0f - r * p;
-    // 2^-n, n in 0..126: a float with exponent field 127 - n.
-    const uint32_t bits = static_cast<uint32_t>(127 - n) << 23;
-    float scale;
-    std::memcpy(&scale, &bits, sizeof scale);
-    const float e = p * scale;
-    return e < 1.0f ? e : 1.0f;
-}
-
 // Moves the bristle with the handle now at `position` (along the bristle's line, position
 // units), less `slip` (how far the surface itself moved since the last tick, for a
 // friction with a velocity offset), over a presliding distance 1/inverse_presliding
@@ -157,9 +129,9 @@ struct PreslidingRule {
         if (dx > 0) z = 1.0f;
         if (dx < 0) z = -1.0f;
     } else if (dx > 0) {
-        z = 1.0f + (z - 1.0f) * exp_neg(dx * inverse_presliding);
+        z = 1.0f + (z - 1.0f) * std::exp(-dx * inverse_presliding);
     } else if (dx < 0) {
-        z = -1.0f + (z + 1.0f) * exp_neg(-dx * inverse_presliding);
+        z = -1.0f + (z + 1.0f) * std::exp(dx * inverse_presliding);
     }
     if (!std::isfinite(z)) z = 0.0f;  // a non-finite slip: forget rather than output NaN
     b.deflection = z;
@@ -196,7 +168,7 @@ inline void release_with_others(Bristle& bristle, float force, float held, float
     const float r2 = r * r;
     // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
     if (r2 > static_cast<float>(kDampingFadeCutoff)) return 0.0f;
-    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * exp_neg(r2);
+    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * std::exp(-r2);
 }
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
