@@ -65,7 +65,10 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     const float dt_s = static_cast<float>(c.dt_s);
     constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
-    const bool others_known = c.others_force != nullptr;
+    // The others' force is kept in this friction's units (before its gain and the device's),
+    // so that a gain change, which scales the friction too, is not taken for a push easing.
+    const bool others_known = c.others_force != nullptr && output_gain != 0;
+    const float inverse_gain = others_known ? 1.0f / output_gain : 0.0f;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
@@ -88,18 +91,19 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const bool at_rest = bristle.primed && position == bristle.anchor && b.offset == 0;
         float z = advance(bristle, position, surface_speed * dt_s, inverse_presliding);
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
-        const float others = others_known ? c.others_force[a] : c.applied_force != nullptr
+        const float others = c.others_force != nullptr ? c.others_force[a] : c.applied_force != nullptr
                                                                     ? c.applied_force[a] - state.guard[i].own
                                                                     : 0.0f;
         if (others_known) {
-            if (at_rest && state.others_known && output_gain != 0 && pos >= 0 && neg >= 0) {
+            const float pushed = others * inverse_gain;
+            if (at_rest && state.others_known && pos >= 0 && neg >= 0) {
                 const float bristle_force = -(z >= 0 ? pos : neg) * z;
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-                release_with_others(bristle, bristle_force, held, (others - state.others[i]) / output_gain);
+                release_with_others(bristle, bristle_force, held, pushed - state.others[i]);
                 z = bristle.deflection;
             }
-            state.others[i] = others;
+            state.others[i] = pushed;
         }
         const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;

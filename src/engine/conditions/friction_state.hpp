@@ -16,7 +16,8 @@ struct FrictionState {
     // friction: the stop guard of each block (stop_guard.hpp).
     StopGuard guard[kMaxAxes] = {};
     // The other effects' force along each block's line at the last tick (ConditionContext::
-    // others_force), what its stiction held against: friction_condition.cpp's release.
+    // others_force), what its stiction held against, in this effect's units (before its gain
+    // and the device's): friction_condition.cpp's release.
     float others[kMaxAxes] = {};
     bool others_known = false;
     // What every block shares at this tick period, recomputed only when it changes (issue

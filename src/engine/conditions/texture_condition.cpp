@@ -58,15 +58,16 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const float width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
     const float bump = static_cast<float>(texture_bump(s, t.spacing, width));
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
-    const bool others_known = c.others_force != nullptr;
-    const float others = others_known ? along(u, c.others_force) : 0.0f;
+    // The others' force in this texture's units, as for friction (friction_condition.cpp).
+    const bool others_known = c.others_force != nullptr && output_gain != 0;
+    const float pushed = others_known ? along(u, c.others_force) / output_gain : 0.0f;
     if (others_known) {
-        if (at_rest && state.others_known && output_gain != 0) {
+        if (at_rest && state.others_known) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
-            release_with_others(bristle, held, held, (others - state.others[0]) / output_gain);
+            release_with_others(bristle, held, held, pushed - state.others[0]);
             z = bristle.deflection;
         }
-        state.others[0] = others;
+        state.others[0] = pushed;
     }
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
