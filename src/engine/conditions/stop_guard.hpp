@@ -40,9 +40,9 @@
 //
 //   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude)
 //
-// F_others the other effects' force of the last tick. The next tick, if the handle did come
-// to rest (within a count of where the guard expected), the bristle is set to hold what
-// the other effects push with (nothing for a free handle): its anchor is where the handle
+// F_others the other effects' force of this tick (friction renders after them). The next
+// tick, if the handle did come to rest (within a count of where the guard expected), the
+// bristle is set to hold what the other effects push with (nothing for a free handle): its anchor is where the handle
 // stopped, and it holds it there with the bristle's own stiction. If it went on, something
 // the observer had not learned yet pushes it: the guard stands aside for 3τ.
 //
