@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include "busy_mix.hpp"
+#include "condition_mix.hpp"
 #include "feel/engine.hpp"
 
 namespace {
@@ -15,32 +16,12 @@ namespace {
 using namespace feel;
 using namespace feel::bench;
 
-EffectParams friction_on_xy(int32_t coefficient) {
-    EffectParams p;
-    p.type = EffectType::friction;
-    p.duration_us = kInfiniteUs;
-    p.axis_count = 2;
-    p.axes[0] = Axis::x;
-    p.axes[1] = Axis::y;
-    for (int i = 0; i < 2; ++i) {
-        p.conditions[i].pos_coefficient = coefficient;
-        p.conditions[i].neg_coefficient = coefficient;
-    }
-    return p;
-}
-
 void BM_TickFrictionEffects(benchmark::State& state) {
     const int effects = static_cast<int>(state.range(0));
-    EngineConfig config;
-    config.device_damping = 0.5f * 0.05f / 4.45f;  // the joystick's: the passivity-bound stiffness applies
-    config.device_mass = 0.15f * 0.05f / 4.45f;    // the joystick's: the stop guard runs
-    Engine engine(config);
-    for (int i = 0; i < effects; ++i) {
-        const CreateResult r = engine.create(friction_on_xy(1000 + 250 * i));
-        if (!r.error.ok() || !engine.start(r.id).ok()) {
-            state.SkipWithError("could not create the frictions");
-            return;
-        }
+    Engine engine(joystick_condition_config());  // the passivity-bound stiffness and the stop guard apply
+    if (!load_conditions(engine, EffectType::friction, effects)) {
+        state.SkipWithError("could not create the frictions");
+        return;
     }
     TickInput in;
     TickOutput out;

@@ -15,7 +15,11 @@
 //     MIX: peer_moving, peer_at_rest (bench/peer_mix.hpp's 40 effects),
 //          busy_64 (bench/busy_mix.hpp's 64 effects of every type, moving),
 //          estimator, estimator_velocity (the estimator alone on the slow circle,
-//          with and without the acceleration), estimator_at_rest
+//          with and without the acceleration), estimator_at_rest,
+//          friction_32, friction_0 (bench/bench_friction.cpp's 32 two-axis frictions on
+//          the joystick's damping and mass, and the same engine with none: friction's
+//          cost per effect is their difference over 32),
+//          damper_32 (the same with 32 two-axis dampers: what any condition costs)
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -23,6 +27,7 @@
 #include <vector>
 
 #include "busy_mix.hpp"
+#include "condition_mix.hpp"
 #include "feel/engine.hpp"
 #include "motion_estimator.hpp"
 #include "peer_mix.hpp"
@@ -81,7 +86,8 @@ int main(int argc, char** argv) {
     std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
     for (size_t k = 0; k < inputs.size(); ++k) {
         const int64_t n = static_cast<int64_t>(k) + 1;
-        if (std::strcmp(mix, "busy_64") == 0) {
+        if (std::strcmp(mix, "busy_64") == 0 || std::strncmp(mix, "friction_", 9) == 0 ||
+            std::strncmp(mix, "damper_", 7) == 0) {
             bench::move_handle(inputs[k], n);
             inputs[k].t_us = n * 1000;
         } else {
@@ -96,6 +102,14 @@ int main(int argc, char** argv) {
     } else if (std::strncmp(mix, "peer_", 5) == 0) {
         run.engine = std::make_unique<Engine>(EngineConfig{});
         if (!bench::load_peer_mix(*run.engine)) return 1;
+    } else if (std::strncmp(mix, "friction_", 9) == 0 || std::strncmp(mix, "damper_", 7) == 0) {
+        const bool friction = mix[0] == 'f';
+        const int count = std::atoi(mix + (friction ? 9 : 7));
+        run.engine = std::make_unique<Engine>(bench::joystick_condition_config());
+        if (!bench::load_conditions(*run.engine, friction ? EffectType::friction : EffectType::damper, count)) {
+            std::fprintf(stderr, "could not create the conditions\n");
+            return 1;
+        }
     } else if (std::strcmp(mix, "busy_64") == 0) {
         run.engine = std::make_unique<Engine>(EngineConfig{});
         const bench::BusyMixResult r = bench::load_busy_mix(*run.engine, 64);

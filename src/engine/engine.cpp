@@ -76,6 +76,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
+    s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
 }
@@ -254,6 +255,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.acceleration_scale = static_cast<float>(kFullScale) / m.config.acceleration_ref;
     condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
+    int32_t last_count = 0;
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
@@ -308,6 +310,10 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                 continue;  // its last force is not applied: the event is over
             }
         } else if (cls == EffectClass::condition) {
+            if (s.renders_last) {
+                m.last_slots[last_count++] = {i, clock.tau_us};
+                continue;
+            }
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;
@@ -329,9 +335,32 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
     }
 
+    const float device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
+    if (last_count > 0) {
+        // Friction and texture, once the others' force of this tick is known: each sees the
+        // sum of everything rendered before it, at the motors' scale.
+        float others[kMaxAxes] = {};
+        for (int a = 0; a < axes; ++a) others[a] = sum[a] * device_gain;
+        condition.others_force = others;
+        for (int32_t k = 0; k < last_count; ++k) {
+            Slot& s = m.slots[m.last_slots[k].index];
+            condition.params = &s.params;
+            condition.start_position = s.start_position;
+            condition.direction = s.direction;
+            condition.tau_us = m.last_slots[k].tau_us;
+            condition.state = &s.condition;
+            condition.curves = s.curves;
+            float force[kMaxAxes] = {};
+            s.render_condition(condition, force);
+            for (int a = 0; a < axes; ++a) {
+                sum[a] += force[a] * s.gain_factor;
+                others[a] += force[a] * s.gain_factor * device_gain;
+            }
+        }
+    }
+
     // Paused or actuators off: the motors get nothing (sum is zero while paused anyway).
     const bool output_on = m.actuators_enabled && !m.paused;
-    const float device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     constexpr float kLimit = static_cast<float>(kFullScale);
     out.saturated = false;
     for (int a = 0; a < kMaxAxes; ++a) {

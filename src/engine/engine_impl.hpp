@@ -28,6 +28,9 @@ struct Slot {
     float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
     detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
+    // Friction and texture render after every other effect of the tick: their stiction holds
+    // against what the others push with this tick (ConditionContext::others_force).
+    bool renders_last = false;
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;
@@ -76,6 +79,7 @@ struct Engine::Impl {
           config_error(detail::check_engine_config(c)),
           slot_count(config_error ? 0 : c.max_effects),
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
+          last_slots(new LastSlot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
           samples(config_error ? 0 : c.max_samples, slot_count),
           report_capacity(config_error ? 1 : c.report_capacity),
           reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
@@ -174,6 +178,12 @@ struct Engine::Impl {
     Error config_error;
     int32_t slot_count;
     std::unique_ptr<detail::Slot[]> slots;
+    // The tick's slots that render last (Slot::renders_last), gathered during its first pass.
+    struct LastSlot {
+        int32_t index = 0;
+        int64_t tau_us = 0;
+    };
+    std::unique_ptr<LastSlot[]> last_slots;
     int32_t slot_end = 0;  // every slot from here on is free: the tick looks no further
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;

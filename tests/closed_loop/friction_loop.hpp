@@ -25,14 +25,17 @@ struct LoopRow {
 };
 
 // Runs `effects` on `profile_name` held by `grip` following `motion` for duration_s at
-// rate_hz. set_velocity, if nonzero, is the handle's velocity on x at the start.
+// rate_hz. set_velocity, if nonzero, is the handle's velocity on x at the start. With
+// mass_known false the engine is told no device_mass, as a device that does not say it.
 inline std::vector<LoopRow> run_loop(const char* profile_name, sim::Grip grip, const std::string& motion,
                                      std::initializer_list<EffectParams> effects, double duration_s,
-                                     double rate_hz = 1000, double set_velocity = 0) {
+                                     double rate_hz = 1000, double set_velocity = 0, bool mass_known = true) {
     const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
     sim::SimDevice device(profile, grip, sim::TargetMotion::parse(motion, duration_s, profile.axis_count));
     if (set_velocity != 0) device.set_velocity(0, set_velocity);
-    Engine engine(sim::engine_config_for(profile));
+    EngineConfig config = sim::engine_config_for(profile);
+    if (!mass_known) config.device_mass = 0.0f;
+    Engine engine(config);
     for (const EffectParams& p : effects) {
         const CreateResult r = engine.create(p);
         EXPECT_TRUE(r.error.ok()) << r.error.message();
@@ -105,6 +108,20 @@ inline EffectParams constant_force_on_x(int32_t magnitude) {
     p.axis_count = 1;
     p.axes[0] = Axis::x;
     p.constant.magnitude = magnitude;
+    return p;
+}
+
+// A texture (§3.6) on x.
+inline EffectParams texture_on_x(int32_t pos_roughness, int32_t neg_roughness, int32_t spacing, int32_t density) {
+    EffectParams p;
+    p.type = EffectType::texture;
+    p.duration_us = kInfiniteUs;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    p.texture.pos_roughness = pos_roughness;
+    p.texture.neg_roughness = neg_roughness;
+    p.texture.spacing = spacing;
+    p.texture.density = density;
     return p;
 }
 

@@ -60,19 +60,6 @@ TEST(ReviewCases, ABarrierResistsLinearlyWithPenetrationThenPopsAtHalfItsThickne
     }
 }
 
-EffectParams texture_on_x(int32_t pos_roughness, int32_t neg_roughness, int32_t spacing, int32_t density) {
-    EffectParams p;
-    p.type = EffectType::texture;
-    p.duration_us = kInfiniteUs;
-    p.axis_count = 1;
-    p.axes[0] = Axis::x;
-    p.texture.pos_roughness = pos_roughness;
-    p.texture.neg_roughness = neg_roughness;
-    p.texture.spacing = spacing;
-    p.texture.density = density;
-    return p;
-}
-
 TEST(ReviewCases, TheTextureGridIsAGratingInSpaceWithAnIntensityPerDirection) {
     // §3.6: "a Texture gives a periodic spatial grating that is felt as the user moves the
     // interface device through a region. A different intensity can be felt in the positive

@@ -41,7 +41,7 @@ ConditionLaw condition_renderer(const EffectParams& params) noexcept {
             case EffectType::spring: return directed<spring_condition>;
             case EffectType::damper: return directed<damper_condition>;
             case EffectType::inertia: return directed<inertia_condition>;
-            default: return directed<in_double<friction_condition>>;  // is_directed_condition: the four
+            default: return directed<friction_condition>;  // is_directed_condition: the four
         }
     }
     switch (params.type) {
@@ -49,8 +49,8 @@ ConditionLaw condition_renderer(const EffectParams& params) noexcept {
         case EffectType::angle_spring: return spring_condition;
         case EffectType::damper: return damper_condition;
         case EffectType::inertia: return inertia_condition;
-        case EffectType::friction: return in_double<friction_condition>;
-        case EffectType::texture: return in_double<texture_condition>;
+        case EffectType::friction: return friction_condition;
+        case EffectType::texture: return texture_condition;
         case EffectType::axis_wall:
         case EffectType::angle_wall: return in_double<wall_condition>;
         case EffectType::axis_barrier:

@@ -51,6 +51,10 @@ struct ConditionContext {
     float acceleration_scale = 0.0f;        // kFullScale / acceleration_ref
     int axes = kMaxAxes;                    // the device's axes: forces beyond them are 0
     const float* applied_force = nullptr;   // [kMaxAxes] the engine's force of the previous tick (friction's stop guard)
+    // [kMaxAxes] friction and texture (rendered last): this tick's force of the effects
+    // rendered before them, device gain included, what their stiction holds against; null
+    // when unknown.
+    const float* others_force = nullptr;
     float device_gain = 1.0f;               // the device gain as a fraction (0..1)
 };
 
@@ -63,8 +67,8 @@ struct ConditionContext {
 void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;   // spring, angle_spring
 void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void inertia_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
-void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;
-void texture_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;
+void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
+void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void wall_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;     // axis_wall, angle_wall
 void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;  // axis_barrier, angle_barrier
 

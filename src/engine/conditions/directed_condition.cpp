@@ -42,6 +42,8 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
     start_position[line] = along(u, c.start_position);
     float applied[kMaxAxes] = {};
     if (c.applied_force != nullptr) applied[line] = along(u, c.applied_force);
+    float others[kMaxAxes] = {};
+    if (c.others_force != nullptr) others[line] = along(u, c.others_force);
 
     ConditionContext on_line = c;
     on_line.position = position;
@@ -49,6 +51,7 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
     on_line.acceleration = acceleration;
     on_line.start_position = start_position;
     on_line.applied_force = applied;
+    on_line.others_force = c.others_force != nullptr ? others : nullptr;
 
     float per_axis[kMaxAxes] = {};
     law(on_line, per_axis);

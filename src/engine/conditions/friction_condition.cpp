@@ -11,7 +11,9 @@
 // around, the force passes through zero along the presliding spring. A free handle coming
 // to rest gets, at the last tick, only the force that stops it, and the bristle is then
 // anchored where it stopped (stop_guard.hpp): the bristle's stored force never throws it
-// back. A negative
+// back. And a handle held still by the other effects' push is let go with the push: when
+// they push less, the bristle at once holds less by as much (release_with_others below), so
+// it never throws the handle back either; this needs no mass. A negative
 // coefficient pushes the handle along its motion instead: an energy source, allowed
 // because the primer's range allows it.
 //
@@ -31,72 +33,99 @@ namespace feel::detail {
 namespace {
 
 // 0 inside the deadband, 1 beyond twice the deadband, a smoothstep between.
-double deadband_gate(double relative_speed, double deadband) noexcept {
-    if (!(deadband > 0)) return 1.0;
-    double t = (std::fabs(relative_speed) - deadband) / deadband;
-    if (t <= 0) return 0.0;
-    if (t >= 1) return 1.0;
-    return t * t * (3.0 - 2.0 * t);
+float deadband_gate(float relative_speed, float deadband) noexcept {
+    if (!(deadband > 0)) return 1.0f;
+    const float t = (std::fabs(relative_speed) - deadband) / deadband;
+    if (t <= 0) return 0.0f;
+    if (t >= 1) return 1.0f;
+    return t * t * (3.0f - 2.0f * t);
+}
+
+// What every block of a friction shares at tick period dt_s.
+void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s) noexcept {
+    state.guard_tick = stop_guard_tick(config, dt_s);
+    const PreslidingRule rule = presliding_rule(config, dt_s);
+    state.passive = static_cast<float>(rule.passive);
+    state.cap = static_cast<float>(rule.cap);
+    state.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
+    state.tick_dt_s = dt_s;
 }
 
 }  // namespace
 
-void friction_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     const EngineConfig& config = *c.config;
-    // Single precision (issue 14): the forces are within ±10000 and a bristle's state is
-    // float; what is per tick rather than per block is computed once here.
-    const PreslidingRule rule = presliding_rule(config, c.dt_s);
-    const float passive = static_cast<float>(rule.passive), cap = static_cast<float>(rule.cap);
+    // Single precision (issue 14); what is per tick rather than per block is computed once.
+    FrictionState& state = c.state->friction;
+    if (state.tick_dt_s != c.dt_s) remember_tick(state, config, c.dt_s);
+    const StopGuardTick& guard = state.guard_tick;
+    const float passive = state.passive, cap = state.cap, inverse_fade_speed = state.inverse_fade_speed;
     const float velocity_ref = config.velocity_ref;
-    const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * velocity_ref);
     const float dt_s = static_cast<float>(c.dt_s);
     constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
-    FrictionState& state = c.state->friction;
-    if (state.guard_tick_dt_s != c.dt_s) {
-        state.guard_tick = stop_guard_tick(config, c.dt_s);
-        state.guard_tick_dt_s = c.dt_s;
-    }
-    const StopGuardTick& guard = state.guard_tick;
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
+    // The others' force is kept in this friction's units (before its gain and the device's),
+    // so that a gain change, which scales the friction too, is not taken for a push easing.
+    const bool others_known = c.others_force != nullptr && output_gain != 0;
+    const float inverse_gain = others_known ? 1.0f / output_gain : 0.0f;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionBlock& b = p.conditions[i];
+        Bristle& bristle = state.bristle[i];
+        const float position = c.position[a];
         const float pos = static_cast<float>(b.pos_coefficient), neg = static_cast<float>(b.neg_coefficient);
         // (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must
         // be honoured, and nothing here is NaN.)
         const float magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
-        // presliding_stiffness in float: K = min(max(2b/T, f / kMaxPresliding), cap).
-        float stiffness = 0.0f, presliding = 0.0f;
+        // presliding_stiffness in float: K = min(max(2b/T, f / kMaxPresliding), cap), Z = f/K.
+        float stiffness = 0.0f, inverse_presliding = 0.0f;
         if (magnitude > 0) {
             const float guarded = magnitude * kMinStiffnessPerForce;
             stiffness = passive > guarded ? passive : guarded;
             if (stiffness > cap) stiffness = cap;
-            presliding = magnitude / stiffness;
+            inverse_presliding = stiffness / magnitude;
         }
         const float surface_speed =
             b.offset == 0 ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
-        const float z = advance(c.state->friction.bristle[i], c.position[a], surface_speed * dt_s, presliding);
+        const bool at_rest = bristle.primed && position == bristle.anchor && b.offset == 0;
+        float z = advance(bristle, position, surface_speed * dt_s, inverse_presliding);
+        const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
+        const float others = c.others_force != nullptr ? c.others_force[a] : c.applied_force != nullptr
+                                                                    ? c.applied_force[a] - state.guard[i].own
+                                                                    : 0.0f;
+        if (others_known) {
+            const float pushed = others * inverse_gain;
+            if (at_rest && state.others_known && pos >= 0 && neg >= 0) {
+                const float bristle_force = -(z >= 0 ? pos : neg) * z;
+                const float limit = z >= 0 ? pos_limit : neg_limit;
+                const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
+                release_with_others(bristle, bristle_force, held, pushed - state.others[i]);
+                z = bristle.deflection;
+            }
+            state.others[i] = pushed;
+        }
         const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
         float f = -(toward_positive ? pos : neg) * z;
-        if (presliding > 0 && dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        if (inverse_presliding > 0 && dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
         if (b.deadband > 0) {
-            f *= static_cast<float>(deadband_gate(scaled_velocity(config, relative_velocity), b.deadband));
+            f *= deadband_gate(relative_velocity * c.velocity_scale, static_cast<float>(b.deadband));
         }
-        const float limit = static_cast<float>(toward_positive ? b.pos_saturation : b.neg_saturation);
+        const float limit = toward_positive ? pos_limit : neg_limit;
         f = f > limit ? limit : (f < -limit ? -limit : f);
         if (guard.on && c.applied_force != nullptr && b.offset == 0 && b.deadband == 0) {
             // A free handle coming to rest gets only what stops it (stop_guard.hpp).
-            StopGuard& g = c.state->friction.guard[i];
-            const float guarded = guard_stop(g, c.state->friction.bristle[i], guard, c.position[a],
-                                             c.applied_force[a], f, magnitude, pos, neg);
-            const float side = static_cast<float>(guarded >= 0 ? b.neg_saturation : b.pos_saturation);
+            StopGuard& g = state.guard[i];
+            const float guarded = guard_stop(g, bristle, guard, position, c.applied_force[a], others, f, magnitude,
+                                             pos, neg);
+            const float side = guarded >= 0 ? static_cast<float>(b.neg_saturation) : pos_limit;
             f = guarded > side ? side : (guarded < -side ? -side : guarded);
             remember_output(g, f, output_gain);
         }
-        force[a] += static_cast<double>(f);
+        force[a] += f;
     }
+    state.others_known = others_known;
 }
 
 }  // namespace feel::detail

@@ -56,6 +56,7 @@
 // that prevents it.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "feel/engine.hpp"
@@ -106,9 +107,52 @@ struct PreslidingRule {
 
 // Moves the bristle with the handle now at `position` (along the bristle's line, position
 // units), less `slip` (how far the surface itself moved since the last tick, for a
-// friction with a velocity offset). Returns the new deflection z. Single precision (issue
-// 14): z is kept in float anyway, and a step's travel is a few counts.
-float advance(Bristle& b, float position, float slip, float presliding) noexcept;
+// friction with a velocity offset), over a presliding distance 1/inverse_presliding
+// (inverse_presliding 0: none, the bristle flips at once). Returns the new deflection z.
+// Single precision (issue 14): z is kept in float anyway, and a step's travel is a few
+// counts.
+[[nodiscard]] inline float advance(Bristle& b, float position, float slip, float inverse_presliding) noexcept {
+    if (!b.primed || !std::isfinite(position)) {
+        if (std::isfinite(position)) {
+            b.anchor = position;
+            b.primed = true;
+        }
+        return b.deflection;
+    }
+    const float dx = position - b.anchor - slip;
+    b.anchor = position;
+    float z = b.deflection;
+    // Fully slid in the direction of travel: the exact update leaves z at ±1 (the common
+    // case while sliding), so skip its exponential.
+    if ((z == 1.0f && dx >= 0) || (z == -1.0f && dx <= 0)) return z;
+    if (!(inverse_presliding > 0)) {
+        if (dx > 0) z = 1.0f;
+        if (dx < 0) z = -1.0f;
+    } else if (dx > 0) {
+        z = 1.0f + (z - 1.0f) * std::exp(-dx * inverse_presliding);
+    } else if (dx < 0) {
+        z = -1.0f + (z + 1.0f) * std::exp(dx * inverse_presliding);
+    }
+    if (!std::isfinite(z)) z = 0.0f;  // a non-finite slip: forget rather than output NaN
+    b.deflection = z;
+    return z;
+}
+
+// Stiction lets go with the push it held (issue 16 §1). Called when the handle has not
+// moved this tick, so the bristle holds it against the other effects (and whatever else
+// pushes it). When the others push less against the bristle (their force changed by
+// `change`, in this friction's force units, with the sign of the bristle's force), the
+// bristle holds less by as much, at once: Coulomb's static friction is whatever balances
+// the push, while a Dahl bristle alone keeps its deflection and throws the handle back when
+// the push ends (the joystick, friction 6000, a push of 3000 or 5000 held and released: 7
+// to 123 units back with the stop guard, 76 to 1403 without it). `held` is what the bristle
+// applied (after its saturation), `force` its unsaturated -c·z. Needs no mass: the engine
+// knows its own effects' forces (ConditionContext::others_force).
+inline void release_with_others(Bristle& bristle, float force, float held, float change) noexcept {
+    if (!(force * change > 0)) return;  // the push grew: the bristle loads as usual
+    const float ratio = (held - change) / force;
+    bristle.deflection *= ratio > 0 ? ratio : 0.0f;
+}
 
 // The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force
 // units per position unit) at deflection z, the handle moving at `velocity` (units/s)
@@ -116,7 +160,16 @@ float advance(Bristle& b, float position, float slip, float presliding) noexcept
 [[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
 // The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller, in
 // single precision.
-[[nodiscard]] float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept;
+[[nodiscard]] inline float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept {
+    if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0f;
+    const float rate = velocity * (1.0f - z * (velocity > 0 ? 1.0f : -1.0f));
+    if (rate == 0) return 0.0f;  // fully slid along the motion: no bristle rate to damp
+    const float r = velocity * inverse_fade_speed;
+    const float r2 = r * r;
+    // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
+    if (r2 > static_cast<float>(kDampingFadeCutoff)) return 0.0f;
+    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * std::exp(-r2);
+}
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
 // multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine

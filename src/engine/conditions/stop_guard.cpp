@@ -40,16 +40,15 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
     return t;
 }
 
-float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float force,
-                 float f, float pos_coefficient, float neg_coefficient) noexcept {
-    if (!t.on || !std::isfinite(position) || !std::isfinite(applied)) return force;
+float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float others,
+                 float force, float f, float pos_coefficient, float neg_coefficient) noexcept {
+    if (!t.on || !std::isfinite(position) || !std::isfinite(applied) || !std::isfinite(others)) return force;
     if (!g.primed) {
         g = StopGuard{};
         g.position = position;
         g.primed = true;
         return force;
     }
-    const float others = applied - g.own;  // the other effects' force, as at the last tick
     // Predict with the force the motors applied, then correct with the sensed position.
     const float acceleration = (applied + g.external - t.damping * g.velocity) / t.mass;
     const float predicted = g.position + g.velocity * t.dt + 0.5f * acceleration * t.dt * t.dt;

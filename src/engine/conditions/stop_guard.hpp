@@ -40,9 +40,9 @@
 //
 //   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude)
 //
-// F_others the other effects' force of the last tick. The next tick, if the handle did come
-// to rest (within a count of where the guard expected), the bristle is set to hold what
-// the other effects push with (nothing for a free handle): its anchor is where the handle
+// F_others the other effects' force of this tick (friction renders after them). The next
+// tick, if the handle did come to rest (within a count of where the guard expected), the
+// bristle is set to hold what the other effects push with (nothing for a free handle): its anchor is where the handle
 // stopped, and it holds it there with the bristle's own stiction. If it went on, something
 // the observer had not learned yet pushes it: the guard stands aside for 3τ.
 //
@@ -96,11 +96,13 @@ struct StopGuardTick {
 [[nodiscard]] StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept;
 
 // One block's friction along its line: `position` sensed, `applied` the engine's force of the
-// last tick along the line, `force` the friction about to be applied (after its saturation),
-// `f` its magnitude. Returns `force`, or the force that brings the handle to rest. May set the
-// bristle's deflection (after a stop). Call remember_output with what was finally applied.
+// last tick along the line, `others` the other effects' force this tick (ConditionContext::
+// others_force; without it, the last tick's: applied less this friction's share), `force` the
+// friction about to be applied (after its saturation), `f` its magnitude. Returns `force`, or
+// the force that brings the handle to rest. May set the bristle's deflection (after a stop).
+// Call remember_output with what was finally applied.
 [[nodiscard]] float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position,
-                               float applied, float force, float f, float pos_coefficient,
+                               float applied, float others, float force, float f, float pos_coefficient,
                                float neg_coefficient) noexcept;
 
 // The friction's share of the engine's force this tick: its force times the effect's and

@@ -10,6 +10,13 @@
 //           while z < 0 (the bristle's microdamping scaled by the bump, friction_model.hpp)
 //   F     = F_s along the line (on each axis a, F_s·u_a)
 //
+// A texture is friction, so it lets go as friction does (issue 16 §1): a handle held still
+// on a bump by the other effects is let go with their push (release_with_others,
+// friction_model.hpp). The stop guard of friction (stop_guard.hpp) is not applied: its test
+// of a free handle (the force on it besides the engine's, learned by an observer with a
+// 3 ms lag) mistook a hand dragging the handle onto a bump's rising force for a free stop
+// (docs/conditions.md, "Limits").
+//
 // The primer calls a texture "a spatially varying resistance" (§3.1) whose intensity can
 // differ with the direction of travel (§3.6): here every bump is a patch of friction of
 // strength R·bump(s). Dragged across the grating the handle meets a resistance that rises
@@ -31,23 +38,43 @@
 
 namespace feel::detail {
 
-void texture_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
     const TextureBlock& t = p.texture;
-    double u[kMaxAxes] = {};
+    FrictionState& state = c.state->friction;
+    float u[kMaxAxes] = {};
     if (p.axis_count == 1) {
-        u[device_axis(c, 0)] = 1.0;
+        u[device_axis(c, 0)] = 1.0f;
     } else {
         condition_line(c, u);
     }
-    const double s = along(u, c.position);
-    const double roughness = t.pos_roughness > t.neg_roughness ? t.pos_roughness : t.neg_roughness;
-    const double presliding = presliding_distance(*c.config, c.dt_s, roughness);
-    const double z = advance(c.state->friction.bristle[0], static_cast<float>(s), 0.0f, static_cast<float>(presliding));
-    const double width = static_cast<double>(t.spacing) * t.density / kFullScale;
-    const double bump = texture_bump(s, t.spacing, width);
-    double f = -(z >= 0 ? t.pos_roughness : t.neg_roughness) * bump * z;
-    if (presliding > 0 && c.dt_s > 0) f += bristle_damping(*c.config, roughness * bump / presliding, z, along(u, c.velocity));
+    const float s = along(u, c.position);
+    const float pos = static_cast<float>(t.pos_roughness), neg = static_cast<float>(t.neg_roughness);
+    const float roughness = pos > neg ? pos : neg;
+    const float presliding = static_cast<float>(presliding_distance(*c.config, c.dt_s, roughness));
+    Bristle& bristle = state.bristle[0];
+    const bool at_rest = bristle.primed && s == bristle.anchor;
+    float z = advance(bristle, s, 0.0f, presliding > 0 ? 1.0f / presliding : 0.0f);
+    const float width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
+    const float bump = static_cast<float>(texture_bump(s, t.spacing, width));
+    const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
+    // The others' force in this texture's units, as for friction (friction_condition.cpp).
+    const bool others_known = c.others_force != nullptr && output_gain != 0;
+    const float pushed = others_known ? along(u, c.others_force) / output_gain : 0.0f;
+    if (others_known) {
+        if (at_rest && state.others_known) {
+            const float held = -(z >= 0 ? pos : neg) * bump * z;
+            release_with_others(bristle, held, held, pushed - state.others[0]);
+            z = bristle.deflection;
+        }
+        state.others[0] = pushed;
+    }
+    state.others_known = others_known;
+    float f = -(z >= 0 ? pos : neg) * bump * z;
+    if (presliding > 0 && c.dt_s > 0) {
+        const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * c.config->velocity_ref);
+        f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), inverse_fade_speed);
+    }
     for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
 }
 

@@ -191,5 +191,36 @@ TEST_F(Friction, ThePresslidingDistanceFollowsTheTickAndTheDevice) {
     EXPECT_NEAR(tick_at(1000).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
 }
 
+TEST_F(Friction, StictionLetsGoWithThePushItHeld) {
+    // Coulomb's static friction is whatever balances the push on a handle at rest, no more
+    // (§3.5: friction only resists motion). The handle is dragged 300 units into the bristle
+    // and held there while a constant effect pushes it; when the push ends, the friction's
+    // force changes by exactly the push at that very tick, and if that would turn it
+    // around it lets go to 0 instead. (device_mass 0: the stop guard is off, this needs no
+    // mass.)
+    EngineConfig config = joystick_config();
+    config.device_mass = 0;
+    const double Z = presliding(6000);
+    const double held = -6000 * bristle(0, 300, Z);  // about -2570
+    for (int32_t push : {2000, 3000}) {
+        SCOPED_TRACE(push);
+        reset(config);
+        play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+        EffectParams constant;
+        constant.type = EffectType::constant;
+        constant.duration_us = kInfiniteUs;
+        constant.axis_count = 1;
+        constant.axes[0] = Axis::x;
+        constant.constant.magnitude = push;
+        const EffectId pushing = play(constant);
+        tick_at(0);
+        tick_at(300);
+        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], push + held, 1.0);
+        ASSERT_TRUE(engine_->stop(pushing).ok());
+        const double expected = push + held < 0 ? push + held : 0.0;  // eased by the push, never turned
+        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], expected, 1.0) << k;
+    }
+}
+
 }  // namespace
 }  // namespace feel::test
