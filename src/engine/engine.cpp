@@ -78,6 +78,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
+    s.dynamic.prepared = false;
 }
 
 namespace {

@@ -77,9 +77,11 @@ void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stret
     state.side = side;
 }
 
-// Advances the stretch (s, ṡ) by h within one piece, switching regions at the edges.
-void advance_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate, const HandlePath& path,
-                   double h, double hysteresis, bool piecewise) noexcept {
+}  // namespace
+
+void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
+                          const HandlePath& path, double h, double hysteresis) noexcept {
+    const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
     const double rest_force = free_force(law, path);
     double remaining = h;
     int32_t switches = 0;
@@ -120,8 +122,6 @@ void advance_piece(const TetherLaw& law, TetherAxisState& state, double& s, doub
     }
 }
 
-}  // namespace
-
 double rest_stretch(const TetherLaw& law) noexcept {
     const double weight = law.mass * law.gravity;
     if (weight > 0) return law.length + weight / law.k_pos;
@@ -147,28 +147,6 @@ int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noe
     if (e > hysteresis) return 1;
     if (e < -hysteresis) return -1;
     return 0;
-}
-
-double advance_tether(const TetherLaw& law, TetherAxisState& state, HandlePath path, double h,
-                      double hysteresis) noexcept {
-    if (!(h > 0)) return 0.0;
-    const double u = path.velocity;
-    const double s0 = state.position - path.position;
-    const double rate0 = state.velocity - u;
-    // Different stiffnesses either side of 0, or free play: the law is piecewise.
-    const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
-    const SpringDamper stiffest{law.mass, std::max(law.k_pos, law.k_neg), 0.0, 0.0};
-    const int32_t pieces = tether_substeps(stiffest, h, kMaxTetherSubsteps);
-    const double piece = h / pieces;
-    double s = s0;
-    double rate = rate0;
-    for (int32_t i = 0; i < pieces; ++i) advance_piece(law, state, s, rate, path, piece, hysteresis, piecewise);
-    // The handle moved u·h over the step; the mass's absolute state follows from the stretch.
-    state.position = s + path.position + u * h;
-    state.velocity = rate + u;
-    const double dv = rate - rate0;
-    const double dx = (s - s0) + u * h;
-    return law.mass * dv - law.mass * law.gravity * h + law.drag * dx;
 }
 
 }  // namespace feel::detail

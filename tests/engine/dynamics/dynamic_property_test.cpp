@@ -190,18 +190,27 @@ RC_GTEST_PROP(ControlLawProperty, AnUndrivenTetherNeverGainsEnergy, ()) {
         const double stretch = std::max(std::fabs(s) - static_cast<double>(b.length), 0.0);
         return std::max(kp, kn) * stretch * us + m * std::fabs(v) * uv;
     };
+    // The outputs are the simulated state itself, which is float (docs/dynamics.md,
+    // "Precision"): every tick rounds it, so its energy takes a random walk of steps of
+    // about one rounding around the true, never-growing energy. From the lowest energy
+    // seen, n ticks later it may stand some sqrt(n) roundings higher; a creep (a systematic
+    // gain) grows as n and is still caught.
     const TickOutput first = rig.tick({0, 0, 0});
     double e = energy(first.mass_position[0], first.mass_velocity[0]);
     double slack = rounding(first.mass_position[0], first.mass_velocity[0]);
     const double floor = 1e-12 * e;  // once it has all but stopped, rounding of the rest
+    int since_lowest = 0;
     for (int n = 0; n < 400; ++n) {
         const TickOutput out = rig.tick({0, 0, 0});
         const double e1 = energy(out.mass_position[0], out.mass_velocity[0]);
         const double r = rounding(out.mass_position[0], out.mass_velocity[0]);
-        RC_ASSERT(e1 <= e * (1 + 1e-9) + slack + r + floor);
+        ++since_lowest;
+        const double walk = 4 * std::sqrt(static_cast<double>(since_lowest)) * std::max(slack, r);
+        RC_ASSERT(e1 <= e * (1 + 1e-9) + slack + r + walk + floor);
         if (e1 < e) {  // compare against the lowest seen, so a slow creep is caught too
             e = e1;
             slack = r;
+            since_lowest = 0;
         }
     }
 }
