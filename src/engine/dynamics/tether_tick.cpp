@@ -41,6 +41,18 @@ bool may_have_crossed(Region r, float length, float s1, float rate0, float rate1
     return !(s1 < length && s1 > -length) || !(rate0 * rate1 > 0);
 }
 
+// Whether a stretched region's motion from local (y, v) (y measured from the region's edge)
+// stays clear of the edge however long it runs: with a constant force f the energy about
+// the equilibrium y_eq = f/k, ½·k·(y − y_eq)² + ½·m·v², never grows (damping only takes),
+// so y never leaves y_eq ± R, R² = (y − y_eq)² + m·v²/k. Clear when that whole interval is
+// on the region's side (`outward` +1 above, −1 below).
+bool stays_clear(float outward, float k, float m, float f, float y, float v) noexcept {
+    const float equilibrium = f / k;
+    if (!(equilibrium * outward > 0)) return false;
+    const float offset = y - equilibrium;
+    return offset * offset + m * v * v / k < equilibrium * equilibrium;
+}
+
 float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
     const float weight = t.mass * gravity;
     if (weight > 0) return t.length + weight / t.k_pos;
@@ -94,7 +106,11 @@ TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept {
 void prepare_pieces(PreparedTether& t, double step_s) noexcept {
     // The parameters as the float law holds them, so the exact pieces agree with these.
     const double m = t.mass, drag = t.drag, taut = static_cast<double>(t.b) + t.drag;
-    t.pieces = tether_substeps({m, std::max<double>(t.k_pos, t.k_neg), 0.0, 0.0}, step_s, kMaxTetherSubsteps);
+    // Pieces with ω·h ≤ 1 are needed to see every edge and every half cycle; a law with one
+    // region that counts none is exact in one piece of any length.
+    const bool watched = t.piecewise || t.half_cycles > 0;
+    t.pieces = watched ? tether_substeps({m, std::max<double>(t.k_pos, t.k_neg), 0.0, 0.0}, step_s, kMaxTetherSubsteps)
+                       : 1;
     const double piece = step_s / t.pieces;
     t.below = tether_propagator({m, static_cast<double>(t.k_neg), taut, 0.0}, piece);
     t.above = tether_propagator({m, static_cast<double>(t.k_pos), taut, 0.0}, piece);
@@ -122,7 +138,9 @@ float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxis
         float y = s - origin;
         float v = rate;
         propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
-        if (t.piecewise && may_have_crossed(r, t.length, y + origin, rate, v)) {
+        if (t.piecewise && may_have_crossed(r, t.length, y + origin, rate, v) &&
+            !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f, r == Region::above ? t.k_pos : t.k_neg,
+                                                t.mass, taut_force, s - origin, rate))) {
             // An edge may lie within the piece: the exact piece finds it (double, rare).
             double s_exact = s;
             double rate_exact = rate;
