@@ -15,10 +15,9 @@
 // Each region is a linear spring-damper, solved exactly by tether_step. A step is cut into
 // pieces with ω·h ≤ 1 (ω = √(max k±/M)). Each tick applies each region's exact solution as
 // a float propagator (tether_tick.hpp); in a piece where an edge may lie, tether_crossing
-// finds the moment
-// the stretch reaches an edge of the play (or 0, when k_pos ≠ k_neg and there is no play),
-// the piece is split there, the stretch is set exactly onto the edge and the next region
-// carries on. Rather than chase a mass that grazes an edge endlessly (a Zeno sequence of
+// finds the moment the stretch reaches an edge of the play (or 0, when k_pos ≠ k_neg and
+// there is no play), the piece is split there, the stretch is set exactly onto the edge
+// and the next region carries on. Rather than chase a mass that grazes an edge endlessly (a Zeno sequence of
 // crossings), a piece takes at most kMaxRegionSwitches switches and finishes the rest of
 // its time in the region it is in.
 #pragma once
