@@ -10,11 +10,7 @@ namespace feel::detail {
 
 namespace {
 
-enum class Region : uint8_t {
-    below,  // s < −length: the tether is stretched negatively, k_neg
-    slack,  // |s| < length: free play
-    above,  // s > +length: stretched positively, k_pos
-};
+using Region = TetherRegion;
 
 // The force on a mass that moves with the handle (in the handle's frame ṡ = 0 means
 // ẋ = u), apart from the spring: gravity, the drag of moving at u, and the tether damper
@@ -28,24 +24,8 @@ double slack_force(const TetherLaw& law, const HandlePath& path) noexcept {
     return law.mass * law.gravity - law.drag * path.velocity;
 }
 
-// The region a stretch is in. On an edge, the side the motion leaves to decides (the sign
-// of ṡ, else of the force at rest), so that a mass set onto an edge by a crossing goes on
-// into the region it was heading for.
 Region classify(const TetherLaw& law, double s, double rate, double rest_force) noexcept {
-    const double edge = law.length;
-    if (edge > 0) {
-        if (s > edge) return Region::above;
-        if (s < -edge) return Region::below;
-        if (s > -edge && s < edge) return Region::slack;
-        const double out = s > 0 ? 1.0 : -1.0;  // on +edge, outward is +
-        const double leaving = rate != 0 ? rate : rest_force;
-        if (leaving * out > 0) return s > 0 ? Region::above : Region::below;
-        return Region::slack;
-    }
-    if (s > 0) return Region::above;
-    if (s < 0) return Region::below;
-    if (rate != 0) return rate > 0 ? Region::above : Region::below;
-    return rest_force >= 0 ? Region::above : Region::below;
+    return tether_region(law.length, s, rate, rest_force);
 }
 
 // The linear segment of a region, in its local coordinate y: s − length above, s + length

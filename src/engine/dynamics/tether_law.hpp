@@ -63,6 +63,34 @@ inline constexpr int32_t kMaxTetherSubsteps = 128;
 // At most this many edge crossings handled per piece.
 inline constexpr int32_t kMaxRegionSwitches = 8;
 
+// The three regions of the law.
+enum class TetherRegion : uint8_t {
+    below,  // s < −length: the tether is stretched negatively, k_neg
+    slack,  // |s| < length: free play
+    above,  // s > +length: stretched positively, k_pos
+};
+
+// The region a stretch s is in (in double for the exact piece, in float for the tick). On
+// an edge, the side the motion leaves to decides (the sign of ṡ, else of the force at
+// rest), so that a mass set onto an edge by a crossing goes on into the region it was
+// heading for. Without play (length 0), the sign of the stretch.
+template <typename T>
+[[nodiscard]] TetherRegion tether_region(T length, T s, T rate, T rest_force) noexcept {
+    if (length > 0) {
+        if (s > length) return TetherRegion::above;
+        if (s < -length) return TetherRegion::below;
+        if (s > -length && s < length) return TetherRegion::slack;
+        const T out = s > 0 ? T(1) : T(-1);  // on +edge, outward is +
+        const T leaving = rate != 0 ? rate : rest_force;
+        if (leaving * out > 0) return s > 0 ? TetherRegion::above : TetherRegion::below;
+        return TetherRegion::slack;
+    }
+    if (s > 0) return TetherRegion::above;
+    if (s < 0) return TetherRegion::below;
+    if (rate != 0) return rate > 0 ? TetherRegion::above : TetherRegion::below;
+    return rest_force >= 0 ? TetherRegion::above : TetherRegion::below;
+}
+
 // The stretch where the mass rests against a held handle: 0 without gravity, else the
 // sag M·g/k± beyond the play on the side gravity pulls to.
 [[nodiscard]] double rest_stretch(const TetherLaw& law) noexcept;

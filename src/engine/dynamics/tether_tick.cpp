@@ -10,24 +10,7 @@ namespace feel::detail {
 
 namespace {
 
-enum class Region : uint8_t { below, slack, above };
-
-// tether_law.cpp's classification, in float: on an edge, the side the motion leaves to.
-Region classify(float length, float s, float rate, float rest_force) noexcept {
-    if (length > 0) {
-        if (s > length) return Region::above;
-        if (s < -length) return Region::below;
-        if (s > -length && s < length) return Region::slack;
-        const float out = s > 0 ? 1.0f : -1.0f;
-        const float leaving = rate != 0 ? rate : rest_force;
-        if (leaving * out > 0) return s > 0 ? Region::above : Region::below;
-        return Region::slack;
-    }
-    if (s > 0) return Region::above;
-    if (s < 0) return Region::below;
-    if (rate != 0) return rate > 0 ? Region::above : Region::below;
-    return rest_force >= 0 ? Region::above : Region::below;
-}
+using Region = TetherRegion;
 
 // Whether a piece that went from (s0, rate0) to (s1, rate1) in region r may have crossed
 // an edge of it (tether_tick.hpp: only a piece that leaves, or turns while heading for
@@ -132,7 +115,7 @@ float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxis
     float s = s0;
     float rate = rate0;
     for (int32_t i = 0; i < t.pieces; ++i) {
-        const Region r = classify(t.length, s, rate, taut_force);
+        const Region r = tether_region(t.length, s, rate, taut_force);
         const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
         const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
         float y = s - origin;
