@@ -130,15 +130,21 @@ struct BusyMixResult {
     [[nodiscard]] bool ok() const noexcept { return error.ok(); }
 };
 
+// Creates and starts effect i of the mix on a 2-axis (x, y) engine.
+inline BusyMixResult load_busy_mix_effect(Engine& engine, int i) {
+    const EffectParams p = busy_mix_effect(i);
+    const auto data = p.type == EffectType::force_profile ? std::span<const int16_t>(kBusyMixSamples)
+                                                          : std::span<const int16_t>();
+    const CreateResult r = engine.create(p, data);
+    if (!r.error.ok()) return {r.error, i};
+    if (const Error e = engine.start(r.id)) return {e, i};
+    return {};
+}
+
 // Creates and starts effects 0..effects-1 of the mix on a 2-axis (x, y) engine.
 inline BusyMixResult load_busy_mix(Engine& engine, int effects) {
     for (int i = 0; i < effects; ++i) {
-        const EffectParams p = busy_mix_effect(i);
-        const auto data = p.type == EffectType::force_profile ? std::span<const int16_t>(kBusyMixSamples)
-                                                              : std::span<const int16_t>();
-        const CreateResult r = engine.create(p, data);
-        if (!r.error.ok()) return {r.error, i};
-        if (const Error e = engine.start(r.id)) return {e, i};
+        if (BusyMixResult r = load_busy_mix_effect(engine, i); !r.ok()) return r;
     }
     return {};
 }

@@ -14,6 +14,8 @@
 //   feel_tick_instructions MIX [TICKS]
 //     MIX: peer_moving, peer_at_rest (bench/peer_mix.hpp's 40 effects),
 //          busy_64 (bench/busy_mix.hpp's 64 effects of every type, moving),
+//          busy_N (its first N effects, 0..64), busy_one_I (its effect I alone: the cost
+//          of one effect type is busy_one_I minus busy_0, the engine and estimator alone),
 //          estimator, estimator_velocity (the estimator alone on the slow circle,
 //          with and without the acceleration), estimator_at_rest,
 //          friction_32, friction_0 (bench/bench_friction.cpp's 32 two-axis frictions on
@@ -86,7 +88,7 @@ int main(int argc, char** argv) {
     std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
     for (size_t k = 0; k < inputs.size(); ++k) {
         const int64_t n = static_cast<int64_t>(k) + 1;
-        if (std::strcmp(mix, "busy_64") == 0 || std::strncmp(mix, "friction_", 9) == 0 ||
+        if (std::strncmp(mix, "busy_", 5) == 0 || std::strncmp(mix, "friction_", 9) == 0 ||
             std::strncmp(mix, "damper_", 7) == 0) {
             bench::move_handle(inputs[k], n);
             inputs[k].t_us = n * 1000;
@@ -110,9 +112,16 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "could not create the conditions\n");
             return 1;
         }
-    } else if (std::strcmp(mix, "busy_64") == 0) {
+    } else if (std::strncmp(mix, "busy_", 5) == 0) {
         run.engine = std::make_unique<Engine>(EngineConfig{});
-        const bench::BusyMixResult r = bench::load_busy_mix(*run.engine, 64);
+        const bool one = std::strncmp(mix, "busy_one_", 9) == 0;
+        const int n = std::atoi(mix + (one ? 9 : 5));
+        if (n < 0 || n > 64) {
+            std::fprintf(stderr, "busy_N and busy_one_I take 0..64\n");
+            return 2;
+        }
+        const bench::BusyMixResult r = one ? bench::load_busy_mix_effect(*run.engine, n)
+                                           : bench::load_busy_mix(*run.engine, n);
         if (!r.ok()) {
             std::fprintf(stderr, "effect %d refused: %s\n", r.failed_index, r.error.message().c_str());
             return 1;

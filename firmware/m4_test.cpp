@@ -5,7 +5,8 @@
 //    side (tests/firmware/firmware_compare.cpp) renders the same and compares.
 // 2. Counts the instructions of a tick (instruction_counter.hpp) for issue 14's 40-effect
 //    mix with the handle moving and at rest, for the velocity estimator alone, and for the
-//    scenario's 64 effects; prints "count NAME ticks=N instructions_per_tick=I".
+//    scenario's 64 effects and for its mix class by class (waves, conditions, dynamics);
+//    prints "count NAME ticks=N instructions_per_tick=I".
 // Nothing is allocated after the engines are built: heap_guard ends the run if it is.
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include "heap_guard.h"
 #include "instruction_counter.hpp"
 #include "motion_estimator.hpp"
+#include "busy_mix.hpp"
 #include "peer_mix.hpp"
 #include "scenario.hpp"
 
@@ -53,6 +55,20 @@ int main() {
     if (!firmware::load_scenario(scenario) || !bench::load_peer_mix(peer) || !bench::load_peer_mix(peer_at_rest)) {
         std::printf("error: an engine refused the mix\n");
         return 2;
+    }
+    // The scenario's mix by class (bench/busy_mix.hpp's 64 effects: 24 waves, 24 conditions,
+    // 16 dynamics), each on an engine of its own, on the mix's motion (a circle with a
+    // 40 Hz wiggle); "none" is the engine and the estimator alone.
+    static Engine by_class[4] = {Engine(EngineConfig{}), Engine(EngineConfig{}), Engine(EngineConfig{}),
+                                 Engine(EngineConfig{})};
+    const char* class_names[4] = {"busy_none", "busy_waves_24", "busy_conditions_24", "busy_dynamics_16"};
+    for (int i = 0; i < 64; ++i) {
+        const int kind = i % 8;
+        Engine& e = by_class[kind < 3 ? 1 : (kind < 6 ? 2 : 3)];
+        if (!bench::load_busy_mix_effect(e, i).ok()) {
+            std::printf("error: an engine refused effect %d of the busy mix\n", i);
+            return 2;
+        }
     }
     static detail::MotionEstimator estimator;
     estimator.configure(20000.0f / 4096.0f);
@@ -95,6 +111,26 @@ int main() {
         still.t_us = (kCountedTicks + k + 1) * 1000;
         peer_at_rest.tick(still, out);
     });
+    for (int c = 0; c < 4; ++c) {
+        for (int k = 0; k < kCountedTicks; ++k) {
+            bench::move_handle(g_inputs[k], k + 1);
+            g_inputs[k].t_us = (k + 1) * 1000;
+        }
+        for (int k = 0; k < kCountedTicks; ++k) {
+            by_class[c].tick(g_inputs[k], out);
+            while (by_class[c].pop_report(report)) {
+            }
+        }
+        for (int k = 0; k < kCountedTicks; ++k) {
+            bench::move_handle(g_inputs[k], kCountedTicks + k + 1);
+            g_inputs[k].t_us = (kCountedTicks + k + 1) * 1000;
+        }
+        count(class_names[c], kCountedTicks, [&](int k) {
+            by_class[c].tick(g_inputs[k], out);
+            while (by_class[c].pop_report(report)) {
+            }
+        });
+    }
     std::printf("done\n");
     return 0;
 }

@@ -79,6 +79,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
+    s.dynamic.prepared = false;
 }
 
 namespace {

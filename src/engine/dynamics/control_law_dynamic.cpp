@@ -45,103 +45,115 @@
 //
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
+// Per tick each axis costs a few float multiply-adds per piece (tether_tick.hpp): the law
+// and its propagators are worked out when a command sets the parameters or the tick length
+// changes, and only a piece in which the stretch may cross an edge of the law is redone in
+// double.
+//
+// State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
+// is read, nothing throws.
 #include <cmath>
 
 #include "dynamics/dynamic.hpp"
 #include "dynamics/tether_law.hpp"
+#include "dynamics/tether_tick.hpp"
 
 namespace feel::detail {
 
 namespace {
 
-// The mass where the law starts it: pos_init and vel_init relative to the handle.
-TetherAxisState initial_state(const TetherLaw& law, double handle, double handle_velocity, double hysteresis) noexcept {
+// The mass where the law starts it: pos_init and vel_init relative to the handle, whose
+// velocity is handle_velocity (0 in the handle's frame).
+TetherAxisState initial_state(const PreparedTether& law, float handle_velocity, float hysteresis) noexcept {
     TetherAxisState s;
-    s.position = handle + law.pos_init;
+    s.stretch = law.pos_init;
     s.velocity = handle_velocity + law.vel_init;
-    s.side = stretch_side(law, law.pos_init, hysteresis);
+    s.side = stretch_side(exact_law(law, law.gravity), law.pos_init, hysteresis);
     return s;
 }
 
-bool finite(const TetherAxisState& s) noexcept { return std::isfinite(s.position) && std::isfinite(s.velocity); }
+bool finite(const TetherAxisState& s) noexcept { return std::isfinite(s.stretch) && std::isfinite(s.velocity); }
 
-// The law as seen in the frame of a handle accelerating at `acceleration`: the frame adds
-// the force −M·a on the mass, which the law's gravity term carries.
-TetherLaw in_handle_frame(const TetherLaw& law, double acceleration) noexcept {
-    TetherLaw framed = law;
-    framed.gravity = law.gravity - acceleration;
-    return framed;
+// The gravity of the law as seen in the frame of a handle accelerating at `acceleration`:
+// the frame adds the force −M·a on the mass, which the law's gravity term carries.
+float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
+    return law.handle_frame ? law.gravity - acceleration : law.gravity;
 }
 
 }  // namespace
 
 void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
     const EffectParams& p = *c.params;
-    TetherLaw laws[kMaxAxes];
-    const int32_t n = tether_laws(p, *c.config, laws);
     ControlLawState& st = c.state->law;
+    const int32_t n = p.axis_count;
+    if (!c.state->prepared) {
+        TetherLaw laws[kMaxAxes];
+        tether_laws(p, *c.config, laws);
+        for (int i = 0; i < n; ++i) st.laws[i] = prepare_tether(laws[i]);
+        c.state->prepared = true;
+    }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
     // sensor's flicker around a mass at rest never counts.
-    const double hysteresis = c.config->sensor_step;
-
-    const bool fresh = !c.state->initialized || !(c.dt_s > 0);
-    if (!c.state->initialized) {
+    const float hysteresis = c.config->sensor_step;
+    const double step = c.dt_s;  // the catch-up's, and the prediction's: the next tick as long
+    if (step > 0) {
         for (int i = 0; i < n; ++i) {
-            const int a = axis_index(p.axes[i]);
-            st.now[i] = laws[i].handle_frame ? initial_state(laws[i], 0.0, 0.0, hysteresis)
-                                             : initial_state(laws[i], c.position[a], c.velocity[a], hysteresis);
-        }
-        c.state->initialized = true;
-    } else if (c.dt_s > 0) {
-        for (int i = 0; i < n; ++i) {
-            const int a = axis_index(p.axes[i]);
-            if (laws[i].handle_frame) {
-                advance_tether(in_handle_frame(laws[i], st.handle_acceleration[i]), st.now[i], HandlePath{}, c.dt_s,
-                               hysteresis);
-                continue;
-            }
-            const HandlePath sensed{st.handle_position[i], (c.position[a] - st.handle_position[i]) / c.dt_s,
-                                    st.handle_velocity[i]};
-            advance_tether(laws[i], st.now[i], sensed, c.dt_s, hysteresis);
+            if (st.laws[i].step_s != step) prepare_pieces(st.laws[i], step);
         }
     }
 
-    const double horizon = c.dt_s;  // the next tick is assumed as long as the last
+    const bool fresh = !c.state->initialized || !(step > 0);
+    if (!c.state->initialized) {
+        for (int i = 0; i < n; ++i) {
+            const PreparedTether& law = st.laws[i];
+            st.now[i] = initial_state(law, law.handle_frame ? 0.0f : c.velocity[axis_index(p.axes[i])], hysteresis);
+        }
+        c.state->initialized = true;
+    } else if (step > 0) {
+        const float inverse_step = static_cast<float>(1.0 / step);
+        for (int i = 0; i < n; ++i) {
+            const PreparedTether& law = st.laws[i];
+            const int a = axis_index(p.axes[i]);
+            const float gravity = gravity_in_frame(law, st.handle_acceleration[i]);
+            const HandleLine sensed = law.handle_frame ? HandleLine{}
+                                                       : HandleLine{(c.position[a] - st.handle_position[i]) * inverse_step,
+                                                                    st.handle_velocity[i]};
+            advance_prepared_tether(law, gravity, st.now[i], sensed, hysteresis);
+        }
+    }
+
     for (int i = 0; i < n; ++i) {
-        const TetherLaw& law = laws[i];
+        const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
-        const double handle = c.position[a];
-        const double handle_velocity = c.velocity[a];
-        // The handle is expected to go on along the line through its last two sensed
-        // positions; before there are two, at its estimated velocity.
-        const double heading = fresh ? handle_velocity : (handle - st.handle_position[i]) / horizon;
-        const double handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0;
-        // Where the mass is seen from: the handle, for a law simulated in its frame.
-        const double frame_position = law.handle_frame ? 0.0 : handle;
-        const double frame_velocity = law.handle_frame ? 0.0 : handle_velocity;
+        const float handle = c.position[a];
+        const float handle_velocity = c.velocity[a];
+        const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
+        // The velocity the mass's own is seen from: the handle's, unless simulated in its frame.
+        const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         TetherAxisState& now = st.now[i];
-        if (!finite(now)) now = initial_state(law, frame_position, frame_velocity, hysteresis);  // never expected
+        if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
 
-        double pull = 0;
-        if (horizon > 0) {
+        float pull = 0;
+        if (step > 0) {
+            // The handle is expected to go on along the line through its last two sensed
+            // positions; before there are two, at its estimated velocity.
+            const float heading =
+                fresh ? handle_velocity : (handle - st.handle_position[i]) * static_cast<float>(1.0 / step);
             TetherAxisState ahead = now;
-            if (law.handle_frame) {
-                pull = -advance_tether(in_handle_frame(law, handle_acceleration), ahead, HandlePath{}, horizon,
-                                       hysteresis) / horizon;
-            } else {
-                const HandlePath expected{handle, heading, handle_velocity};
-                pull = -advance_tether(law, ahead, expected, horizon, hysteresis) / horizon;
-            }
+            const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
+            const float gravity = gravity_in_frame(law, handle_acceleration);
+            pull = -advance_prepared_tether(law, gravity, ahead, expected, hysteresis) / static_cast<float>(step);
         } else {
-            pull = tether_reaction(law, now.position - frame_position, now.velocity - frame_velocity);
+            pull = static_cast<float>(
+                tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity));
         }
-        force[a] += std::isfinite(pull) ? pull : 0.0;
+        force[a] += std::isfinite(pull) ? pull : 0.0f;
         st.handle_position[i] = handle;
         st.handle_velocity[i] = handle_velocity;
-        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? static_cast<float>(handle_acceleration) : 0.0f;
-        result.mass_position[a] = static_cast<float>(now.position - frame_position);
-        result.mass_velocity[a] = static_cast<float>(now.velocity - frame_velocity);
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
+        result.mass_position[a] = now.stretch;
+        result.mass_velocity[a] = now.velocity - frame_velocity;
     }
 }
 

@@ -1,35 +1,55 @@
 // Per-effect state of the control-law dynamics, kept in the effect's slot between ticks.
 //
-// Plain data, fixed size, double precision: an undamped tether must keep its energy for
-// minutes (docs/dynamics.md), and float rounding at every tick would not.
+// Plain data, fixed size, single precision: the mass's stretch (its position relative to
+// the handle) and velocity are float, advanced by the float propagators of each region of
+// the law (tether_propagator.hpp), which are worked out once per command and tick length.
+// docs/dynamics.md ("Precision") says why float keeps an undamped tether's energy.
 #pragma once
 
 #include <cstdint>
 
+#include "dynamics/tether_propagator.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
 
-// One axis of the simulated mass. Positions and velocities are absolute (not relative to
-// the handle), so that the handle's sensed motion between ticks needs no bookkeeping here.
+// One axis of the simulated mass.
 struct TetherAxisState {
-    double position = 0;      // position units, absolute
-    double velocity = 0;      // position units/s, absolute
+    // Position units: the mass relative to the handle at the current tick (the stretch).
+    float stretch = 0;
+    // Position units/s: the mass's velocity in the fixed frame; for a law simulated in the
+    // handle's frame (TetherLaw::handle_frame), relative to the handle.
+    float velocity = 0;
     int32_t half_cycles = 0;  // half oscillations completed so far, 0..
     int8_t side = 0;          // -1/+1: the side of its rest stretch the mass was last seen on
                               // beyond the hysteresis band; 0: not yet seen off it
 };
 
+// One axis of the law in float, and the propagators of its three regions for one piece
+// length: what every tick needs, worked out when the parameters or the tick length change.
+struct PreparedTether {
+    float mass = 1, k_pos = 1, k_neg = 1, b = 0, drag = 0, gravity = 0, length = 0;
+    float pos_init = 0, vel_init = 0;
+    int32_t half_cycles = 0;
+    bool handle_frame = false;
+    bool piecewise = false;  // free play, or k_pos != k_neg: regions must be tracked
+    // The propagators below are for pieces of this many per step of step_s seconds (0: none yet).
+    double step_s = 0;
+    int32_t pieces = 1;
+    TetherPropagator below{}, slack{}, above{};
+};
+
 struct ControlLawState {
     // The mass at the time of the current tick, per EFFECT axis (axes[i] of the params).
-    // For a law simulated in the handle's frame (TetherLaw::handle_frame), relative to the
-    // handle: position = stretch, velocity = its rate.
     TetherAxisState now[kMaxAxes] = {};
     // The handle at the current tick: where the sensor saw it and the velocity the engine
     // estimated. The next tick advances the mass from here (control_law_dynamic.cpp).
-    double handle_position[kMaxAxes] = {};  // position units
-    double handle_velocity[kMaxAxes] = {};  // position units/s
+    float handle_position[kMaxAxes] = {};      // position units
+    float handle_velocity[kMaxAxes] = {};      // position units/s
     float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
+    // The laws of the effect's axes (false after every command that sets parameters:
+    // DynamicState::prepared).
+    PreparedTether laws[kMaxAxes] = {};
 };
 
 }  // namespace feel::detail

@@ -21,6 +21,9 @@ namespace feel::detail {
 
 struct DynamicState {
     bool initialized = false;  // the first playing tick sets up the mass
+    // The slot's parameters are worked into its per-tick form (ControlLawState::laws);
+    // prepare_slot clears it after every command that sets them.
+    bool prepared = false;
     ControlLawState law{};     // control-law dynamics (recoil ... center drift, control law)
     BallState ball{};          // sling and paddle
 };

@@ -10,11 +10,7 @@ namespace feel::detail {
 
 namespace {
 
-enum class Region : uint8_t {
-    below,  // s < −length: the tether is stretched negatively, k_neg
-    slack,  // |s| < length: free play
-    above,  // s > +length: stretched positively, k_pos
-};
+using Region = TetherRegion;
 
 // The force on a mass that moves with the handle (in the handle's frame ṡ = 0 means
 // ẋ = u), apart from the spring: gravity, the drag of moving at u, and the tether damper
@@ -28,24 +24,8 @@ double slack_force(const TetherLaw& law, const HandlePath& path) noexcept {
     return law.mass * law.gravity - law.drag * path.velocity;
 }
 
-// The region a stretch is in. On an edge, the side the motion leaves to decides (the sign
-// of ṡ, else of the force at rest), so that a mass set onto an edge by a crossing goes on
-// into the region it was heading for.
 Region classify(const TetherLaw& law, double s, double rate, double rest_force) noexcept {
-    const double edge = law.length;
-    if (edge > 0) {
-        if (s > edge) return Region::above;
-        if (s < -edge) return Region::below;
-        if (s > -edge && s < edge) return Region::slack;
-        const double out = s > 0 ? 1.0 : -1.0;  // on +edge, outward is +
-        const double leaving = rate != 0 ? rate : rest_force;
-        if (leaving * out > 0) return s > 0 ? Region::above : Region::below;
-        return Region::slack;
-    }
-    if (s > 0) return Region::above;
-    if (s < 0) return Region::below;
-    if (rate != 0) return rate > 0 ? Region::above : Region::below;
-    return rest_force >= 0 ? Region::above : Region::below;
+    return tether_region(law.length, s, rate, rest_force);
 }
 
 // The linear segment of a region, in its local coordinate y: s − length above, s + length
@@ -77,9 +57,11 @@ void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stret
     state.side = side;
 }
 
-// Advances the stretch (s, ṡ) by h within one piece, switching regions at the edges.
-void advance_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate, const HandlePath& path,
-                   double h, double hysteresis, bool piecewise) noexcept {
+}  // namespace
+
+void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
+                          const HandlePath& path, double h, double hysteresis) noexcept {
+    const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
     const double rest_force = free_force(law, path);
     double remaining = h;
     int32_t switches = 0;
@@ -120,8 +102,6 @@ void advance_piece(const TetherLaw& law, TetherAxisState& state, double& s, doub
     }
 }
 
-}  // namespace
-
 double rest_stretch(const TetherLaw& law) noexcept {
     const double weight = law.mass * law.gravity;
     if (weight > 0) return law.length + weight / law.k_pos;
@@ -147,28 +127,6 @@ int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noe
     if (e > hysteresis) return 1;
     if (e < -hysteresis) return -1;
     return 0;
-}
-
-double advance_tether(const TetherLaw& law, TetherAxisState& state, HandlePath path, double h,
-                      double hysteresis) noexcept {
-    if (!(h > 0)) return 0.0;
-    const double u = path.velocity;
-    const double s0 = state.position - path.position;
-    const double rate0 = state.velocity - u;
-    // Different stiffnesses either side of 0, or free play: the law is piecewise.
-    const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
-    const SpringDamper stiffest{law.mass, std::max(law.k_pos, law.k_neg), 0.0, 0.0};
-    const int32_t pieces = tether_substeps(stiffest, h, kMaxTetherSubsteps);
-    const double piece = h / pieces;
-    double s = s0;
-    double rate = rate0;
-    for (int32_t i = 0; i < pieces; ++i) advance_piece(law, state, s, rate, path, piece, hysteresis, piecewise);
-    // The handle moved u·h over the step; the mass's absolute state follows from the stretch.
-    state.position = s + path.position + u * h;
-    state.velocity = rate + u;
-    const double dv = rate - rate0;
-    const double dx = (s - s0) + u * h;
-    return law.mass * dv - law.mass * law.gravity * h + law.drag * dx;
 }
 
 }  // namespace feel::detail

@@ -13,10 +13,11 @@
 // of the tether and nothing else: +k±·(s ∓ length) + b·ṡ.
 //
 // Each region is a linear spring-damper, solved exactly by tether_step. A step is cut into
-// pieces with ω·h ≤ 1 (ω = √(max k±/M)); within a piece, tether_crossing finds the moment
-// the stretch reaches an edge of the play (or 0, when k_pos ≠ k_neg and there is no play),
-// the piece is split there, the stretch is set exactly onto the edge and the next region
-// carries on. Rather than chase a mass that grazes an edge endlessly (a Zeno sequence of
+// pieces with ω·h ≤ 1 (ω = √(max k±/M)). Each tick applies each region's exact solution as
+// a float propagator (tether_tick.hpp); in a piece where an edge may lie, tether_crossing
+// finds the moment the stretch reaches an edge of the play (or 0, when k_pos ≠ k_neg and
+// there is no play), the piece is split there, the stretch is set exactly onto the edge
+// and the next region carries on. Rather than chase a mass that grazes an edge endlessly (a Zeno sequence of
 // crossings), a piece takes at most kMaxRegionSwitches switches and finishes the rest of
 // its time in the region it is in.
 #pragma once
@@ -62,6 +63,34 @@ inline constexpr int32_t kMaxTetherSubsteps = 128;
 // At most this many edge crossings handled per piece.
 inline constexpr int32_t kMaxRegionSwitches = 8;
 
+// The three regions of the law.
+enum class TetherRegion : uint8_t {
+    below,  // s < −length: the tether is stretched negatively, k_neg
+    slack,  // |s| < length: free play
+    above,  // s > +length: stretched positively, k_pos
+};
+
+// The region a stretch s is in (in double for the exact piece, in float for the tick). On
+// an edge, the side the motion leaves to decides (the sign of ṡ, else of the force at
+// rest), so that a mass set onto an edge by a crossing goes on into the region it was
+// heading for. Without play (length 0), the sign of the stretch.
+template <typename T>
+[[nodiscard]] TetherRegion tether_region(T length, T s, T rate, T rest_force) noexcept {
+    if (length > 0) {
+        if (s > length) return TetherRegion::above;
+        if (s < -length) return TetherRegion::below;
+        if (s > -length && s < length) return TetherRegion::slack;
+        const T out = s > 0 ? T(1) : T(-1);  // on +edge, outward is +
+        const T leaving = rate != 0 ? rate : rest_force;
+        if (leaving * out > 0) return s > 0 ? TetherRegion::above : TetherRegion::below;
+        return TetherRegion::slack;
+    }
+    if (s > 0) return TetherRegion::above;
+    if (s < 0) return TetherRegion::below;
+    if (rate != 0) return rate > 0 ? TetherRegion::above : TetherRegion::below;
+    return rest_force >= 0 ? TetherRegion::above : TetherRegion::below;
+}
+
 // The stretch where the mass rests against a held handle: 0 without gravity, else the
 // sag M·g/k± beyond the play on the side gravity pulls to.
 [[nodiscard]] double rest_stretch(const TetherLaw& law) noexcept;
@@ -72,15 +101,14 @@ inline constexpr int32_t kMaxRegionSwitches = 8;
 // The side (−1, 0, +1) a stretch is on relative to the rest stretch, beyond ±hysteresis.
 [[nodiscard]] int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noexcept;
 
-// Advances one axis of the mass by h seconds (h >= 0) against the handle path (the path
-// at t = 0 is where the handle is at the start of the step). Counts half cycles: each time
-// the stretch goes from beyond +hysteresis of the rest stretch to beyond −hysteresis, or
-// back, checked at every piece end and edge crossing (a half period spans at least π
-// pieces, so none is missed). Returns the impulse the tether gave the mass over the step,
-// force units·s, from the momentum balance M·Δv = J + M·g·h − d·Δx (exact, whatever
-// regions the step went through): the handle felt −J.
-double advance_tether(const TetherLaw& law, TetherAxisState& state, HandlePath path, double h,
-                      double hysteresis) noexcept;
+// Advances the stretch (s, ṡ) of one axis exactly by one piece of h seconds (ω·h ≤ 1,
+// h >= 0) against the handle path (its position unused: s is relative to the handle),
+// switching regions at the edges it finds (tether_crossing) and counting half cycles:
+// each time the stretch goes from beyond +hysteresis of the rest stretch to beyond
+// −hysteresis, or back, checked at every edge crossing and at the piece's end. Double
+// precision; tether_tick.cpp calls it for the pieces in which an edge may lie.
+void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
+                          const HandlePath& path, double h, double hysteresis) noexcept;
 
 // The §8.4 mapping: fills laws[i] for each axis i of the effect from its dynamic type and
 // Dynamic Struct, scaled by the config. Returns the effect's axis count. The effect must

@@ -80,17 +80,31 @@ double initial_acceleration(const SpringDamper& s, MassState x) noexcept {
 
 double sign_of(double v) noexcept { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
 
+// A function of t and its slope there.
+struct Sample {
+    double value, slope;
+};
+
 // The earliest t in (lo, hi] with g(t) <= 0, given g(lo) > 0 >= g(hi) and a single sign
-// change between them: bisection to 1e-9 of the step, deterministic in its cost (≤ 31
-// evaluations of the closed form).
+// change between them, to within `tolerance`: Newton's method on the closed form (g
+// returns its slope too), kept inside the bracket and aimed half a tolerance past the
+// root so that the bracket closes from both sides; a step that leaves the bracket
+// bisects instead. Converges in a handful of evaluations where bisection takes 30; at
+// most 64.
 template <typename G>
 double first_nonpositive(const G& g, double lo, double hi, double tolerance) noexcept {
+    Sample at = g(lo);
+    double t = lo;
     for (int i = 0; i < 64 && hi - lo > tolerance; ++i) {
-        const double mid = lo + (hi - lo) / 2;
-        if (g(mid) > 0) {
-            lo = mid;
+        double next = at.slope != 0 ? t - at.value / at.slope : lo + (hi - lo) / 2;
+        next += at.value > 0 ? tolerance / 2 : -tolerance / 2;
+        if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+        t = next;
+        at = g(t);
+        if (at.value > 0) {
+            lo = t;
         } else {
-            hi = mid;
+            hi = t;
         }
     }
     return hi;
@@ -131,7 +145,10 @@ bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
     if (side == 0) side = sign_of(x.velocity);
     if (side == 0) side = sign_of(initial_acceleration(s, x));
     if (side == 0) return false;  // at rest at an equilibrium on the level: it stays there
-    auto above = [&](double t) { return side * (tether_step(s, x, t).position - level); };
+    auto above = [&](double t) {
+        const MassState m = tether_step(s, x, t);
+        return Sample{side * (m.position - level), side * m.velocity};
+    };
     const double tolerance = 1e-9 * h;
 
     // Which way the motion starts, seen from its side: +1 away from the level, −1 toward it.
@@ -139,19 +156,22 @@ bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
     if (direction == 0) direction = sign_of(side * initial_acceleration(s, x));
     if (direction == 0) return false;  // at rest at an equilibrium: it stays on its side
     // The one extremum the step may hold: where the velocity turns from its starting sign.
-    auto onward = [&](double t) { return direction * side * tether_step(s, x, t).velocity; };
-    const double t_extremum = onward(h) <= 0 ? first_nonpositive(onward, 0.0, h, tolerance) : -1.0;
+    auto onward = [&](double t) {
+        const MassState m = tether_step(s, x, t);
+        return Sample{direction * side * m.velocity, direction * side * initial_acceleration(s, m)};
+    };
+    const double t_extremum = onward(h).value <= 0 ? first_nonpositive(onward, 0.0, h, tolerance) : -1.0;
 
     if (direction > 0) {
         // Away first, then (after the extremum, if any) back: only the way back can cross.
-        if (t_extremum < 0 || above(h) > 0) return false;
+        if (t_extremum < 0 || above(h).value > 0) return false;
         t_cross = first_nonpositive(above, t_extremum, h, tolerance);
         return true;
     }
     // Toward the level, monotone until the extremum (or the end of the step): the crossing,
     // if any, is before it; after it the motion heads away again.
     const double end = t_extremum < 0 ? h : t_extremum;
-    if (above(end) > 0) return false;
+    if (above(end).value > 0) return false;
     t_cross = first_nonpositive(above, 0.0, end, tolerance);
     return true;
 }

@@ -68,7 +68,7 @@ struct MassState {
 // The starting side is the sign of y(0) − level; a start exactly at the level takes the
 // side the motion leaves to (the sign of ẏ(0), else of ÿ(0)), so a contact that begins at
 // its surface finds the moment it comes back out, not the moment it began.
-// Accuracy: |t − t_true| <= 1e-9·h (safeguarded secant with bisection fallback).
+// Accuracy: |t − t_true| <= 1e-9·h (Newton's method within a bracket, bisection fallback).
 [[nodiscard]] bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
                                    double& t_cross) noexcept;
 

@@ -187,8 +187,11 @@ TEST_P(EnergyOverAMinute, AnUndampedTetheredMassKeepsItsEnergy) {
         worst = std::max(worst, std::fabs(e - e0) / e0);
     }
     EXPECT_LT(worst, 1e-3);
-    // In fact the drift is at the level of the float outputs.
-    EXPECT_LT(worst, 1e-5);
+    // In fact the energy does not drift: the state is float and each tick rounds it by
+    // half an ulp (6e-8), a random walk that 60000 ticks take to about sqrt(60000)·1e-7
+    // = 2.4e-5 of the energy; the propagator's rounded coefficients add no systematic gain
+    // (tether_propagator.hpp).
+    EXPECT_LT(worst, 1e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(LinearAndPiecewise, EnergyOverAMinute,

@@ -1,0 +1,147 @@
+// The float, per-tick step of one control-law axis; tether_tick.hpp says how it goes.
+#include "dynamics/tether_tick.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/tether_step.hpp"
+
+namespace feel::detail {
+
+namespace {
+
+using Region = TetherRegion;
+
+// Whether a piece that went from (s0, rate0) to (s1, rate1) in region r may have crossed
+// an edge of it (tether_tick.hpp: only a piece that leaves, or turns while heading for
+// an edge, can have).
+bool may_have_crossed(Region r, float length, float s1, float rate0, float rate1) noexcept {
+    switch (r) {
+        case Region::above: return !(s1 > length) || (rate0 <= 0 && rate1 >= 0);
+        case Region::below: return !(s1 < -length) || (rate0 >= 0 && rate1 <= 0);
+        case Region::slack: break;
+    }
+    return !(s1 < length && s1 > -length) || !(rate0 * rate1 > 0);
+}
+
+// Whether a stretched region's motion from local (y, v) (y measured from the region's edge)
+// stays clear of the edge however long it runs: with a constant force f the energy about
+// the equilibrium y_eq = f/k, ½·k·(y − y_eq)² + ½·m·v², never grows (damping only takes),
+// so y never leaves y_eq ± R, R² = (y − y_eq)² + m·v²/k. Clear when that whole interval is
+// on the region's side (`outward` +1 above, −1 below).
+bool stays_clear(float outward, float k, float m, float f, float y, float v) noexcept {
+    const float equilibrium = f / k;
+    if (!(equilibrium * outward > 0)) return false;
+    const float offset = y - equilibrium;
+    return offset * offset + m * v * v / k < equilibrium * equilibrium;
+}
+
+float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
+    const float weight = t.mass * gravity;
+    if (weight > 0) return t.length + weight / t.k_pos;
+    if (weight < 0) return -t.length + weight / t.k_neg;
+    return 0.0f;
+}
+
+void count_half_cycle(TetherAxisState& state, float stretch, float rest, float hysteresis) noexcept {
+    const float e = stretch - rest;
+    const int8_t side = e > hysteresis ? 1 : (e < -hysteresis ? -1 : 0);
+    if (side == 0 || side == state.side) return;
+    if (state.side != 0) ++state.half_cycles;
+    state.side = side;
+}
+
+}  // namespace
+
+PreparedTether prepare_tether(const TetherLaw& law) noexcept {
+    PreparedTether t;
+    t.mass = static_cast<float>(law.mass);
+    t.k_pos = static_cast<float>(law.k_pos);
+    t.k_neg = static_cast<float>(law.k_neg);
+    t.b = static_cast<float>(law.b);
+    t.drag = static_cast<float>(law.drag);
+    t.gravity = static_cast<float>(law.gravity);
+    t.length = static_cast<float>(law.length);
+    t.pos_init = static_cast<float>(law.pos_init);
+    t.vel_init = static_cast<float>(law.vel_init);
+    t.half_cycles = law.half_cycles;
+    t.handle_frame = law.handle_frame;
+    t.piecewise = t.length > 0 || t.k_pos != t.k_neg;
+    return t;
+}
+
+TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept {
+    TetherLaw law;
+    law.mass = t.mass;
+    law.k_pos = t.k_pos;
+    law.k_neg = t.k_neg;
+    law.b = t.b;
+    law.drag = t.drag;
+    law.gravity = gravity;
+    law.length = t.length;
+    law.pos_init = t.pos_init;
+    law.vel_init = t.vel_init;
+    law.half_cycles = t.half_cycles;
+    law.handle_frame = t.handle_frame;
+    return law;
+}
+
+void prepare_pieces(PreparedTether& t, double step_s) noexcept {
+    // The parameters as the float law holds them, so the exact pieces agree with these.
+    const double m = t.mass, drag = t.drag, taut = static_cast<double>(t.b) + t.drag;
+    // Pieces with ω·h ≤ 1 are needed to see every edge and every half cycle; a law with one
+    // region that counts none is exact in one piece of any length.
+    const bool watched = t.piecewise || t.half_cycles > 0;
+    t.pieces = watched ? tether_substeps({m, std::max<double>(t.k_pos, t.k_neg), 0.0, 0.0}, step_s, kMaxTetherSubsteps)
+                       : 1;
+    const double piece = step_s / t.pieces;
+    t.below = tether_propagator({m, static_cast<double>(t.k_neg), taut, 0.0}, piece);
+    t.above = tether_propagator({m, static_cast<double>(t.k_pos), taut, 0.0}, piece);
+    t.slack = tether_propagator({m, 0.0, drag, 0.0}, piece);
+    t.step_s = step_s;
+}
+
+float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
+                              float hysteresis) noexcept {
+    const float h = static_cast<float>(t.step_s);
+    const float u = line.velocity;
+    // The forces on a mass moving with the handle, apart from the spring (tether_law.cpp's
+    // segment): taut, the tether damper reads against damper_velocity; slack, no tether.
+    const float slack_force = t.mass * gravity - t.drag * u;
+    const float taut_force = slack_force - t.b * (u - line.damper_velocity);
+    const float rest = rest_stretch_of(t, gravity);
+    const float s0 = state.stretch;
+    const float rate0 = state.velocity - u;
+    float s = s0;
+    float rate = rate0;
+    for (int32_t i = 0; i < t.pieces; ++i) {
+        const Region r = tether_region(t.length, s, rate, taut_force);
+        const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
+        const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
+        float y = s - origin;
+        float v = rate;
+        propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
+        if (t.piecewise && may_have_crossed(r, t.length, y + origin, rate, v) &&
+            !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f, r == Region::above ? t.k_pos : t.k_neg,
+                                                t.mass, taut_force, s - origin, rate))) {
+            // An edge may lie within the piece: the exact piece finds it (double, rare).
+            double s_exact = s;
+            double rate_exact = rate;
+            const TetherLaw law = exact_law(t, gravity);
+            const HandlePath path{0.0, u, line.damper_velocity};
+            advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis);
+            s = static_cast<float>(s_exact);
+            rate = static_cast<float>(rate_exact);
+            continue;
+        }
+        s = y + origin;
+        rate = v;
+        count_half_cycle(state, s, rest, hysteresis);
+    }
+    state.stretch = s;
+    state.velocity = rate + u;
+    // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
+    return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+}
+
+}  // namespace feel::detail

@@ -1,0 +1,52 @@
+// One axis of the control law advanced in float, tick by tick (tether_law.hpp has the model).
+//
+// Between events the tethered mass is linear in each region of the law (stretched beyond
+// +length on k_pos, beyond −length on k_neg, slack within the play), so a piece of a step
+// is one application of that region's propagator (tether_propagator.hpp): a handful of
+// float multiply-adds, the propagators worked out once per command and tick length. The
+// step keeps tether_law's pieces (ω·h ≤ 1, so a half cycle spans at least π pieces and
+// the half-cycle count sees every swing).
+//
+// The events are the law's nonlinearity. Within a piece the stretch has at most one
+// extremum (ω·h ≤ 1), so a piece that ends in the region it started in, with a velocity
+// that did not turn while heading for an edge, cannot have touched that edge: the motion
+// was monotone toward it, or it turned away from it. Every other piece of a piecewise law
+// (it ends beyond an edge, or it turned while heading for one, or it started at rest) is
+// redone from its start by the exact double-precision piece of tether_law.cpp, which
+// locates the crossing and switches region there. That happens about twice per swing
+// through an edge; a law with one region (no play, k_pos = k_neg) never needs it.
+//
+// Real-time safe: no allocation, no exceptions.
+#pragma once
+
+#include "dynamics/control_law_state.hpp"
+#include "dynamics/tether_law.hpp"
+
+namespace feel::detail {
+
+// The handle over a step as the stretch sees it: moving at `velocity`, its damper reading
+// `damper_velocity` (tether_law.hpp's HandlePath, without the position: the state is
+// relative to the handle already).
+struct HandleLine {
+    float velocity = 0;         // position units/s
+    float damper_velocity = 0;  // position units/s
+};
+
+// The law of one axis in its per-tick form; pieces not yet prepared (step_s = 0).
+[[nodiscard]] PreparedTether prepare_tether(const TetherLaw& law) noexcept;
+
+// The pieces and the propagators of every region for steps of step_s seconds (> 0).
+void prepare_pieces(PreparedTether& t, double step_s) noexcept;
+
+// The prepared law in double, with the given gravity (the law's own, or the handle's frame:
+// control_law_dynamic.cpp), for the exact piece and the instantaneous reaction.
+[[nodiscard]] TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept;
+
+// Advances one axis by h = t.step_s seconds (prepare_pieces first) under `gravity` against
+// the handle line, counting half cycles as advance_tether does. state.stretch is relative to
+// the handle at the start of the step and comes back relative to it at the end. Returns
+// the impulse the tether gave the mass, force units·s (the handle felt its opposite).
+float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
+                              float hysteresis) noexcept;
+
+}  // namespace feel::detail
