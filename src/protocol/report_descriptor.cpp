@@ -27,12 +27,15 @@
 #include <optional>
 #include <vector>
 
-#include "feel/protocol/codec.hpp"
 #include <stdexcept>
+
+#include "feel/protocol/codec.hpp"
+#include "feel/protocol/standard_pid.hpp"
 
 #include "hid_usages.hpp"
 #include "joystick_layout.hpp"
 #include "report_table.hpp"
+#include "standard_pid_table.hpp"
 
 namespace feel::protocol {
 namespace {
@@ -215,6 +218,14 @@ void write_field(DescriptorWriter& w, const ReportSpec& report, const FieldSpec&
     if (field.wrap != 0) w.end_collection();
 }
 
+void write_report(DescriptorWriter& w, const ReportSpec& report, std::span<const FieldSpec> fields) {
+    w.usage(report.usage);
+    w.collection(report.usage == usage::gd::kPointer ? kPhysical : kLogical);
+    w.unsigned_item(kReportId, static_cast<uint8_t>(report.id));
+    for (const FieldSpec& field : fields) write_field(w, report, field);
+    w.end_collection();
+}
+
 std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
     detail::JoystickSpec joystick;
     detail::build_joystick_spec(layout, joystick);
@@ -223,11 +234,30 @@ std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
     w.collection(kApplication);
     for (const ReportSpec* listed : detail::all_reports()) {
         const ReportSpec* report = listed->id == ReportId::joystick_input ? &joystick.spec : listed;
-        w.usage(report->usage);
-        w.collection(report->usage == usage::gd::kPointer ? kPhysical : kLogical);
-        w.unsigned_item(kReportId, static_cast<uint8_t>(report->id));
-        for (const FieldSpec& field : report->fields) write_field(w, *report, field);
-        w.end_collection();
+        write_report(w, *report, report->fields);
+    }
+    w.end_collection();
+    return w.take();
+}
+
+// The standard PID device's (standard_pid.hpp): feel's descriptor order, only the standard
+// reports, each with only its standard fields.
+std::vector<uint8_t> build_standard_descriptor(const JoystickLayout& layout) {
+    detail::JoystickSpec joystick;
+    detail::build_joystick_spec(layout, joystick);
+    DescriptorWriter w;
+    w.usage(usage::gd::kJoystick);
+    w.collection(kApplication);
+    for (const ReportSpec* listed : detail::all_reports()) {
+        if (listed->id == ReportId::joystick_input) {
+            write_report(w, joystick.spec, joystick.spec.fields);
+            continue;
+        }
+        const detail::StandardReport* standard = detail::find_standard_report(static_cast<uint8_t>(listed->id));
+        if (standard == nullptr) continue;
+        std::vector<FieldSpec> fields;
+        for (const detail::StandardField& f : standard->fields) fields.push_back(f.spec);
+        write_report(w, *listed, fields);
     }
     w.end_collection();
     return w.take();
@@ -245,6 +275,13 @@ std::vector<uint8_t> report_descriptor(const JoystickLayout& layout) {
         throw std::invalid_argument("no descriptor for this joystick layout: " + e.message());
     }
     return build_descriptor(layout);
+}
+
+std::vector<uint8_t> standard_pid_descriptor(const JoystickLayout& layout) {
+    if (const Error e = check_layout(layout)) {
+        throw std::invalid_argument("no standard PID descriptor for this joystick layout: " + e.message());
+    }
+    return build_standard_descriptor(layout);
 }
 
 }  // namespace feel::protocol

@@ -115,6 +115,7 @@ echo "==== probe begin"
 cat /tmp/probe.log 2>/dev/null
 echo "==== probe end"
 pid_host_print
+pid_emulation_run
 for judge in fftest testhaptic; do
     echo "==== $judge spy begin"
     cat /tmp/$judge.spy 2>/dev/null
