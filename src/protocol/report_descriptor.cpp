@@ -226,7 +226,9 @@ void write_report(DescriptorWriter& w, const ReportSpec& report, std::span<const
     w.end_collection();
 }
 
-std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
+// feel's descriptor; with `standard`, the plain PID device's (standard_pid.hpp): the same
+// order, only the standard reports, each with only its standard fields.
+std::vector<uint8_t> build_descriptor(const JoystickLayout& layout, bool standard = false) {
     detail::JoystickSpec joystick;
     detail::build_joystick_spec(layout, joystick);
     DescriptorWriter w;
@@ -234,30 +236,15 @@ std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
     w.collection(kApplication);
     for (const ReportSpec* listed : detail::all_reports()) {
         const ReportSpec* report = listed->id == ReportId::joystick_input ? &joystick.spec : listed;
-        write_report(w, *report, report->fields);
-    }
-    w.end_collection();
-    return w.take();
-}
-
-// The standard PID device's (standard_pid.hpp): feel's descriptor order, only the standard
-// reports, each with only its standard fields.
-std::vector<uint8_t> build_standard_descriptor(const JoystickLayout& layout) {
-    detail::JoystickSpec joystick;
-    detail::build_joystick_spec(layout, joystick);
-    DescriptorWriter w;
-    w.usage(usage::gd::kJoystick);
-    w.collection(kApplication);
-    for (const ReportSpec* listed : detail::all_reports()) {
-        if (listed->id == ReportId::joystick_input) {
-            write_report(w, joystick.spec, joystick.spec.fields);
+        if (!standard || report == &joystick.spec) {
+            write_report(w, *report, report->fields);
             continue;
         }
-        const detail::StandardReport* standard = detail::find_standard_report(static_cast<uint8_t>(listed->id));
-        if (standard == nullptr) continue;
+        const detail::StandardReport* form = detail::find_standard_report(static_cast<uint8_t>(report->id));
+        if (form == nullptr) continue;
         std::vector<FieldSpec> fields;
-        for (const detail::StandardField& f : standard->fields) fields.push_back(f.spec);
-        write_report(w, *listed, fields);
+        for (const detail::StandardField& f : form->fields) fields.push_back(f.spec);
+        write_report(w, *report, fields);
     }
     w.end_collection();
     return w.take();
@@ -281,7 +268,7 @@ std::vector<uint8_t> standard_pid_descriptor(const JoystickLayout& layout) {
     if (const Error e = check_layout(layout)) {
         throw std::invalid_argument("no standard PID descriptor for this joystick layout: " + e.message());
     }
-    return build_standard_descriptor(layout);
+    return build_descriptor(layout, true);
 }
 
 }  // namespace feel::protocol

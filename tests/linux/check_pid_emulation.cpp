@@ -38,21 +38,19 @@
 #include <string>
 #include <vector>
 
-#include "emulation/emulated_loop.hpp"
+#include "emulation_sensations.hpp"
 #include "feel/runtime/host_link.hpp"
 #include "feel/runtime/runtime_backend.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
 #include "feel/sim/device_profile.hpp"
-#include "support/valid_effects.hpp"
 
 namespace {
 
 using namespace feel;
 
-// What the VM's gadget runs (tests/linux/pid_host_case.sh): keep the two in step.
-constexpr const char* kProfile = "iforce2";
-constexpr const char* kMotion = "sine:x:2000:0.5";
-constexpr int32_t kLoopHz = 250;
+using test::vm::kLoopHz;
+using test::vm::kMotion;
+using test::vm::kProfile;
 constexpr int64_t kTickUs = 1'000'000 / kLoopHz;
 constexpr int kSlopeWindow = 25;  // ticks (100 ms) around m for |ΔF/Δp|
 
@@ -102,16 +100,6 @@ struct Play {
     long updates = 0, levels = 0;
     std::vector<double> reads;
 };
-
-EffectParams params_of(const std::string& name) {
-    if (name == "wall") return host::emulation::wall_on_x(2000);
-    if (name == "texture") {
-        EffectParams t = test::valid_effect(EffectType::texture);
-        t.axes[0] = Axis::x;
-        return t;
-    }
-    return test::valid_effect(EffectType::dynamic_recoil);
-}
 
 // The device-side rendering: the motors' force per tick (index = tick) and the sensed x.
 struct Render {
@@ -237,9 +225,6 @@ int main(int argc, char** argv) {
     // Device time -> CLOCK_MONOTONIC: the earliest offset (a state line is logged after its tick).
     double offset = 1e18;
     for (const State& s : states) offset = std::min(offset, s.mono - static_cast<double>(s.t_us) * 1e-6);
-    int64_t period_ticks = 1;
-    for (std::size_t i = 1; i < states.size(); ++i)
-        period_ticks = std::max<int64_t>(period_ticks, (states[i].t_us - states[i - 1].t_us) / kTickUs);
     const sim::DeviceProfile& profile = *sim::find_device_profile(kProfile);
     const double q = 2.0 * kFullScale / profile.axes[0].sensor_counts;
 
@@ -260,14 +245,19 @@ int main(int argc, char** argv) {
             lag_s = std::max(lag_s, (a.mono - offset) - static_cast<double>(sampled->t_us) * 1e-6);
             ++attributed;
         }
+        // The report period while it played: the longest gap between state reports.
+        int64_t period_ticks = 1;
+        for (std::size_t i = 1; i < states.size(); ++i)
+            if (states[i].mono >= play.start && states[i].mono <= play.stop)
+                period_ticks = std::max<int64_t>(period_ticks, (states[i].t_us - states[i - 1].t_us) / kTickUs);
         const int64_t lag_ticks = static_cast<int64_t>(std::ceil(lag_s * 1e6 / kTickUs));
         const int64_t tau_max = lag_ticks + 1 + 2 * period_ticks;
         const int64_t start_tick = static_cast<int64_t>(std::ceil((play.start - offset) * 1e6 / kTickUs));
         const int64_t stop_tick = static_cast<int64_t>(std::floor((play.stop - offset) * 1e6 / kTickUs));
-        std::printf("measure %s: %d levels arrived, link lag (state report read -> level arrived) up to %.1f ms; "
-                    "window %lld ticks of %lld us\n",
-                    play.name.c_str(), attributed, lag_s * 1e3, static_cast<long long>(tau_max),
-                    static_cast<long long>(kTickUs));
+        std::printf("measure %s: %d levels arrived, link lag (state report read -> level arrived) up to %.1f ms, "
+                    "report period up to %lld ticks; window %lld ticks of %lld us\n",
+                    play.name.c_str(), attributed, lag_s * 1e3, static_cast<long long>(period_ticks),
+                    static_cast<long long>(tau_max), static_cast<long long>(kTickUs));
         check(play.updates > 50 && play.levels > 0 && attributed > 0,
               play.name + ": the host rendered and streamed (" + std::to_string(play.updates) + " updates, " +
                   std::to_string(play.levels) + " levels sent, " + std::to_string(attributed) + " arrived)");
@@ -275,7 +265,7 @@ int main(int argc, char** argv) {
             check(false, play.name + ": its device ticks make no sense");
             continue;
         }
-        const Render dev = render(params_of(play.name), start_tick, stop_tick);
+        const Render dev = render(test::vm::sensation(play.name), start_tick, stop_tick);
         double worst = 0, worst_bound = 0, worst_excess = -1e9, peak = 0;
         int compared = 0;
         for (const State& s : states) {

@@ -26,11 +26,10 @@
 #include <thread>
 #include <vector>
 
-#include "emulation/emulated_loop.hpp"
+#include "emulation_sensations.hpp"
 #include "feel/host/pid_device.hpp"
 #include "feel/protocol/descriptor_parser.hpp"
 #include "feel/transport/transport.hpp"
-#include "support/valid_effects.hpp"
 
 namespace {
 
@@ -108,13 +107,8 @@ int main(int argc, char** argv) {
                 types, emulated(EffectType::axis_wall), emulated(EffectType::texture),
                 emulated(EffectType::dynamic_recoil), caps.emulation_problem.c_str());
 
-    EffectParams texture = test::valid_effect(EffectType::texture);
-    texture.axes[0] = Axis::x;
-    const Sensation sensations[] = {
-        {"wall", host::emulation::wall_on_x(2000)},
-        {"texture", texture},
-        {"recoil", test::valid_effect(EffectType::dynamic_recoil)},
-    };
+    std::vector<Sensation> sensations;
+    for (const std::string_view name : test::vm::kSensations) sensations.push_back({name.data(), test::vm::sensation(name)});
     int errors = 0;
     int played = 0;
     for (const Sensation& s : sensations) {
