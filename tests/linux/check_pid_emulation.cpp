@@ -93,18 +93,26 @@ struct Arrival {
     int block;
     int level;
 };
+// A level the host sent, with the position it rendered it from.
+struct Sent {
+    double sent = 0;
+    int block = 0, level = 0;
+    long x = 0, y = 0;
+};
 struct Play {
     std::string name;
     double start = 0, stop = 0;
     int block[2] = {0, 0};
     long updates = 0, levels = 0;
     std::vector<double> reads;
+    std::vector<Sent> sent;
 };
 
 // The device-side rendering: the motors' force per tick (index = tick) and the sensed x.
 struct Render {
     std::vector<float> force[2];
-    std::vector<float> position;
+    std::vector<float> position;    // x
+    std::vector<float> position_y;
 };
 
 Render render(const EffectParams& params, int64_t start_tick, int64_t stop_tick) {
@@ -133,6 +141,7 @@ Render render(const EffectParams& params, int64_t start_tick, int64_t stop_tick)
             if (r.kind == runtime::ReportKind::ack && r.ack.command == runtime::CommandKind::create) id = r.ack.effect;
         for (int a = 0; a < 2; ++a) out.force[a].push_back(pipeline.motor_force()[a]);
         out.position.push_back(pipeline.last_input().position[0]);
+        out.position_y.push_back(pipeline.last_input().position[1]);
     }
     return out;
 }
@@ -182,6 +191,11 @@ int main(int argc, char** argv) {
             p.updates = static_cast<long>(number(f, "updates"));
             p.levels = static_cast<long>(number(f, "levels"));
             plays.push_back(p);
+        }
+        if (l.rfind("emu level ", 0) == 0 && !plays.empty()) {
+            plays.back().sent.push_back({number(f, "sent"), static_cast<int>(number(f, "block")),
+                                         static_cast<int>(number(f, "magnitude")), std::lround(number(f, "x", 0)),
+                                         std::lround(number(f, "y", 0))});
         }
         if (l.rfind("emu reads ", 0) == 0 && !plays.empty()) {
             std::istringstream in(l.substr(10));
@@ -266,6 +280,39 @@ int main(int argc, char** argv) {
             continue;
         }
         const Render dev = render(test::vm::sensation(play.name), start_tick, stop_tick);
+        // Each level's arrival paired with the level the host sent (per block, in order: the
+        // OUT endpoint keeps it), so with the position it was rendered from.
+        struct Paired {
+            double mono;
+            const Sent* source;  // nullptr: sent before the host's recording began
+        };
+        std::vector<Paired> paired[2];
+        int unpaired = 0;
+        for (int a = 0; a < 2; ++a) {
+            std::size_t next = 0;
+            for (const Arrival& arr : arrivals) {
+                if (arr.block != play.block[a] || arr.mono < play.start || arr.mono > play.stop + 1.0) continue;
+                const Sent* source = nullptr;
+                for (std::size_t k = next; k < play.sent.size() && source == nullptr; ++k) {
+                    if (play.sent[k].block == arr.block && play.sent[k].level == arr.level) {
+                        source = &play.sent[k];
+                        next = k + 1;
+                    }
+                }
+                unpaired += source == nullptr ? 1 : 0;
+                paired[a].push_back({arr.mono, source});
+            }
+        }
+        // The tick a report with these positions was sensed at: the latest tick <= m whose
+        // positions round to them (-1: none within the last second).
+        const auto sensed_at = [&dev](long x, long y, int64_t m) -> int64_t {
+            for (int64_t k = m; k >= 0 && k > m - kLoopHz; --k) {
+                if (std::lround(dev.position[k]) == x && std::lround(dev.position_y[k]) == y) return k;
+            }
+            return -1;
+        };
+        int measured_lag = 0;
+        int64_t longest_lag = 0;
         double worst = 0, worst_bound = 0, worst_excess = -1e9, peak = 0, gadget_peak = 0;
         int within = 0;
         char worst_at[200] = "";
@@ -275,11 +322,27 @@ int main(int argc, char** argv) {
             if (m < start_tick || m >= stop_tick || m >= static_cast<int64_t>(dev.position.size())) continue;
             for (int a = 0; a < 2; ++a) {
                 const std::vector<float>& F = dev.force[a];
-                double lag_term = 0;
-                for (int64_t tau = -1; tau <= tau_max; ++tau) {
-                    const int64_t k = std::clamp<int64_t>(m - tau, 0, static_cast<int64_t>(F.size()) - 1);
-                    lag_term = std::max(lag_term, std::abs(double(F[m]) - F[k]));
+                // Where the force on the motors at tick m came from: the level that arrived
+                // last, a tick before m's earliest time (an older source is the safe side), and
+                // the tick its report was sensed at; else the measured window above.
+                const double tick_mono = offset + static_cast<double>(m - 1) * kTickUs * 1e-6;
+                const Paired* last = nullptr;
+                for (const Paired& p : paired[a])
+                    if (p.mono <= tick_mono) last = &p;
+                int64_t oldest = m - tau_max;
+                if (last == nullptr) {
+                    oldest = start_tick - 1;  // nothing arrived yet: the level from before the start
+                } else if (last->source != nullptr) {
+                    const int64_t k = sensed_at(last->source->x, last->source->y, m);
+                    if (k >= 0) {
+                        oldest = k - 1;
+                        ++measured_lag;
+                        longest_lag = std::max(longest_lag, m - k);
+                    }
                 }
+                double lag_term = 0;
+                for (int64_t k = std::max<int64_t>(0, oldest); k <= std::min<int64_t>(m + 1, F.size() - 1); ++k)
+                    lag_term = std::max(lag_term, std::abs(double(F[m]) - F[k]));
                 double slope = 0;
                 const int64_t from = std::max<int64_t>(1, m - kSlopeWindow);
                 const int64_t to = std::min<int64_t>(static_cast<int64_t>(F.size()) - 1, m + kSlopeWindow);
@@ -307,6 +370,10 @@ int main(int argc, char** argv) {
                     "device-side peak %.0f)\n",
                     play.name.c_str(), worst, compared, worst_bound, peak);
         std::printf("measure %s: closest to its bound: %s\n", play.name.c_str(), worst_at);
+        std::printf("measure %s: %d of %d samples with their source report found (%d levels unpaired); lag "
+                    "sensed -> on the motors up to %lld ms\n",
+                    play.name.c_str(), measured_lag, compared, unpaired,
+                    static_cast<long long>(longest_lag * kTickUs / 1000));
         check(compared > 200 && peak > 300,
               play.name + ": the device-side rendering pushes (peak " + std::to_string(static_cast<int>(peak)) +
                   ") and " + std::to_string(compared) + " samples are compared");

@@ -29,6 +29,7 @@
 #include "emulation_sensations.hpp"
 #include "feel/host/pid_device.hpp"
 #include "feel/protocol/descriptor_parser.hpp"
+#include "feel/protocol/pid_layout.hpp"
 #include "feel/transport/transport.hpp"
 
 namespace {
@@ -65,6 +66,54 @@ struct ClockLog {
     bool on = false;
 };
 
+// The host's end of the link, recording what PidDevice reads and sends while `on`: each
+// Set Constant Force with the send time and the Input report received last before it (the
+// report the level was computed from: PidDevice renders every report it reads and sends
+// once it has read all that is queued).
+class RecordingLink final : public transport::Connection {
+public:
+    explicit RecordingLink(std::unique_ptr<transport::Connection> inner) : inner_(std::move(inner)) {}
+    struct Sent {
+        double sent, read;
+        std::vector<uint8_t> level_report, input_report;
+    };
+    void send(const transport::Frame& f) override {
+        if (f.kind == transport::FrameKind::output_report) {
+            std::lock_guard lock(mu_);
+            if (on_) sent_.push_back({monotonic_s(), last_read_, f.payload, last_input_});
+        }
+        inner_->send(f);
+    }
+    std::optional<transport::Frame> receive(std::chrono::milliseconds timeout) override {
+        std::optional<transport::Frame> f = inner_->receive(timeout);
+        if (f && f->kind == transport::FrameKind::input_report) {
+            std::lock_guard lock(mu_);
+            last_read_ = monotonic_s();
+            last_input_ = f->payload;
+        }
+        return f;
+    }
+    void close() noexcept override { inner_->close(); }
+    [[nodiscard]] std::string peer() const override { return inner_->peer(); }
+    void record(bool on) {
+        std::lock_guard lock(mu_);
+        on_ = on;
+        if (on) sent_.clear();
+    }
+    std::vector<Sent> sent() {
+        std::lock_guard lock(mu_);
+        return sent_;
+    }
+
+private:
+    std::unique_ptr<transport::Connection> inner_;
+    std::mutex mu_;
+    bool on_ = false;
+    double last_read_ = 0;
+    std::vector<uint8_t> last_input_;
+    std::vector<Sent> sent_;
+};
+
 struct Sensation {
     const char* name;
     EffectParams params;
@@ -84,10 +133,12 @@ int main(int argc, char** argv) {
         std::printf("emu error open: %s\n", e.what());
         return 1;
     }
+    auto recording = std::make_unique<RecordingLink>(std::move(connection));
+    RecordingLink* link = recording.get();
     host::OpenOptions options;
     options.emulation_profile = "iforce2";  // the gadget's profile: the host's engine assumes its mechanism
     host::Result<host::PidDevice> device = host::PidDevice::attach(
-        std::move(connection), "hidraw:" + node, options, [clock_log, epoch] {
+        std::move(recording), "hidraw:" + node, options, [clock_log, epoch] {
             const auto now = std::chrono::steady_clock::now();
             {
                 std::lock_guard lock(clock_log->mu);
@@ -125,6 +176,7 @@ int main(int argc, char** argv) {
             clock_log->readings.clear();
             clock_log->on = true;
         }
+        link->record(true);
         const double start = monotonic_s();
         if (!device->start(*handle).ok()) ++errors;
         host::Result<host::EffectStatusInfo> status = device->status(*handle);
@@ -134,6 +186,7 @@ int main(int argc, char** argv) {
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(1500));
         const double stop = monotonic_s();
+        link->record(false);
         if (!device->stop(*handle).ok()) ++errors;
         std::vector<double> readings;
         {
@@ -147,6 +200,19 @@ int main(int argc, char** argv) {
                     after.link_blocks.size() > 1 ? after.link_blocks[1] : 0,
                     static_cast<long long>(after.updates - before.updates),
                     static_cast<long long>(after.levels_sent - before.levels_sent));
+        // Each level sent, with the position the host rendered it from (the device's layout).
+        const protocol::pid::PidLayout& layout = device->layout();
+        for (const RecordingLink::Sent& sent : link->sent()) {
+            const auto block = protocol::pid::read_field(layout, protocol::pid::PidReport::set_constant_force,
+                                                         sent.level_report, 0x000F0022);  // Effect Block Index
+            const auto level = protocol::pid::read_field(layout, protocol::pid::PidReport::set_constant_force,
+                                                         sent.level_report, 0x000F0070);  // Magnitude
+            protocol::pid::JoystickReading reading;
+            if (!block || !level || !protocol::pid::read_joystick(layout, sent.input_report, reading)) continue;
+            std::printf("emu level %s sent=%.6f read=%.6f block=%lld magnitude=%lld x=%.0f y=%.0f\n", s.name, sent.sent,
+                        sent.read, static_cast<long long>(*block), static_cast<long long>(*level),
+                        static_cast<double>(reading.position[0]), static_cast<double>(reading.position[1]));
+        }
         std::printf("emu reads %s", s.name);
         for (double r : readings) std::printf(" %.6f", r);
         std::printf("\n");
