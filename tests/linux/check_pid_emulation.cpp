@@ -377,8 +377,17 @@ int main(int argc, char** argv) {
         check(compared > 200 && peak > 300,
               play.name + ": the device-side rendering pushes (peak " + std::to_string(static_cast<int>(peak)) +
                   ") and " + std::to_string(compared) + " samples are compared");
-        check(gadget_peak > 0.1 * peak, play.name + ": the gadget's motors pushed with the host's force (peak " +
-                                            std::to_string(static_cast<int>(gadget_peak)) + ")");
+        // The host's force reached the device: the largest level that arrived on the
+        // sensation's axes, against the device-side peak (the state reports, sparse under
+        // TCG, may miss a short push: their peak is a measure).
+        double level_peak = 0;
+        for (int a = 0; a < 2; ++a)
+            for (const Paired& p : paired[a]) level_peak = std::max(level_peak, p.source ? std::abs(double(p.source->level)) : 0.0);
+        std::printf("measure %s: the motors' peak in the state reports %.0f, the largest level that arrived %.0f\n",
+                    play.name.c_str(), gadget_peak, level_peak);
+        check(level_peak > 0.3 * peak, play.name + ": the host's force reached the gadget (largest level " +
+                                           std::to_string(static_cast<int>(level_peak)) + " against a device-side peak of " +
+                                           std::to_string(static_cast<int>(peak)) + ")");
         // Measured, not asserted (docs/real-devices.md): the bound's lag is the delay from
         // the newest state report before a host update to its level's arrival, which assumes
         // the update read the newest report. Under TCG the host reads the Input reports in
