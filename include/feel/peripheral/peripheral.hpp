@@ -51,8 +51,8 @@ struct PeripheralOptions {
     // sweeps, smart pop, vector force, angle conditions, Dynamics) with not_supported, its
     // Device Info says so, and it runs no reflexes. A feel host then renders those types
     // itself (host emulation, docs/real-devices.md). The session's own vendor reports
-    // (sequence, Command Status, Device Info, Device Status, force streaming) stay: a host
-    // that drives a device through PID's reports alone is issue 13's hidraw mapping.
+    // (sequence, Command Status, Device Info, Device Status, force streaming) stay; for a
+    // device with PID's reports alone, see standard_pid_only.
     bool pid_effects_only = false;
     // true: the device is a plain USB HID PID device, with no vendor report at all
     // (protocol/standard_pid.hpp): its descriptor holds only PID's reports with only PID's
