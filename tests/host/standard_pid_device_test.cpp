@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/descriptor_parser.hpp"
 #include "feel/protocol/pid_layout.hpp"
+#include "pid_relay.hpp"
 #include "support/valid_effects.hpp"
 
 namespace feel::host {
@@ -27,62 +27,15 @@ namespace {
 using transport::Frame;
 using transport::FrameKind;
 
-class StandardRelay {
-public:
-    StandardRelay() {
-        peripheral::PeripheralOptions po;
-        po.profile = "iforce2";
-        po.standard_pid_only = true;
-        po.runtime.realtime_priority = false;
-        po.runtime.lock_memory = false;
-        device_ = std::make_unique<peripheral::Peripheral>(po);
-        transport::ConnectionPair to_host = transport::in_process_pair("sim:iforce2");
-        transport::ConnectionPair to_device = transport::in_process_pair("sim:iforce2");
-        host_end_ = std::move(to_host.host);
-        from_host_ = std::move(to_host.device);
-        to_device_ = std::move(to_device.host);
-        device_->attach(std::move(to_device.device));
-        up_ = std::thread([this] { pump(*from_host_, *to_device_, false); });
-        down_ = std::thread([this] { pump(*to_device_, *from_host_, true); });
-    }
-    ~StandardRelay() {
-        from_host_->close();
-        to_device_->close();
-        up_.join();
-        down_.join();
-        device_->stop();
-    }
-    std::unique_ptr<transport::Connection> host_end() { return std::move(host_end_); }
-    std::vector<Frame> received() {
-        std::lock_guard lock(mu_);
-        return received_;
-    }
-    peripheral::Peripheral& device() { return *device_; }
-
-private:
-    void pump(transport::Connection& from, transport::Connection& to, bool record) {
-        try {
-            for (;;) {
-                std::optional<Frame> f = from.receive(std::chrono::milliseconds(100));
-                if (!f) continue;
-                if (record) {
-                    std::lock_guard lock(mu_);
-                    received_.push_back(*f);
-                }
-                to.send(*f);
-            }
-        } catch (const std::exception&) {
-        }
-    }
-    std::unique_ptr<peripheral::Peripheral> device_;
-    std::unique_ptr<transport::Connection> host_end_, from_host_, to_device_;
-    std::thread up_, down_;
-    std::mutex mu_;
-    std::vector<Frame> received_;
-};
+// The device as a plain PID device.
+peripheral::PeripheralOptions standard_options() {
+    peripheral::PeripheralOptions po;
+    po.standard_pid_only = true;
+    return po;
+}
 
 TEST(StandardPidDevice, IsAPlainPidDeviceToItsHost) {
-    StandardRelay relay;
+    test::PidRelay relay(standard_options());
     Result<PidDevice> device = PidDevice::attach(relay.host_end(), "sim:iforce2");
     ASSERT_TRUE(device) << device.status().message;
     const PidCaps& caps = device->capabilities();

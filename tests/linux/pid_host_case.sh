@@ -4,6 +4,20 @@
 # hidraw and USB stack (tests/linux/pid_host_probe.cpp). The host checks the device's log
 # against what the probe asked for (tests/linux/check_pid_host_log.cpp).
 
+# ff_event_device: the last event device whose capabilities have EV_FF (bit 21), or nothing.
+ff_event_device() {
+    found=
+    for caps in /sys/class/input/event*/device/capabilities/ev; do
+        [ -e "$caps" ] || continue
+        read -r ev < "$caps"
+        if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
+            dir=${caps%/device/capabilities/ev}
+            found=/dev/input/${dir##*/}
+        fi
+    done
+    echo "$found"
+}
+
 # pid_host_run NODE: runs the probe on NODE (kernel command line feel.pidhost=1 only: one
 # speed is enough, the USB paths are the hidraw probe's and fftest's at both).
 pid_host_run() {
@@ -41,15 +55,7 @@ pid_emulation_run() {
         [ "$(dmesg | grep -c "HID v1.11")" -gt "$before" ] && break
         sleep 0.1
     done
-    std_event=
-    for caps in /sys/class/input/event*/device/capabilities/ev; do
-        [ -e "$caps" ] || continue
-        read -r ev < "$caps"
-        if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
-            dir=${caps%/device/capabilities/ev}
-            std_event=/dev/input/${dir##*/}
-        fi
-    done
+    std_event=$(ff_event_device)
     if [ -n "$std_event" ]; then mark "std pid event device $std_event"; else mark "std pid no force-feedback event device"; fi
     std_node=$(ls /dev/hidraw* 2>/dev/null | head -n 1)
     timeout 60 pid_emulation_probe "$std_node" > /tmp/std-emu.log 2>&1
