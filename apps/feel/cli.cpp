@@ -196,6 +196,9 @@ void add_device(CLI::App& app, DeviceArgs& a, UsbDeviceArgs& u) {
     cmd->add_flag("--pid-effects-only", a.pid_effects_only,
                   "Play only HID PID 1.0's effect types, like a standard PID device: a feel host renders the "
                   "others itself (host emulation, docs/real-devices.md)");
+    cmd->add_flag("--standard-pid-only", a.standard_pid_only,
+                  "Be a plain USB HID PID device: a report descriptor with only PID's reports and the joystick's "
+                  "Input report, PID's eleven effect types, no vendor report sent (docs/usb-device.md)");
     cmd->add_flag("--allow-remote", a.allow_remote,
                   "Allow a tcp: address that is not loopback (hosts on other machines); needs a token");
     cmd->add_option("--token-file", a.token_file,

@@ -140,6 +140,7 @@ peripheral::PeripheralOptions peripheral_options(const DeviceArgs& args) {
     options.motion = args.motion;
     options.loop_rate_hz = checked_rate(args.rate_hz, profile);
     options.pid_effects_only = args.pid_effects_only;
+    options.standard_pid_only = args.standard_pid_only;
     return options;
 }
 

@@ -31,6 +31,7 @@ struct DeviceArgs {
     std::string motion = "hold:0";    // --motion: the hand's target motion (as feel render)
     double rate_hz = 0;               // --rate: loop rate, whole Hz 100..the profile's max; 0: its default
     bool pid_effects_only = false;    // --pid-effects-only: HID PID 1.0's effect types only
+    bool standard_pid_only = false;   // --standard-pid-only: a plain PID device, no vendor report
     bool allow_remote = false;        // --allow-remote: a tcp: address beyond loopback (needs a token)
     std::string token_file;           // --token-file: the shared secret's file; empty: $FEEL_DEVICE_TOKEN or none
     std::string group;                // --group: unix: the socket file's group (mode 0660); empty: mode 0600

@@ -33,8 +33,10 @@
 #include <vector>
 
 #include "feel/peripheral/device_session.hpp"
+#include "feel/protocol/standard_pid.hpp"
 #include "feel/runtime/runtime_backend.hpp"
 #include "feel/sim/device_profile.hpp"
+#include "standard_pid_connection.hpp"
 
 namespace feel::peripheral {
 namespace {
@@ -159,6 +161,10 @@ sim::DeviceProfile presented_profile(const PeripheralOptions& o) {
     sim::DeviceProfile p = profile_named(o.profile);
     if (o.pid_effects_only) {
         p.supported_types &= pid_effect_types();
+        p.local_reflexes = false;
+    }
+    if (o.standard_pid_only) {
+        p.supported_types &= protocol::standard_pid_effect_type_bits();
         p.local_reflexes = false;
     }
     return p;
@@ -355,10 +361,15 @@ Peripheral::~Peripheral() {
     impl_->rt->stop();
 }
 
-void Peripheral::attach(std::unique_ptr<transport::Connection> host) {
+void Peripheral::attach(std::unique_ptr<transport::Connection> host, HostReports form) {
     if (!host) throw std::invalid_argument("Peripheral::attach: no connection");
+    if (impl_->options.standard_pid_only && form == HostReports::presented) {
+        host = std::make_unique<StandardPidConnection>(std::move(host), joystick_layout(impl_->caps));
+    }
     impl_->attach(std::move(host));
 }
+
+bool Peripheral::standard_pid_only() const noexcept { return impl_->options.standard_pid_only; }
 
 void Peripheral::serve(std::unique_ptr<transport::Listener> listener) {
     if (!listener) throw std::invalid_argument("Peripheral::serve: no listener");

@@ -27,12 +27,15 @@
 #include <optional>
 #include <vector>
 
-#include "feel/protocol/codec.hpp"
 #include <stdexcept>
+
+#include "feel/protocol/codec.hpp"
+#include "feel/protocol/standard_pid.hpp"
 
 #include "hid_usages.hpp"
 #include "joystick_layout.hpp"
 #include "report_table.hpp"
+#include "standard_pid_table.hpp"
 
 namespace feel::protocol {
 namespace {
@@ -215,7 +218,17 @@ void write_field(DescriptorWriter& w, const ReportSpec& report, const FieldSpec&
     if (field.wrap != 0) w.end_collection();
 }
 
-std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
+void write_report(DescriptorWriter& w, const ReportSpec& report, std::span<const FieldSpec> fields) {
+    w.usage(report.usage);
+    w.collection(report.usage == usage::gd::kPointer ? kPhysical : kLogical);
+    w.unsigned_item(kReportId, static_cast<uint8_t>(report.id));
+    for (const FieldSpec& field : fields) write_field(w, report, field);
+    w.end_collection();
+}
+
+// feel's descriptor; with `standard`, the plain PID device's (standard_pid.hpp): the same
+// order, only the standard reports, each with only its standard fields.
+std::vector<uint8_t> build_descriptor(const JoystickLayout& layout, bool standard = false) {
     detail::JoystickSpec joystick;
     detail::build_joystick_spec(layout, joystick);
     DescriptorWriter w;
@@ -223,11 +236,15 @@ std::vector<uint8_t> build_descriptor(const JoystickLayout& layout) {
     w.collection(kApplication);
     for (const ReportSpec* listed : detail::all_reports()) {
         const ReportSpec* report = listed->id == ReportId::joystick_input ? &joystick.spec : listed;
-        w.usage(report->usage);
-        w.collection(report->usage == usage::gd::kPointer ? kPhysical : kLogical);
-        w.unsigned_item(kReportId, static_cast<uint8_t>(report->id));
-        for (const FieldSpec& field : report->fields) write_field(w, *report, field);
-        w.end_collection();
+        if (!standard || report == &joystick.spec) {
+            write_report(w, *report, report->fields);
+            continue;
+        }
+        const detail::StandardReport* form = detail::find_standard_report(static_cast<uint8_t>(report->id));
+        if (form == nullptr) continue;
+        std::vector<FieldSpec> fields;
+        for (const detail::StandardField& f : form->fields) fields.push_back(f.spec);
+        write_report(w, *report, fields);
     }
     w.end_collection();
     return w.take();
@@ -245,6 +262,13 @@ std::vector<uint8_t> report_descriptor(const JoystickLayout& layout) {
         throw std::invalid_argument("no descriptor for this joystick layout: " + e.message());
     }
     return build_descriptor(layout);
+}
+
+std::vector<uint8_t> standard_pid_descriptor(const JoystickLayout& layout) {
+    if (const Error e = check_layout(layout)) {
+        throw std::invalid_argument("no standard PID descriptor for this joystick layout: " + e.message());
+    }
+    return build_descriptor(layout, true);
 }
 
 }  // namespace feel::protocol

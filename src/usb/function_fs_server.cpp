@@ -66,6 +66,7 @@
 #include "feel/protocol/codec.hpp"
 #include "feel/protocol/command_answer.hpp"
 #include "feel/protocol/report_text.hpp"
+#include "feel/protocol/standard_pid.hpp"
 #include "feel/usb/usb_device.hpp"
 #include "ffs_descriptors.hpp"
 #include "hid_requests.hpp"
@@ -135,6 +136,9 @@ struct Channel {
     uint64_t input_dropped = 0;
     int wake_fd = -1;                     // the I/O thread's eventfd
     ReportLog* log = nullptr;
+    // The device presents itself as a plain PID device (Peripheral::standard_pid_only):
+    // what goes to the host is translated to the standard form, vendor reports kept back.
+    bool standard_pid = false;
 
     void wake() const noexcept {
         const uint64_t one = 1;
@@ -153,13 +157,15 @@ public:
         std::unique_lock lock(channel_->mutex);
         if (channel_->closed) throw transport::TransportError(transport::TransportError::Kind::disconnected, peer_ + " is gone");
         switch (frame.kind) {
-            case FrameKind::input_report:
+            case FrameKind::input_report: {
                 note_refusal(frame.payload);
                 note_status(frame.payload);
-                if (const std::optional<uint16_t> key = state_key(frame.payload)) {
-                    auto [it, fresh] = channel_->input_state.try_emplace(*key, frame.payload);
+                std::vector<uint8_t> bytes = frame.payload;
+                if (channel_->standard_pid && !protocol::feel_to_standard_pid(frame.payload, bytes)) break;  // vendor
+                if (const std::optional<uint16_t> key = state_key(bytes)) {
+                    auto [it, fresh] = channel_->input_state.try_emplace(*key, bytes);
                     if (!fresh) {
-                        it->second = frame.payload;  // the unread one is superseded
+                        it->second = std::move(bytes);  // the unread one is superseded
                         ++channel_->input_dropped;
                     }
                     break;
@@ -168,17 +174,24 @@ public:
                     channel_->input_events.pop_front();
                     ++channel_->input_dropped;
                 }
-                channel_->input_events.push_back(frame.payload);
+                channel_->input_events.push_back(std::move(bytes));
                 break;
-            case FrameKind::feature_reply:
+            }
+            case FrameKind::feature_reply: {
                 if (channel_->log != nullptr) {
                     protocol::AnyReport report;
                     if (!protocol::decode(frame.payload, report)) {
                         channel_->log->line("feature_reply " + protocol::describe_report(report));
                     }
                 }
-                if (channel_->reply_pending) channel_->reply = frame.payload;
+                std::vector<uint8_t> bytes = frame.payload;
+                if (channel_->standard_pid && !protocol::feel_to_standard_pid(frame.payload, bytes)) {
+                    channel_->reply_refused = channel_->reply_pending;  // no standard form: stall the request
+                    break;
+                }
+                if (channel_->reply_pending) channel_->reply = std::move(bytes);
                 break;
+            }
             case FrameKind::descriptor_reply:
                 if (channel_->reply_pending) channel_->reply = frame.payload;
                 break;
@@ -262,6 +275,12 @@ private:
         protocol::AnyReport report;
         if (protocol::decode(bytes, report)) return;
         const auto& status = std::get<protocol::DeviceStatusReport>(report);
+        if (channel_->standard_pid) {
+            // A plain PID device tells its host nothing of its forces: the log keeps each
+            // state report's, for the VM's host emulation case (tests/linux).
+            channel_->log->line("state t_us=" + std::to_string(status.t_us) + " force[0]=" +
+                                std::to_string(status.force[0]) + " force[1]=" + std::to_string(status.force[1]));
+        }
         bool pushing = false;
         for (const int16_t f : status.force) pushing = pushing || f != 0;
         if (pushing != pushing_) {
@@ -327,7 +346,10 @@ struct FunctionFsServer::Impl {
         : device(d), dir(std::move(directory)), log(log_out) {
         // The device's own descriptor (its profile's axes, buttons and hats), the same bytes
         // its session answers get_descriptor with.
-        report_descriptor = protocol::report_descriptor(peripheral::joystick_layout(device.capabilities()));
+        // A plain PID device's has PID's reports alone (protocol/standard_pid.hpp).
+        const protocol::JoystickLayout layout = peripheral::joystick_layout(device.capabilities());
+        report_descriptor = device.standard_pid_only() ? protocol::standard_pid_descriptor(layout)
+                                                       : protocol::report_descriptor(layout);
     }
 
     int open_file(const std::string& name, int flags) const {
@@ -380,8 +402,11 @@ struct FunctionFsServer::Impl {
         channel = std::make_shared<Channel>();
         channel->wake_fd = wake_fd;
         channel->log = log.enabled() ? &log : nullptr;
+        channel->standard_pid = device.standard_pid_only();
         log.line("host configured the device (max packet " + std::to_string(out_packet) + " bytes)");
-        device.attach(std::make_unique<UsbHostConnection>(channel, "usb:" + dir));
+        // The translation to and from the standard form is done here, at the endpoints, so
+        // that the log and the commit order see feel's reports.
+        device.attach(std::make_unique<UsbHostConnection>(channel, "usb:" + dir), peripheral::HostReports::feel_form);
     }
 
     void host_gone() {
@@ -445,6 +470,16 @@ struct FunctionFsServer::Impl {
 
     void push_frame(Frame frame) {
         if (!channel) return;
+        if (channel->standard_pid && (frame.kind == FrameKind::output_report || frame.kind == FrameKind::set_feature)) {
+            // A plain PID device's report, in feel's form for the session (vendor fields 0).
+            std::vector<uint8_t> feel;
+            if (const Error e = protocol::standard_pid_to_feel(frame.payload, feel)) {
+                log.line(std::string(transport::frame_kind_name(frame.kind)) + " refused (not a report of this " +
+                         "standard PID device): " + e.message());
+                return;
+            }
+            frame.payload = std::move(feel);
+        }
         if (log.enabled()) {
             protocol::AnyReport report;
             if (!frame.payload.empty() && !protocol::decode(frame.payload, report)) {
@@ -557,6 +592,14 @@ struct FunctionFsServer::Impl {
             case Kind::get_feature: {
                 if (!channel) {
                     stall(action);
+                    return;
+                }
+                if (channel->standard_pid && !protocol::is_standard_pid_report(action.report_id)) {
+                    detail::ControlAction a = action;
+                    a.kind = Kind::stall;
+                    a.reason = "GET_REPORT(Feature) of report id " + std::to_string(action.report_id) +
+                               ": not a report of this standard PID device";
+                    stall(a);
                     return;
                 }
                 {

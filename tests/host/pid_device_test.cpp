@@ -15,70 +15,13 @@
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/codec.hpp"
 #include "feel/transport/hidraw.hpp"
+#include "pid_relay.hpp"
 #include "support/valid_effects.hpp"
 
 namespace feel::host {
 namespace {
 
-// Frames pass both ways; what the host sends is decoded and kept.
-class Relay {
-public:
-    Relay() {
-        peripheral::PeripheralOptions po;
-        po.profile = "iforce2";
-        po.runtime.realtime_priority = false;
-        po.runtime.lock_memory = false;
-        device_ = std::make_unique<peripheral::Peripheral>(po);
-        transport::ConnectionPair to_host = transport::in_process_pair("sim:iforce2");
-        transport::ConnectionPair to_device = transport::in_process_pair("sim:iforce2");
-        host_end_ = std::move(to_host.host);
-        from_host_ = std::move(to_host.device);
-        to_device_ = std::move(to_device.host);
-        device_->attach(std::move(to_device.device));
-        up_ = std::thread([this] { pump(*from_host_, *to_device_, true); });
-        down_ = std::thread([this] { pump(*to_device_, *from_host_, false); });
-    }
-    ~Relay() {
-        from_host_->close();
-        to_device_->close();
-        up_.join();
-        down_.join();
-        device_->stop();
-    }
-    std::unique_ptr<transport::Connection> host_end() { return std::move(host_end_); }
-    std::vector<protocol::AnyReport> sent() {
-        std::lock_guard lock(mu_);
-        return sent_;
-    }
-    void clear() {
-        std::lock_guard lock(mu_);
-        sent_.clear();
-    }
-
-private:
-    void pump(transport::Connection& from, transport::Connection& to, bool record) {
-        try {
-            for (;;) {
-                std::optional<transport::Frame> f = from.receive(std::chrono::milliseconds(100));
-                if (!f) continue;
-                if (record && (f->kind == transport::FrameKind::output_report || f->kind == transport::FrameKind::set_feature)) {
-                    protocol::AnyReport r;
-                    if (!protocol::decode(f->payload, r)) {
-                        std::lock_guard lock(mu_);
-                        sent_.push_back(r);
-                    }
-                }
-                to.send(*f);
-            }
-        } catch (const std::exception&) {
-        }
-    }
-    std::unique_ptr<peripheral::Peripheral> device_;
-    std::unique_ptr<transport::Connection> host_end_, from_host_, to_device_;
-    std::thread up_, down_;
-    std::mutex mu_;
-    std::vector<protocol::AnyReport> sent_;
-};
+using Relay = test::PidRelay;
 
 template <class R>
 std::vector<R> all_of(const std::vector<protocol::AnyReport>& reports) {

@@ -65,15 +65,7 @@ until dmesg | grep -q "HID v1.11"; do
     sleep 1
 done
 mark "hid connected"
-event=
-for caps in /sys/class/input/event*/device/capabilities/ev; do
-    [ -e "$caps" ] || continue
-    read -r ev < "$caps"
-    if [ $(( 0x$ev & 0x200000 )) -ne 0 ]; then
-        dir=${caps%/device/capabilities/ev}
-        event=/dev/input/${dir##*/}
-    fi
-done
+event=$(ff_event_device)
 # feel's own protocol through hidraw: every USB path of the backend, whatever hid-pidff
 # decided (tests/linux/hidraw_probe.cpp).
 mark "hidraw probe"
@@ -115,6 +107,7 @@ echo "==== probe begin"
 cat /tmp/probe.log 2>/dev/null
 echo "==== probe end"
 pid_host_print
+pid_emulation_run
 for judge in fftest testhaptic; do
     echo "==== $judge spy begin"
     cat /tmp/$judge.spy 2>/dev/null

@@ -109,6 +109,7 @@ add_program "$feel" feel
 add_program "$probe" ff_probe
 add_program "$(dirname "$probe")/hidraw_probe" hidraw_probe
 add_program "$(dirname "$probe")/pid_host_probe" pid_host_probe
+add_program "$(dirname "$probe")/pid_emulation_probe" pid_emulation_probe
 mkdir -p "$root/etc/feel"
 cp "$here/pid_host_case.sh" "$root/etc/feel/pid_host_case.sh"
 fftest=$(command -v fftest || true)
@@ -154,6 +155,10 @@ boot() {  # boot SPEED: high or full
         > "$out/bridge-invalid-$speed.txt"
     sed -n '/^==== pid host log begin/,/^==== pid host log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
         > "$out/pid-host-$speed.txt"
+    sed -n '/^==== std device.log begin/,/^==== std device.log end/p' "$console" | sed '1d;$d' | tr -d '\r' \
+        > "$out/std-device-$speed.log"
+    sed -n '/^==== std emu begin/,/^==== std emu end/p' "$console" | sed '1d;$d' | tr -d '\r' \
+        > "$out/std-emu-$speed.txt"
 }
 speeds=${FEEL_LINUX_SPEEDS:-high full}
 first=${speeds%% *}
@@ -183,6 +188,13 @@ passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 "$(dirname "$checker")/feel_check_pid_host_log" --probe "$out/pid-host-$first.txt" --device-log "$out/device-$first.log" \
     | tee "$out/check-pid-host.txt" || status=1
 read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-pid-host.txt" | tail -1) || true
+passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
+# Host emulation on a plain PID gadget (tests/linux/pid_host_case.sh), in the first speed's
+# VM: the gadget's motor force against the device-side rendering of the same sensations.
+"$(dirname "$checker")/feel_check_pid_emulation" --probe "$out/std-emu-$first.txt" \
+    --device-log "$out/std-device-$first.log" --console "$out/console-$first.log" \
+    | tee "$out/check-pid-emulation.txt" || status=1
+read -r p f < <(sed -n 's/.* \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p' "$out/check-pid-emulation.txt" | tail -1) || true
 passed=$((passed + ${p:-0})) failed=$((failed + ${f:-1}))
 say "done in $(seconds_since "$started") s (console: $out/console.log, device log: $out/device.log)"
 echo "linux: $passed passed, $failed failed"

@@ -51,10 +51,25 @@ struct PeripheralOptions {
     // sweeps, smart pop, vector force, angle conditions, Dynamics) with not_supported, its
     // Device Info says so, and it runs no reflexes. A feel host then renders those types
     // itself (host emulation, docs/real-devices.md). The session's own vendor reports
-    // (sequence, Command Status, Device Info, Device Status, force streaming) stay: a host
-    // that drives a device through PID's reports alone is issue 13's hidraw mapping.
+    // (sequence, Command Status, Device Info, Device Status, force streaming) stay; for a
+    // device with PID's reports alone, see standard_pid_only.
     bool pid_effects_only = false;
+    // true: the device is a plain USB HID PID device, with no vendor report at all
+    // (protocol/standard_pid.hpp): its descriptor holds only PID's reports with only PID's
+    // fields and the joystick's Input report, it plays PID's eleven effect types (as
+    // pid_effects_only, without custom forces), runs no reflexes, and sends nothing but
+    // Joystick Input, PID State and the PID feature replies (no Command Status, Device
+    // Info, Device Status, dynamics' reports). A host drives it through PID's reports alone
+    // (hid-pidff, feel::host::PidDevice). attach() translates the host's standard reports
+    // to feel's and back (HostReports::presented); the USB gadget does so at its endpoints.
+    bool standard_pid_only = false;
 };
+
+// What a connection given to Peripheral::attach() carries: the reports of the device as it
+// presents itself (the standard PID form when standard_pid_only: the Peripheral
+// translates), or feel's own form already (a transport that translates at its own edge, as
+// the USB gadget does so that its log reads feel's reports).
+enum class HostReports : uint8_t { presented, feel_form };
 
 // The effect types of HID PID 1.0 (effect_type_bit() of each).
 [[nodiscard]] uint64_t pid_effect_types() noexcept;
@@ -83,7 +98,7 @@ public:
 
     // Serves one host over this connection on a service thread until the host disconnects
     // or stop(). While a host is attached, a new connection gets `busy` and is closed.
-    void attach(std::unique_ptr<transport::Connection> host);
+    void attach(std::unique_ptr<transport::Connection> host, HostReports form = HostReports::presented);
     // Accepts hosts from the listener on a thread of its own until stop(), attaching each.
     void serve(std::unique_ptr<transport::Listener> listener);
     // Stops accepting, detaches the host, joins the threads; the loop keeps running until
@@ -91,6 +106,8 @@ public:
     void stop();
 
     [[nodiscard]] bool host_attached() const noexcept;
+    // PeripheralOptions::standard_pid_only: the device presents itself as a plain PID device.
+    [[nodiscard]] bool standard_pid_only() const noexcept;
     [[nodiscard]] const runtime::Capabilities& capabilities() const noexcept;
     [[nodiscard]] PeripheralStats stats() const noexcept;
     // Where serve() listens (valid after serve()).
