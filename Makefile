@@ -72,6 +72,8 @@ test-studio: build
 # (tests/CMakeLists.txt). No benchmarks. Warnings are the plain build's job, so no -Werror
 # here. Every finding stops its test (halt_on_error); leak reports go through
 # scripts/lsan.supp (third-party leaks only, each entry says why).
+# The libraries build in unity batches (CMAKE_UNITY_BUILD: files compiled 8 to a translation
+# unit, their shared headers parsed once; docs/testing.md "Time"); the test files do not yet.
 # --fresh: the options below always win over a tree configured before (another compiler or
 # sanitizer); only objects whose command changed are rebuilt.
 SANITIZER_TREE := -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
