@@ -9,6 +9,7 @@
 
 #include "conditions/condition.hpp"
 #include "dynamics/dynamic.hpp"
+#include "engine_axes.hpp"
 #include "feel/engine.hpp"
 #include "motion_estimator.hpp"
 #include "sample_pool.hpp"
@@ -17,6 +18,8 @@ namespace feel {
 namespace detail {
 
 struct Slot {
+    Slot() noexcept : condition{} {}  // the union's first state live; every other field as declared
+
     EffectParams params{};
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
     // What the tick needs of params every tick, worked out once per command (prepare_slot):
@@ -26,15 +29,20 @@ struct Slot {
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
     bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
     float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
-    detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
+    detail::ConditionCurve curves[kEngineAxes] = {};  // params.conditions (condition.hpp), per effect axis
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;
     bool began_playing = false;            // start_position is set
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
-    detail::ConditionState condition{};    // conditions' memory between ticks
-    detail::DynamicState dynamic{};        // dynamics' simulated mass between ticks
+    // The effect's memory between ticks: a condition's (bristles, contact ledger) or a
+    // dynamic's (its simulated mass), never both, so they share the bytes. Which one is
+    // live follows cls; reset_memory() starts the live one afresh.
+    union {
+        detail::ConditionState condition;
+        detail::DynamicState dynamic;
+    };
     int64_t next_interim_us = 0;           // when the next interim report is due
 
     // Commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
@@ -45,11 +53,33 @@ struct Slot {
     PlayEnd last_end = PlayEnd::none;      // how the last play ended
     int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
 
+    // Starts the memory of the slot's class afresh (cls must be set: prepare_slot). Both
+    // states are trivially copyable, so assigning one makes it the union's live member.
+    void reset_memory() noexcept {
+        if (cls == EffectClass::dynamic) {
+            dynamic = detail::DynamicState{};
+        } else {
+            condition = detail::ConditionState{};
+        }
+    }
+
     // The iteration count of the current play: Engine::start's override, else the effect's.
     // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
     [[nodiscard]] int32_t play_iterations() const noexcept {
         return iterations_override != 0 ? iterations_override : params.iterations;
     }
+};
+
+// A DynamicReport as the queue holds it until the host pops it: axes for kEngineAxes only
+// (an effect has at most the device's axes); pop_report widens it to the public struct.
+struct QueuedReport {
+    EffectId effect{};
+    DynamicReport::Kind kind = DynamicReport::Kind::interim;
+    int64_t t_us = 0;
+    int32_t axis_count = 0;
+    float position[kEngineAxes] = {};
+    float velocity[kEngineAxes] = {};
+    float handle_velocity[kEngineAxes] = {};
 };
 
 // Works out a slot's per-tick constants (direction, class, gain) from its params: after
@@ -78,7 +108,7 @@ struct Engine::Impl {
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
           samples(config_error ? 0 : c.max_samples, slot_count),
           report_capacity(config_error ? 1 : c.report_capacity),
-          reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
+          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
         interim_period_us = config_error ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
@@ -90,8 +120,7 @@ struct Engine::Impl {
     void begin_play(detail::Slot& s, int32_t iterations_override) noexcept {
         s.state = EffectState::pending;
         s.began_playing = false;
-        s.condition = {};
-        s.dynamic = {};
+        s.reset_memory();
         s.next_interim_us = 0;
         s.iterations_override = iterations_override;
         s.completed_iterations = 0;
@@ -121,7 +150,7 @@ struct Engine::Impl {
 
     // The report queue: a ring the tick writes and the host drains (single thread for now;
     // the device runtime puts a lock-free SPSC queue between them).
-    void push_report(const DynamicReport& r) noexcept {
+    void push_report(const detail::QueuedReport& r) noexcept {
         if (report_count == report_capacity) {
             ++reports_dropped;
             return;
@@ -143,7 +172,7 @@ struct Engine::Impl {
         }
         const bool interim_due = s.params.dynamic.interim_reporting && t_us >= s.next_interim_us;
         if (!interim_due && !r.finished) return;
-        DynamicReport report;
+        detail::QueuedReport report;
         report.effect = EffectId{index, s.generation};
         report.kind = r.finished ? DynamicReport::Kind::final : DynamicReport::Kind::interim;
         report.t_us = t_us;
@@ -180,7 +209,7 @@ struct Engine::Impl {
     detail::MotionEstimator motion;
     int64_t interim_period_us = 1000;  // between interim reports (EngineConfig::interim_report_hz)
     int32_t report_capacity;
-    std::unique_ptr<DynamicReport[]> reports;
+    std::unique_ptr<detail::QueuedReport[]> reports;
     int32_t report_head = 0;
     int32_t report_count = 0;
     uint64_t reports_dropped = 0;

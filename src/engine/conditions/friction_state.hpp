@@ -5,6 +5,7 @@
 
 #include "conditions/friction_model.hpp"
 #include "conditions/stop_guard.hpp"
+#include "engine_axes.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
@@ -12,9 +13,9 @@ namespace feel::detail {
 struct FrictionState {
     // friction: one bristle per block, index i = the effect's i-th axis.
     // texture: bristle 0 runs along the texture's line.
-    Bristle bristle[kMaxAxes] = {};
+    Bristle bristle[kEngineAxes] = {};  // an effect has at most the device's axes (engine_axes.hpp)
     // friction: the stop guard of each block (stop_guard.hpp).
-    StopGuard guard[kMaxAxes] = {};
+    StopGuard guard[kEngineAxes] = {};
     // The guards' shared gains, recomputed only when the tick period changes (an exp each).
     StopGuardTick guard_tick{};
     double guard_tick_dt_s = -1.0;
