@@ -64,7 +64,7 @@ int main() {
     const unsigned slots = 32 * slot;
     const unsigned samples = 1024 * sizeof(int16_t);
     const unsigned estimator = sizeof(detail::MotionEstimator);
-    const unsigned reports = 16 * sizeof(detail::QueuedReport);
+    const unsigned reports = 16 * sizeof(DynamicReport);
     const unsigned rest = heap - slots - samples - reports - estimator;
     // The 16 KB goal split over the items: a budget each, so that each figure has a goal.
     constexpr unsigned kSlotBudget = 9216, kSampleBudget = 2048, kEstimatorBudget = 4096, kReportBudget = 512,
@@ -76,9 +76,9 @@ int main() {
                 slots, kSlotBudget, slot, slot_params, slot_memory, slot - slot_params - slot_memory);
     std::printf("  sample memory    %6u  goal %5u  (1024 force-profile samples)\n", samples, kSampleBudget);
     std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes)\n", estimator,
-                kEstimatorBudget, detail::kEngineAxes);
+                kEstimatorBudget, kMaxAxes);
     std::printf("  reports          %6u  goal %5u  (16 dynamic reports of %u)\n", reports, kReportBudget,
-                static_cast<unsigned>(sizeof(detail::QueuedReport)));
+                static_cast<unsigned>(sizeof(DynamicReport)));
     std::printf("  engine, rest     %6u  goal %5u  (configuration, pool accounting, sample index)\n", rest,
                 kRestBudget);
     std::printf("  total            %6u  goal %5u  (all allocated once, by the constructor)\n", heap, 16384u);

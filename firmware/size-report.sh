@@ -17,7 +17,7 @@ printf '  engine            %6d  (its code and constants)\n' "$engine"
 printf '  libgcc            %6d  (soft-float double, 64-bit division: called by the engine)\n' "$libgcc"
 printf '  libm              %6d  (exp, sin, cos, fmod, ...: called by the engine)\n' "$libm"
 printf '  engine + callees  %6d  goal 49152\n' $((engine + libgcc + libm))
-printf '  C runtime         %6d  (newlib: printf, exit and semihosting for the harness, malloc for the engine's one allocation)\n' "$runtime"
+printf '  C runtime         %6d  (newlib: printf, exit, semihosting for the harness; malloc for the engine at start-up)\n' "$runtime"
 printf '  program           %6d  (size program, start-up, heap guard)\n' "$program"
 printf '  image             %6d  (text + data; the parts count strings merged across files once each)\n' "$image"
 echo "static RAM of the image: $((data + bss)) bytes (.data + .bss; the engine has none)"

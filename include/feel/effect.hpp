@@ -226,7 +226,7 @@ struct EffectParams {
     int32_t gain = kFullScale;          // 0..10000, scales this effect's force
     int32_t iterations = 1;             // 1..255, or kInfiniteIterations
     int32_t axis_count = 1;             // 1..6
-    Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};
+    Axis axes[kMaxAxes] = {FEEL_AXES_IN_ORDER(FEEL_MAX_AXES)};  // x, y, z, rx, ry, rz
     Direction direction{};
     Trigger trigger{};
     int64_t trigger_repeat_interval_us = 0;  // 0 = no repeat, else 1..65e6

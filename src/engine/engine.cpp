@@ -37,8 +37,7 @@ using detail::Slot;
 }  // namespace
 
 Error detail::check_engine_config(const EngineConfig& c) noexcept {
-    // kEngineAxes: the axes this build keeps state for (6 on hosts; engine_axes.hpp).
-    if (!Range{1, kEngineAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kEngineAxes});
+    if (!Range{1, kMaxAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kMaxAxes});
     if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
     if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
     if (!Range{0, 1 << 30}.contains(c.pool_bytes)) return Error::out_of_range("pool_bytes", c.pool_bytes, {0, 1 << 30});
@@ -75,7 +74,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.reads_acceleration = s.params.type == EffectType::inertia ||
                            (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
-    for (int i = 0; i < kEngineAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
+    for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
@@ -350,17 +349,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
 bool Engine::pop_report(DynamicReport& report) noexcept {
     Impl& m = *impl_;
     if (m.report_count == 0) return false;
-    const detail::QueuedReport& q = m.reports[m.report_head];
-    report = DynamicReport{};
-    report.effect = q.effect;
-    report.kind = q.kind;
-    report.t_us = q.t_us;
-    report.axis_count = q.axis_count;
-    for (int i = 0; i < q.axis_count; ++i) {
-        report.position[i] = q.position[i];
-        report.velocity[i] = q.velocity[i];
-        report.handle_velocity[i] = q.handle_velocity[i];
-    }
+    report = m.reports[m.report_head];
     m.report_head = (m.report_head + 1) % m.report_capacity;
     --m.report_count;
     return true;

@@ -9,7 +9,6 @@
 
 #include "conditions/condition.hpp"
 #include "dynamics/dynamic.hpp"
-#include "engine_axes.hpp"
 #include "feel/engine.hpp"
 #include "motion_estimator.hpp"
 #include "sample_pool.hpp"
@@ -29,7 +28,7 @@ struct Slot {
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
     bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
     float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
-    detail::ConditionCurve curves[kEngineAxes] = {};  // params.conditions (condition.hpp), per effect axis
+    detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
     EffectState state = EffectState::free;
     uint16_t generation = 0;
@@ -70,18 +69,6 @@ struct Slot {
     }
 };
 
-// A DynamicReport as the queue holds it until the host pops it: axes for kEngineAxes only
-// (an effect has at most the device's axes); pop_report widens it to the public struct.
-struct QueuedReport {
-    EffectId effect{};
-    DynamicReport::Kind kind = DynamicReport::Kind::interim;
-    int64_t t_us = 0;
-    int32_t axis_count = 0;
-    float position[kEngineAxes] = {};
-    float velocity[kEngineAxes] = {};
-    float handle_velocity[kEngineAxes] = {};
-};
-
 // Works out a slot's per-tick constants (direction, class, gain) from its params: after
 // every command that sets them, never in the tick.
 void prepare_slot(Slot& s) noexcept;
@@ -108,7 +95,7 @@ struct Engine::Impl {
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
           samples(config_error ? 0 : c.max_samples, slot_count),
           report_capacity(config_error ? 1 : c.report_capacity),
-          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
+          reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
         interim_period_us = config_error ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
@@ -150,7 +137,7 @@ struct Engine::Impl {
 
     // The report queue: a ring the tick writes and the host drains (single thread for now;
     // the device runtime puts a lock-free SPSC queue between them).
-    void push_report(const detail::QueuedReport& r) noexcept {
+    void push_report(const DynamicReport& r) noexcept {
         if (report_count == report_capacity) {
             ++reports_dropped;
             return;
@@ -172,7 +159,7 @@ struct Engine::Impl {
         }
         const bool interim_due = s.params.dynamic.interim_reporting && t_us >= s.next_interim_us;
         if (!interim_due && !r.finished) return;
-        detail::QueuedReport report;
+        DynamicReport report;
         report.effect = EffectId{index, s.generation};
         report.kind = r.finished ? DynamicReport::Kind::final : DynamicReport::Kind::interim;
         report.t_us = t_us;
@@ -209,7 +196,7 @@ struct Engine::Impl {
     detail::MotionEstimator motion;
     int64_t interim_period_us = 1000;  // between interim reports (EngineConfig::interim_report_hz)
     int32_t report_capacity;
-    std::unique_ptr<detail::QueuedReport[]> reports;
+    std::unique_ptr<DynamicReport[]> reports;
     int32_t report_head = 0;
     int32_t report_count = 0;
     uint64_t reports_dropped = 0;

@@ -262,7 +262,7 @@ void MotionEstimator::reset() noexcept {
     frozen_interval_us_ = 0;
     frozen_run_ = 0;
     sums_axes_ = 0;
-    for (int a = 0; a < kEngineAxes; ++a) {
+    for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
         sums_[a] = RungSums{};
@@ -319,9 +319,9 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         }
     }
     t_us_[head_] = t_us;
-    const int axes = axis_count < kEngineAxes ? (axis_count > 0 ? axis_count : 0) : kEngineAxes;
+    const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
     // Axes never written hold 0 throughout the ring, which is what they would read: they are
-    // skipped (kEngineAxes is 6 on a host; a device has 2 or 3) until an update names them.
+    // skipped (kMaxAxes is 6; a device has 2 or 3) until an update names them.
     const int written = axes > written_axes_ ? axes : written_axes_;
     written_axes_ = written;
     for (int a = 0; a < written; ++a) {
@@ -354,7 +354,7 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     newest_interval_u_ = count_ >= 2 ? static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
     for (int a = 0; a < axes; ++a) estimate_axis(a, with_acceleration);
-    for (int a = axes; a < kEngineAxes; ++a) acceleration_ready_[a] = false;
+    for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
 // Exact for every float position within ±max_fixed_position_ whose finest bit is not

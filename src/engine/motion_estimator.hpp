@@ -19,13 +19,12 @@
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
 // function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
-// FPU), time in integer microseconds. History for kEngineAxes axes (engine_axes.hpp): axes
-// beyond it are not estimated and read 0.
+// FPU), time in integer microseconds. History for kMaxAxes axes: 2 in the firmware build
+// (feel/axis.hpp, FEEL_MAX_AXES).
 #pragma once
 
 #include <cstdint>
 
-#include "engine_axes.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
@@ -151,43 +150,43 @@ private:
     // Axes update() has written samples of (the ring of the others holds only 0); never
     // lowered, not even by reset(), which leaves the ring's contents.
     int written_axes_ = 0;
-    float x_[kEngineAxes][kHistory] = {};
+    float x_[kMaxAxes][kHistory] = {};
     // The same positions in 1/fixed_scale_ units (0 where to_fixed refuses one).
-    int32_t fixed_[kEngineAxes][kHistory] = {};
+    int32_t fixed_[kMaxAxes][kHistory] = {};
     // How many of the newest samples of each axis read the newest value (never more than
     // they do; it may read fewer after a replaced sample): at rest it reaches max_n and
     // the fits are skipped without looking at the history.
-    int still_run_[kEngineAxes] = {};
+    int still_run_[kMaxAxes] = {};
     TimePattern pattern_;
     // Intervals between frozen samples: the newest frozen_run_ of them are all
     // frozen_interval_us_ (µs).
     int64_t frozen_interval_us_ = 0;
     int frozen_run_ = 0;
     // How many of the newest frozen samples of each axis have a fixed-point value.
-    int fixed_run_[kEngineAxes] = {};
+    int fixed_run_[kMaxAxes] = {};
     // Whether the newest sample (index 0) and the newest frozen one (index 1) have one: to_fixed's
     // verdicts kept, not recomputed.
-    bool newest_fixed_[kEngineAxes] = {};
-    bool frozen_fixed_[kEngineAxes] = {};
+    bool newest_fixed_[kMaxAxes] = {};
+    bool frozen_fixed_[kMaxAxes] = {};
     // What window_sums needs that is the same for every axis and rung of a tick, set by update:
     // the newest interval and the frozen one in units of kMaxWindowUs.
     float newest_interval_u_ = 0.0f;
     float frozen_interval_u_ = 0.0f;
     // Axes whose running sums are kept up to date (the first sums_axes_).
     int sums_axes_ = 0;
-    RungSums sums_[kEngineAxes];
+    RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
     // frozen sample's, and its sums follow from it (ladder_sums). True while that holds.
-    bool sums_still_[kEngineAxes] = {};
-    float velocity_[kEngineAxes] = {};
-    float acceleration_[kEngineAxes] = {};
-    int velocity_window_[kEngineAxes] = {};
+    bool sums_still_[kMaxAxes] = {};
+    float velocity_[kMaxAxes] = {};
+    float acceleration_[kMaxAxes] = {};
+    int velocity_window_[kMaxAxes] = {};
     // The rungs (indices into the pattern's rung_n) the fast fits accepted last time: the
     // next search starts at most kRungsUp above them.
-    int velocity_rung_[kEngineAxes] = {};
-    int acceleration_rung_[kEngineAxes] = {};
-    int acceleration_window_[kEngineAxes] = {};
-    bool acceleration_ready_[kEngineAxes] = {};
+    int velocity_rung_[kMaxAxes] = {};
+    int acceleration_rung_[kMaxAxes] = {};
+    int acceleration_window_[kMaxAxes] = {};
+    bool acceleration_ready_[kMaxAxes] = {};
 };
 
 }  // namespace feel::detail

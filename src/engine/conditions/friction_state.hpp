@@ -5,7 +5,6 @@
 
 #include "conditions/friction_model.hpp"
 #include "conditions/stop_guard.hpp"
-#include "engine_axes.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
@@ -13,9 +12,9 @@ namespace feel::detail {
 struct FrictionState {
     // friction: one bristle per block, index i = the effect's i-th axis.
     // texture: bristle 0 runs along the texture's line.
-    Bristle bristle[kEngineAxes] = {};  // an effect has at most the device's axes (engine_axes.hpp)
+    Bristle bristle[kMaxAxes] = {};
     // friction: the stop guard of each block (stop_guard.hpp).
-    StopGuard guard[kEngineAxes] = {};
+    StopGuard guard[kMaxAxes] = {};
     // The guards' shared gains, recomputed only when the tick period changes (an exp each).
     StopGuardTick guard_tick{};
     double guard_tick_dt_s = -1.0;
