@@ -11,7 +11,7 @@ elf=$dir/feel_m4_size.elf
 read -r text data bss _ < <(arm-none-eabi-size "$elf" | tail -1)
 read -r engine libgcc libm runtime program < <(awk -f "$here/flash-by-origin.awk" "$dir/feel_m4_size.map")
 image=$((text + data))
-echo "feel on a Cortex-M4F (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os, 2 engine axes):"
+echo "feel on a Cortex-M4F (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os, FEEL_MAX_AXES=2):"
 echo "flash (bytes; goal 49152 for the engine with what it calls):"
 printf '  engine            %6d  (its code and constants)\n' "$engine"
 printf '  libgcc            %6d  (soft-float double, 64-bit division: called by the engine)\n' "$libgcc"
