@@ -53,19 +53,35 @@ int main() {
     }
     const unsigned stack = kPaint - untouched();
 
-    const unsigned slots = 32 * sizeof(detail::Slot);
+    // What a slot holds: the effect's parameters as the host gave them (EffectParams, every
+    // type's block for kMaxAxes axes), its memory between ticks (a condition's or a dynamic's,
+    // sharing the bytes), and the rest (per-tick constants, clock, command bookkeeping).
+    const unsigned slot = sizeof(detail::Slot);
+    const unsigned slot_params = sizeof(EffectParams);
+    const unsigned slot_memory = sizeof(detail::ConditionState) > sizeof(detail::DynamicState)
+                                     ? sizeof(detail::ConditionState)
+                                     : sizeof(detail::DynamicState);
+    const unsigned slots = 32 * slot;
     const unsigned samples = 1024 * sizeof(int16_t);
     const unsigned estimator = sizeof(detail::MotionEstimator);
     const unsigned reports = 16 * sizeof(DynamicReport);
     const unsigned rest = heap - slots - samples - reports - estimator;
-    std::printf("RAM for 32 slots on 2 axes (bytes):\n");
-    std::printf("  slots            %6u  (32 x %u: parameters, clock, condition and dynamic state)\n", slots,
-                static_cast<unsigned>(sizeof(detail::Slot)));
-    std::printf("  sample memory    %6u  (1024 force-profile samples)\n", samples);
-    std::printf("  estimator        %6u  (velocity and acceleration history)\n", estimator);
-    std::printf("  reports          %6u  (16 dynamic reports)\n", reports);
-    std::printf("  engine, rest     %6u  (configuration, pool accounting, sample index)\n", rest);
-    std::printf("  total            %6u  (all allocated once, by the constructor)\n", heap);
-    std::printf("  stack in a tick  %6u  (deepest, measured)\n", stack);
+    // The 16 KB goal split over the items: a budget each, so that each figure has a goal.
+    constexpr unsigned kSlotBudget = 9216, kSampleBudget = 2048, kEstimatorBudget = 4096, kReportBudget = 512,
+                       kRestBudget = 512;
+    static_assert(kSlotBudget + kSampleBudget + kEstimatorBudget + kReportBudget + kRestBudget == 16384);
+    std::printf("RAM for 32 slots on 2 axes (bytes; goal: the 16384-byte goal split over the items):\n");
+    std::printf("  slots            %6u  goal %5u  (32 x %u: parameters %u, condition or dynamic memory %u, "
+                "constants, clock and commands %u)\n",
+                slots, kSlotBudget, slot, slot_params, slot_memory, slot - slot_params - slot_memory);
+    std::printf("  sample memory    %6u  goal %5u  (1024 force-profile samples)\n", samples, kSampleBudget);
+    std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes)\n", estimator,
+                kEstimatorBudget, kMaxAxes);
+    std::printf("  reports          %6u  goal %5u  (16 dynamic reports of %u)\n", reports, kReportBudget,
+                static_cast<unsigned>(sizeof(DynamicReport)));
+    std::printf("  engine, rest     %6u  goal %5u  (configuration, pool accounting, sample index)\n", rest,
+                kRestBudget);
+    std::printf("  total            %6u  goal %5u  (all allocated once, by the constructor)\n", heap, 16384u);
+    std::printf("  stack in a tick  %6u              (deepest, measured)\n", stack);
     return 0;
 }

@@ -73,6 +73,23 @@ int main() {
     static detail::MotionEstimator estimator;
     estimator.configure(20000.0f / 4096.0f);
     std::printf("heap at start-up: %u bytes\n", static_cast<unsigned>(heap_guard_requested_bytes()));
+    // The board's engine is built for 2 axes (FEEL_MAX_AXES=2): a device or an effect with
+    // more is refused with the range it allows, not stored past its arrays. (After the heap
+    // figure, which counts only the engines the test runs.)
+    {
+        EngineConfig three_axes;
+        three_axes.axis_count = 3;
+        Engine too_wide(three_axes);
+        const Error device = too_wide.create(EffectParams{}, {}).error;
+        EffectParams effect = bench::peer_mix_effect(0);
+        effect.axis_count = 3;
+        const Error wide_effect = scenario.create(effect, {}).error;
+        const bool device_refused = std::strcmp(device.field, "axis_count") == 0 && device.allowed.max == 2;
+        const bool effect_refused = std::strcmp(wide_effect.field, "axes") == 0 && wide_effect.allowed.max == 2;
+        std::printf("refuses 3 axes: device %s, effect %s\n", device_refused ? "yes" : "NO",
+                    effect_refused ? "yes" : "NO");
+        if (!device_refused || !effect_refused) return 2;
+    }
     heap_guard_lock();
 
     firmware::InstructionCounter counter;

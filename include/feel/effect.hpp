@@ -225,8 +225,8 @@ struct EffectParams {
     int64_t start_delay_us = 0;         // 0..65e6, once, before the first iteration
     int32_t gain = kFullScale;          // 0..10000, scales this effect's force
     int32_t iterations = 1;             // 1..255, or kInfiniteIterations
-    int32_t axis_count = 1;             // 1..6
-    Axis axes[kMaxAxes] = {Axis::x, Axis::y, Axis::z, Axis::rx, Axis::ry, Axis::rz};
+    int32_t axis_count = 1;             // 1..kMaxAxes (6; the firmware build: 2)
+    Axis axes[kMaxAxes] = {FEEL_AXES_IN_ORDER(FEEL_MAX_AXES)};  // x, y, z, rx, ry, rz
     Direction direction{};
     Trigger trigger{};
     int64_t trigger_repeat_interval_us = 0;  // 0 = no repeat, else 1..65e6

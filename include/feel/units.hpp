@@ -7,6 +7,8 @@
 
 #include <cstdint>
 
+#include "feel/axis.hpp"
+
 namespace feel {
 
 // Magnitudes, coefficients, saturations and positions are in ±10000 of device capability.
@@ -40,7 +42,7 @@ inline constexpr Range kSampleCount{1, 65535};
 inline constexpr Range kCartesianComponent{-kFullScale, kFullScale};
 inline constexpr Range kDynamicMass{1, kFullScale};            // §6.6.f, §8.4
 inline constexpr Range kHalfCycles{0, kFullScale};
-inline constexpr Range kAxisCount{1, 6};                       // x, y, z, rx, ry, rz (axis.hpp)
+inline constexpr Range kAxisCount{1, kMaxAxes};                // x, y, z, rx, ry, rz (axis.hpp)
 inline constexpr Range kElevation{0, 18000};                   // spherical: angle away from +z (§6.5.c)
 inline constexpr Range kRepeatIntervalUs{0, kMaxTimeUs};       // 0 = no repeat (§6.3)
 inline constexpr Range kDynamicStiffness{1, kFullScale};       // KPos/KNeg and what maps to them (§8.4)

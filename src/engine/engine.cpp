@@ -143,8 +143,6 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.state = EffectState::stopped;
     s.start_t_us = 0;
     s.began_playing = false;
-    s.condition = {};
-    s.dynamic = {};
     s.next_interim_us = 0;
     s.iterations_override = 0;
     s.completed_iterations = 0;
@@ -154,6 +152,7 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.pool_bytes = bytes;
     m.pool_used_bytes += bytes;
     detail::prepare_slot(s);
+    s.reset_memory();
     if (index >= m.slot_end) m.slot_end = index + 1;
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }

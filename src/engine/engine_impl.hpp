@@ -17,6 +17,8 @@ namespace feel {
 namespace detail {
 
 struct Slot {
+    Slot() noexcept : condition{} {}  // the union's first state live; every other field as declared
+
     EffectParams params{};
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
     // What the tick needs of params every tick, worked out once per command (prepare_slot):
@@ -36,8 +38,13 @@ struct Slot {
     int64_t start_t_us = 0;
     bool began_playing = false;            // start_position is set
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
-    detail::ConditionState condition{};    // conditions' memory between ticks
-    detail::DynamicState dynamic{};        // dynamics' simulated mass between ticks
+    // The effect's memory between ticks: a condition's (bristles, contact ledger) or a
+    // dynamic's (its simulated mass), never both, so they share the bytes. Which one is
+    // live follows cls; reset_memory() starts the live one afresh.
+    union {
+        detail::ConditionState condition;
+        detail::DynamicState dynamic;
+    };
     int64_t next_interim_us = 0;           // when the next interim report is due
 
     // Commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
@@ -47,6 +54,16 @@ struct Slot {
     uint32_t starts = 0;                   // times started since created
     PlayEnd last_end = PlayEnd::none;      // how the last play ended
     int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
+
+    // Starts the memory of the slot's class afresh (cls must be set: prepare_slot). Both
+    // states are trivially copyable, so assigning one makes it the union's live member.
+    void reset_memory() noexcept {
+        if (cls == EffectClass::dynamic) {
+            dynamic = detail::DynamicState{};
+        } else {
+            condition = detail::ConditionState{};
+        }
+    }
 
     // The iteration count of the current play: Engine::start's override, else the effect's.
     // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
@@ -94,8 +111,7 @@ struct Engine::Impl {
     void begin_play(detail::Slot& s, int32_t iterations_override) noexcept {
         s.state = EffectState::pending;
         s.began_playing = false;
-        s.condition = {};
-        s.dynamic = {};
+        s.reset_memory();
         s.next_interim_us = 0;
         s.iterations_override = iterations_override;
         s.completed_iterations = 0;

@@ -19,7 +19,8 @@
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
 // function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
-// FPU), time in integer microseconds.
+// FPU), time in integer microseconds. History for kMaxAxes axes: 2 in the firmware build
+// (feel/axis.hpp, FEEL_MAX_AXES).
 #pragma once
 
 #include <cstdint>

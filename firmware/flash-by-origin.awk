@@ -1,0 +1,35 @@
+# Flash bytes of a linked image by where they come from, read from its GNU ld map file:
+# every input section placed in an output section that lives in flash (code, constants,
+# vectors, the initial values of .data), summed by the archive it came from.
+#   engine   libfeel_engine_m4.a: the engine's code and constants
+#   libgcc   soft-float double routines and 64-bit division the engine's code calls
+#   libm     the math library (exp, sin, cos, fmod, ...)
+#   runtime  newlib, libstdc++ and the semihosting syscalls: printf, malloc, exit
+#   program  the test or size program, start-up and the heap guard
+# Strings merged across files are counted once per file here, so the parts may exceed the
+# image by a few hundred bytes.
+function hex(h,  i, n) {
+    n = 0; h = tolower(h); sub(/^0x/, "", h)
+    for (i = 1; i <= length(h); ++i) n = n * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1
+    return n
+}
+/^Linker script and memory map/ { on = 1; next }
+!on { next }
+/^\.[A-Za-z_]/ {
+    split($0, f, /[ \t]+/)
+    flash = f[1] ~ /^\.(isr_vector|text|ARM\.extab|ARM\.exidx|preinit_array|init_array|fini_array|data)$/
+}
+flash {
+    n = split($0, f, /[ \t]+/)
+    # An input section: [name] 0xADDRESS 0xSIZE FILE (the name may be on the line before).
+    if (n >= 4 && f[n - 2] ~ /^0x/ && f[n - 1] ~ /^0x/ && f[n] !~ /^0x/) {
+        file = f[n]
+        if (file ~ /libfeel_engine_m4\.a/) k = "engine"
+        else if (file ~ /libgcc\.a/) k = "libgcc"
+        else if (file ~ /libm\.a/) k = "libm"
+        else if (file ~ /\/lib[^\/]*\.a\(|crt[^\/]*\.o$/) k = "runtime"
+        else k = "program"
+        bytes[k] += hex(f[n - 1])
+    }
+}
+END { printf "%d %d %d %d %d\n", bytes["engine"], bytes["libgcc"], bytes["libm"], bytes["runtime"], bytes["program"] }
