@@ -408,6 +408,7 @@ bool Peripheral::set_buttons(uint32_t pressed) noexcept { return impl_->sim->set
 bool Peripheral::set_hand_target(int32_t x, int32_t y, int32_t z) noexcept {
     return impl_->sim->set_hand_target(x, y, z);
 }
+int64_t Peripheral::hand_target_taken_us() const noexcept { return impl_->sim->hand_target_taken_us(); }
 void Peripheral::set_grip(sim::Grip grip) noexcept { impl_->sim->set_grip(grip); }
 
 bool Peripheral::set_hats(uint32_t pushed) noexcept { return impl_->sim->set_hats(pushed); }

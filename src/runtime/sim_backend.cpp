@@ -52,6 +52,7 @@ void SimBackend::sense(int64_t t_us, TickInput& in) noexcept {
             for (int a = 0; a < 3; ++a) target[a] = static_cast<int16_t>((t >> (16 * a)) & 0xFFFF);
             (void)device_.set_live_target(target, std::min(3, device_.profile().axis_count));
         }
+        target_taken_us_.store(t_us, std::memory_order_release);
     }
     device_.sense(in);
 }

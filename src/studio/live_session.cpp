@@ -162,6 +162,7 @@ std::vector<json> LiveSession::handle(std::string_view text, Clock::time_point r
             pointer_.applied = Clock::now();
             std::copy(std::begin(before.force), std::end(before.force), std::begin(pointer_.force));
             pointer_.answered = false;
+            pointer_.min_fade = 1;
             return {};
         }
         if (type == "grip") {
@@ -339,6 +340,21 @@ double wall_us(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
+// The force of report `s` moved from the one when the pointer's target was set by more than
+// the browser's probe threshold (0.2% of full scale): the report answers the pointer.
+static bool force_moved(const DeviceSample& s, const float (&before)[kMaxAxes]) {
+    for (int a = 0; a < s.axis_count && a < kMaxAxes; ++a) {
+        if (std::fabs(s.force[a] - before[a]) > 20) return true;
+    }
+    return false;
+}
+
+bool LiveSession::pointer_answer_ready() const {
+    if (pointer_.answered) return false;
+    const DeviceSample s = device_->newest();
+    return s.seq > last_sample_ && s.host_us >= steady_us(pointer_.applied) && force_moved(s, pointer_.force);
+}
+
 json LiveSession::state_frame(bool* pointer_answered) {
     std::vector<DeviceSample> samples = device_->samples_after(last_sample_);
     if (samples.size() > kMaxFrameSamples) {  // a browser that fell behind gets the newest
@@ -352,6 +368,7 @@ json LiveSession::state_frame(bool* pointer_answered) {
     // force moved (by more than the browser's probe threshold, 0.2% of full scale).
     std::optional<int64_t> force_seen_us;
     int64_t force_seen_transit_us = 0;
+    int64_t force_seen_device_us = 0;  // that report's tick, device time
     const int64_t applied_us = steady_us(pointer_.applied);
     for (const DeviceSample& s : samples) {
         json row = json::array({static_cast<double>(s.t_us) / 1000.0});
@@ -362,11 +379,11 @@ json LiveSession::state_frame(bool* pointer_answered) {
         const int64_t offset = s.host_us - s.t_us;
         if (!min_offset_us_ || offset < *min_offset_us_) min_offset_us_ = offset;
         if (!pointer_.answered && !force_seen_us && s.host_us >= applied_us) {
-            for (int a = 0; a < s.axis_count; ++a) {
-                if (std::fabs(s.force[a] - pointer_.force[a]) > 20) {
-                    force_seen_us = s.host_us;
-                    force_seen_transit_us = offset - *min_offset_us_;
-                }
+            pointer_.min_fade = std::min(pointer_.min_fade, s.fade_level);
+            if (force_moved(s, pointer_.force)) {
+                force_seen_us = s.host_us;
+                force_seen_transit_us = offset - *min_offset_us_;
+                force_seen_device_us = s.t_us;
             }
         }
     }
@@ -396,12 +413,20 @@ json LiveSession::state_frame(bool* pointer_answered) {
                   {"dropped_reports", device_->dropped_reports()}};
     if (force_seen_us) {
         pointer_.answered = true;
+        // Of the device hop, on the device's own clock (exact): the loop's tick that took
+        // the target -> the tick whose report has the new force (the handle's motion). -1
+        // when the device cannot say (a device in another process).
+        const int64_t taken_us = device_->hand_target_taken_us();
+        const int64_t loop_us = taken_us < 0 ? -1 : force_seen_device_us - taken_us;
         frame["pointer_hops"] = {{"seq", pointer_seq_},
                                  {"read_wall_us", wall_us(pointer_.read)},
                                  {"built_wall_us", wall_us(built)},
                                  {"apply_us", us_between(pointer_.read, pointer_.applied)},
                                  {"device_us", static_cast<double>(*force_seen_us - applied_us)},
                                  {"transit_us", static_cast<double>(force_seen_transit_us)},
+                                 {"loop_us", static_cast<double>(loop_us)},
+                                 {"taken_t_us", static_cast<double>(taken_us)},
+                                 {"min_fade", pointer_.min_fade},
                                  {"frame_us", static_cast<double>(steady_us(built) - *force_seen_us)}};
     }
     if (pointer_answered) *pointer_answered = force_seen_us.has_value();

@@ -65,8 +65,11 @@ public:
     // The frame that answered pointer message `seq` was written to the socket `write_us`
     // after it was queued, behind `ahead` frames: the next frame says so.
     void note_pointer_written(int64_t seq, size_t ahead, double write_us);
-    // Whether the device has reported since the last frame.
-    [[nodiscard]] bool has_news() const { return device_->newest_seq() > last_sample_; }
+    // Whether the newest pointer message's force change has not been shown yet.
+    [[nodiscard]] bool pointer_awaited() const noexcept { return !pointer_.answered; }
+    // Whether the device's newest report, not yet in a frame, shows that change (the next
+    // frame would answer the pointer message).
+    [[nodiscard]] bool pointer_answer_ready() const;
 
     [[nodiscard]] int64_t pointer_seq() const noexcept { return pointer_seq_; }
 
@@ -108,6 +111,7 @@ private:
         Clock::time_point applied{};  // set_hand_target returned
         float force[kMaxAxes] = {};   // the newest report's force when it was applied
         bool answered = true;         // a frame showed its force change
+        float min_fade = 1;           // the lowest safety fade in the reports since applied
     };
     PointerTrace pointer_;
     // The smallest (sampler time - device time) seen: a report's transit from its tick to

@@ -122,6 +122,8 @@ void StudioDevice::sample_loop() {
                 s.position[a] = in.position[a];
             }
             s.buttons = in.buttons;
+            s.fade_level = in.fade_level;
+            s.hands_off = in.hands_off;
             s.host_us = now_us;
             s.seq = next_seq_++;
             ring_[s.seq % kRingSize] = s;
@@ -197,6 +199,10 @@ std::string StudioDevice::grip() const {
 
 bool StudioDevice::set_hand_target(int32_t x, int32_t y) {
     return peripheral_ && peripheral_->set_hand_target(x, y, 0);
+}
+
+int64_t StudioDevice::hand_target_taken_us() const noexcept {
+    return peripheral_ ? peripheral_->hand_target_taken_us() : -1;
 }
 
 bool StudioDevice::set_grip(const std::string& grip) {

@@ -45,6 +45,8 @@ struct DeviceSample {
     float force[kMaxAxes] = {};
     float position[kMaxAxes] = {};
     uint32_t buttons = 0;
+    float fade_level = 1;    // the device's safety fade, 0..1 (below 1: forces faded)
+    bool hands_off = false;  // the device judged the handle free: forces fade out
     int64_t host_us = 0;  // steady_clock µs when the sampler took it (the latency hops)
 };
 
@@ -65,6 +67,9 @@ public:
 
     // The simulated hand (false on a device in another process, or for a bad value).
     bool set_hand_target(int32_t x, int32_t y);
+    // The device time (µs) at which the simulated device's loop took the newest hand
+    // target; -1 before the first, or for a device in another process.
+    [[nodiscard]] int64_t hand_target_taken_us() const noexcept;
     bool set_grip(const std::string& grip);
     bool set_buttons(uint32_t pressed);
     bool set_hats(uint32_t pushed);

@@ -6,10 +6,11 @@
 // upgrade to /live, hands the socket and the request to a LiveConnection. A
 // LiveConnection owns one LiveSession: it answers each message, and its frame timer
 // queues a state frame whenever fewer than four frames wait to be written, so a slow
-// browser sees fewer frames rather than a growing queue. The timer wakes at 60 Hz at rest; for a
-// moment after each browser action it polls the device every millisecond and sends a
-// frame as soon as there is a new report (at most kLiveFrameHz): a pointer move then
-// shows its force a tick and a report later, not a frame period later. When the socket
+// browser sees fewer frames rather than a growing queue. The timer wakes at 60 Hz; after a
+// pointer message it polls the device every millisecond until a report shows that
+// message's force change and sends that frame at once (at most kLiveFrameHz): a pointer
+// move then shows its force a tick and a report later, not a frame period later, and the
+// browser gets no more frames than it needs (each one costs its processes CPU). When the socket
 // closes for any reason, the connection and its session are destroyed, which stops the
 // browser's effects.
 #include "studio_server.hpp"
@@ -273,9 +274,10 @@ private:
 
     void tick() {
         const auto now = Clock::now();
-        const bool live = interacting(now);
+        // polling only while a pointer message's force change is awaited
+        const bool live = interacting(now) && session_->pointer_awaited();
         const auto since = now - last_frame_;
-        const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->has_news());
+        const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->pointer_answer_ready());
         if (due && queue_.size() < 4) {
             bool answers_pointer = false;
             std::string frame = session_->state_frame(&answers_pointer).dump();

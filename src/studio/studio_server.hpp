@@ -27,10 +27,12 @@ struct StudioOptions {
 inline constexpr size_t kMaxHttpBodyBytes = 3u << 20;     // a JSON request with a 1 MiB file in it
 inline constexpr size_t kMaxWebSocketMessageBytes = 1536u << 10;  // an import_file with a 1 MiB file (base64) in it
 inline constexpr size_t kMaxQueuedFrames = 64;             // per browser; state frames are skipped past 4
-// State frames: 60 a second at rest; while the browser interacts (any message in the last
-// kInteractiveWindow) a frame goes as soon as the device has reported something new, at
-// most kLiveFrameHz a second, so a pointer move's force is not held back by a frame timer
-// (docs/studio.md, "Latency").
+// State frames: 60 a second, and one more as soon as the device reports the force change
+// of the newest pointer message: while one is awaited (a pointer message in the last
+// kInteractiveWindow, its force not yet shown) the server polls the device every kLivePoll,
+// so a pointer move's force is not held back by the frame timer, at most kLiveFrameHz a
+// second. Only the answer goes early: every frame costs the browser's processes CPU, on
+// a machine they share with the device (docs/studio.md, "Latency").
 inline constexpr int kStateFrameHz = 60;
 inline constexpr int kLiveFrameHz = 250;
 inline constexpr std::chrono::milliseconds kInteractiveWindow{500};

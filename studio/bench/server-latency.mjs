@@ -14,6 +14,8 @@ import { join } from 'node:path';
 
 const feel = process.argv[2] ?? 'build/apps/feel/feel';
 const moves = Number(process.argv[3] ?? 300);
+// the pause between a move answered and the next (the browser moves again at once)
+const pauseMs = Number(process.argv[4] ?? 30);
 const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
 const proc = spawn(feel, ['studio', '--workspace', workspace, '--port', '0', '--hand', 'stiff'], {
   stdio: ['ignore', 'pipe', 'inherit'],
@@ -51,7 +53,7 @@ await sleep(300);
 
 const total = [];
 const server = [];
-const hops = { apply: [], device: [], transit: [], frame: [] };
+const hops = { apply: [], device: [], loop: [], transit: [], frame: [] };
 for (let i = 1; i <= moves; ++i) {
   const before = last.force[0];
   const t0 = performance.now();
@@ -62,6 +64,7 @@ for (let i = 1; i <= moves; ++i) {
       hops.apply.push(m.pointer_hops.apply_us / 1000);
       hops.device.push(m.pointer_hops.device_us / 1000);
       hops.transit.push(m.pointer_hops.transit_us / 1000);
+      hops.loop.push(m.pointer_hops.loop_us / 1000);
       hops.frame.push(m.pointer_hops.frame_us / 1000);
     }
     if (m.pointer_seq >= i && Math.abs(m.force[0] - before) > 20) {
@@ -70,7 +73,7 @@ for (let i = 1; i <= moves; ++i) {
       break;
     }
   }
-  await sleep(30);
+  await sleep(pauseMs);
 }
 const q = (list, p) => {
   const s = [...list].sort((a, b) => a - b);
@@ -79,8 +82,13 @@ const q = (list, p) => {
 console.log(`pointer message -> frame with the new force (n=${moves}): client p50=${q(total, 0.5)} ms ` +
   `p99=${q(total, 0.99)} ms max=${q(total, 1)} ms; server p50=${q(server, 0.5)} ms p99=${q(server, 0.99)} ms ` +
   `max=${q(server, 1)} ms; hops p50/p99: apply ${q(hops.apply, 0.5)}/${q(hops.apply, 0.99)}, ` +
-  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)} (of it transit ${q(hops.transit, 0.5)}/${q(hops.transit, 0.99)}), frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
+  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)} (of it loop ${q(hops.loop, 0.5)}/${q(hops.loop, 0.99)}, transit ${q(hops.transit, 0.5)}/${q(hops.transit, 0.99)}), frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
   `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
+// The slowest device hops, split: a stall in the loop's taking of the target, the handle's
+// motion (loop), or the way back (transit)?
+const slow = hops.device.map((d, i) => ({ device: d, loop: hops.loop[i], transit: hops.transit[i] }))
+  .sort((a, b) => b.device - a.device).slice(0, 3);
+console.log(`slowest device hops (ms): ${slow.map((h) => `${h.device.toFixed(1)} = take ${(h.device - h.loop - h.transit).toFixed(1)} + loop ${h.loop.toFixed(1)} + transit ${h.transit.toFixed(1)}`).join('; ')}`);
 let missing = 0;
 const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 3 ms
 for (let i = 1; i < sampleTimes.length; ++i) {

@@ -32,6 +32,7 @@ export function launchBrowser(viewport = { width: 1400, height: 1000 }) {
     acceptDownloads: true,
     viewport,
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+      ...(process.env.FEEL_CHROMIUM_ARGS?.split(' ').filter(Boolean) ?? [])],
   });
 }

@@ -121,6 +121,9 @@ public:
     // The simulated hand's live target (SimBackend::set_hand_target): the hand pulls the
     // handle toward these normalized positions instead of following its motion. Any thread.
     bool set_hand_target(int32_t x, int32_t y, int32_t z) noexcept;
+    // The device time (µs) at which the loop took the newest live target, -1 before the
+    // first (SimBackend::hand_target_taken_us). Any thread.
+    [[nodiscard]] int64_t hand_target_taken_us() const noexcept;
     // Another grip for the simulated hand (SimBackend::set_grip). Any thread.
     void set_grip(sim::Grip grip) noexcept;
 

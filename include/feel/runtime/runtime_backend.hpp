@@ -87,6 +87,12 @@ public:
     void clear_hand_target() noexcept;
     // Another hand grip from the next sense() on (SimDevice::set_grip), any thread.
     void set_grip(sim::Grip grip) noexcept;
+    // The device time (µs) of the sense() that took the newest live target, -1 before the
+    // first, any thread: splits a target's way to the handle into the wait for the loop's
+    // tick and the handle's motion (the Studio's latency hops, docs/studio.md).
+    [[nodiscard]] int64_t hand_target_taken_us() const noexcept {
+        return target_taken_us_.load(std::memory_order_acquire);
+    }
 
 private:
     // A mask waiting for the next sense(): bit 32 set when there is one.
@@ -100,6 +106,7 @@ private:
     static constexpr uint64_t kTargetPendingBit = uint64_t{1} << 63;
     static constexpr uint64_t kTargetClearBit = uint64_t{1} << 62;
     std::atomic<uint64_t> pending_target_{0};
+    std::atomic<int64_t> target_taken_us_{-1};
     std::atomic<uint64_t> pending_grip_{0};  // kPendingBit | grip
     std::optional<sim::InputSchedule> schedule_;
     float force_[kMaxAxes] = {};

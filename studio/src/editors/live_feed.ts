@@ -52,8 +52,9 @@ export class LiveFeed {
       if (this.reports.length > 2000) this.reports.splice(0, this.reports.length - 2000);
       this.pending.push(...reports);
     }
-    // the editors draw once per animation frame, however many state frames came before it
-    if (this.drawPending) return;
+    // the editors draw once per animation frame, however many state frames came before it,
+    // and only when one listens (no animation frame is asked for nothing)
+    if (this.drawPending || this.listeners.size === 0) return;
     this.drawPending = true;
     requestAnimationFrame(() => {
       this.drawPending = false;

@@ -113,8 +113,16 @@ export function editorFor(_s: State, root: HTMLElement, store: Store, live: Live
   return host.view;
 }
 
-// A state frame arrived: the editors shown move with the device.
+// A state frame arrived: the editors shown move with the device, when what they draw from
+// it changed (the handle, the force, the effects' states and elapsed times). A still
+// device redraws nothing: every redraw costs the page's thread and the compositor's, and
+// a state frame that arrives meanwhile waits (docs/studio.md, "Latency").
+let lastFrameKey = '';
 export function editorsFrame(): void {
+  const f = waveLiveFeed.frame;
+  const key = JSON.stringify([f.position.map(Math.round), f.force.map(Math.round), f.effects.map((e) => [e.state, e.starts, e.armed, e.elapsed_us])]);
+  if (key === lastFrameKey) return;
+  lastFrameKey = key;
   for (const host of hosts.values()) host.frame();
 }
 

@@ -76,7 +76,8 @@ export const schema = {
       // on the frame that first shows the newest pointer message's force change: its hops
       // through the server (seq, read_wall_us and built_wall_us on the wall clock, apply_us
       // read -> hand target set, device_us -> the first report with the new force (transit_us of it: from
-      // that report's device tick to the sampler, less the fastest such transit),
+      // that report's device tick to the sampler, less the fastest such transit; loop_us of it: the
+      // loop's tick that took the target -> the tick of that report, on the device's clock, -1 unknown),
       // frame_us -> this frame built); docs/studio.md, "Latency"
       pointer_hops: { type: 'object', optional: true },
       // that frame's write: seq, ahead (messages queued before it), write_us (queued -> written)

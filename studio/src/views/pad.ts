@@ -38,6 +38,7 @@ export interface LatencySample {
   apply?: number;
   device?: number;
   transit?: number;
+  loop?: number;
   frame?: number;
   builtToArrive?: number;
   write?: number;
@@ -50,6 +51,8 @@ export interface PointerHops {
   apply_us: number;
   device_us: number;
   transit_us: number;
+  loop_us: number;
+  taken_t_us: number;
   frame_us: number;
 }
 export interface PointerWritten {
@@ -79,6 +82,7 @@ export class Pad {
   // pointer -> force shown, for the latency figures (docs/studio.md)
   private probe: Probe | null = null;
   latencies: LatencySample[] = [];
+  lastHops: PointerHops | null = null; // the newest hops, for the latency bench's diagnosis
   private drawPending = false;
 
   constructor(
@@ -140,10 +144,15 @@ export class Pad {
     hops?: PointerHops,
     written?: PointerWritten,
   ): void {
+    // A frame that changes nothing drawn (the handle and the force, in whole units) draws
+    // nothing: a redraw costs the page's thread and the compositor's (docs/studio.md).
+    const same = (a: number[], b: number[]) => a.length === b.length && a.every((v, i) => Math.round(v) === Math.round(b[i]));
+    const changed = !same(position, this.state.position) || !same(force, this.state.force);
     this.state.position = position;
     this.state.force = force;
     const p = this.probe;
     if (p && hops?.seq === p.seq) p.hops = hops;
+    if (hops) this.lastHops = hops;
     if (p && p.arrived === undefined && pointerSeq >= p.seq) {
       if (force.some((f, a) => Math.abs(f - (p.force[a] ?? 0)) > 20)) {
         p.arrived = performance.now();
@@ -157,7 +166,7 @@ export class Pad {
         l.ahead = written.ahead;
       }
     }
-    this.draw();
+    if (changed || p?.arrived !== undefined) this.draw();
   }
 
   // Draws in the next animation frame, once however many frames arrived before it.
@@ -185,6 +194,7 @@ export class Pad {
           sample.apply = p.hops.apply_us / 1000;
           sample.device = p.hops.device_us / 1000;
           sample.transit = p.hops.transit_us / 1000;
+          if (p.hops.loop_us >= 0) sample.loop = p.hops.loop_us / 1000;
           sample.frame = p.hops.frame_us / 1000;
           sample.builtToArrive = (wall(p.arrived) - p.hops.built_wall_us) / 1000;
         }

@@ -1,0 +1,160 @@
+// Pointer -> force shown in the browser, and where the machine's CPU goes meanwhile: the
+// e2e's latency scenario (a spring of coefficient 5000, the stiff hand, the pointer moved
+// between -6000 and +6000 on the handle pad, each move timed to the pad drawn with the new
+// force) on its own, with the CPU time of every process taking part (the feel server, and
+// Chromium's browser, renderer, GPU and utility processes, from /proc) over the moves.
+// Optionally the page's own JavaScript profile (PROFILE=1: the functions that held the
+// page's one thread, by self time). Prints the load average (docs/studio.md, "Latency").
+//
+//   node studio/bench/browser-latency.mjs build/apps/feel/feel [moves]
+//   FEEL_CHROMIUM_ARGS="--flag --flag" ... tries Chromium flags on top of the harness's
+import { readFileSync, readdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { loadavg, tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+process.env.FEEL ??= resolve(process.argv[2] ?? 'build/apps/feel/feel');
+const { launchBrowser, startStudio } = await import('../e2e/harness.mjs'); // after FEEL is set
+const moves = Number(process.argv[3] ?? 200);
+const tick = 100; // USER_HZ: /proc's CPU times are in 1/100 s
+const quantile = (list, p) => {
+  const l = [...list].sort((a, b) => a - b);
+  return l.length ? l[Math.min(l.length - 1, Math.floor(p * l.length))] : NaN;
+};
+const stat = (pid) => {
+  try {
+    const f = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+    return (Number(f[11]) + Number(f[12])) / tick; // utime + stime, s
+  } catch {
+    return 0;
+  }
+};
+// Every process below `root`, with what it is (Chromium's --type, or its name).
+function processes(root) {
+  const kids = new Map();
+  for (const d of readdirSync('/proc')) {
+    if (!/^\d+$/.test(d)) continue;
+    try {
+      const ppid = Number(readFileSync(`/proc/${d}/stat`, 'utf8').split(') ')[1].split(' ')[1]);
+      if (!kids.has(ppid)) kids.set(ppid, []);
+      kids.get(ppid).push(Number(d));
+    } catch { /* gone */ }
+  }
+  const out = [];
+  const walk = (pid) => {
+    for (const k of kids.get(pid) ?? []) {
+      // Chromium rewrites its argv into one string: read the flags from the whole line
+      const cmd = readFileSync(`/proc/${k}/cmdline`, 'utf8').replace(/\0/g, ' ');
+      const type = cmd.match(/--type=(\S+)/)?.[1];
+      const sub = cmd.match(/--utility-sub-type=(\S+)/)?.[1];
+      const name = type ? `chromium ${type}${sub ? ` ${sub.split('.').pop()}` : ''}` : cmd.split(' ')[0].split('/').pop();
+      out.push({ pid: k, name });
+      walk(k);
+    }
+  };
+  walk(root);
+  return out;
+}
+
+const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
+const studio = await startStudio(workspace);
+const browser = await launchBrowser();
+const page = await browser.newPage();
+await page.goto(studio.url);
+await page.waitForFunction(() => Boolean(window.__studio?.store.state.hello) && window.__studio.frames() > 2);
+await page.click('#palette li[data-type="spring"]');
+for (const a of [0, 1]) {
+  for (const side of ['pos', 'neg']) { // as the e2e sets them: through the form
+    const input = page.locator(`#editor .field[data-path="conditions[${a}].${side}_coefficient"] input[type=number]`);
+    await input.fill('5000');
+    await input.press('Enter');
+    await input.blur();
+    await page.waitForFunction(() => window.__studio.synced());
+  }
+}
+await page.click('#design .icon[data-effect="0"] button.play');
+await page.waitForFunction(() => window.__studio.liveStates()[0]?.state === 'playing');
+await page.selectOption('#grip', 'stiff');
+const box = await page.locator('#pad-canvas').boundingBox();
+const at = (x) => box.x + box.width / 2 + (x / 20000) * (box.width - 28);
+await page.mouse.move(at(0), box.y + box.height / 2);
+await page.mouse.down();
+await page.waitForTimeout(500);
+
+// what a part of the page costs: PAGE_EVAL="window.__studio.plot.draw = () => {}" switches it off
+if (process.env.PAGE_EVAL) await page.evaluate(process.env.PAGE_EVAL);
+if (process.env.IDLE) {
+  // the page at rest (the spring playing, the pointer still): what the Studio costs the
+  // machine when nothing happens
+  const procs = processes(process.pid);
+  const before = new Map(procs.map((p) => [p.pid, stat(p.pid)]));
+  const seconds = Number(process.env.IDLE);
+  await page.waitForTimeout(seconds * 1000);
+  const cpu = new Map();
+  for (const p of procs) cpu.set(p.name, (cpu.get(p.name) ?? 0) + stat(p.pid) - before.get(p.pid));
+  console.log(`CPU at rest over ${seconds} s (% of one core): ` +
+    [...cpu].filter(([, s]) => s > 0).sort((a, b) => b[1] - a[1]).map(([n, s]) => `${n} ${((100 * s) / seconds).toFixed(0)}%`).join(', ') +
+    `; load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}${process.env.FEEL_CHROMIUM_ARGS ? `; extra flags: ${process.env.FEEL_CHROMIUM_ARGS}` : ''}`);
+}
+const cdp = process.env.PROFILE ? await browser.newCDPSession(page) : null;
+if (cdp) {
+  await cdp.send('Profiler.enable');
+  await cdp.send('Profiler.setSamplingInterval', { interval: 200 });
+  await cdp.send('Profiler.start');
+}
+const procs = [...processes(process.pid)];
+const before = new Map(procs.map((p) => [p.pid, stat(p.pid)]));
+const t0 = performance.now();
+await page.evaluate(() => (window.__studio.pad.latencies.length = 0));
+for (let i = 0; i < moves; ++i) {
+  await page.mouse.move(at(i % 2 ? 6000 : -6000), box.y + box.height / 2);
+  await page.waitForFunction((n) => window.__studio.pad.latencies.length > n, i, { timeout: 30000 });
+  if (process.env.SLOWEST) {
+    // a slow device hop: the device's reports around it (device ms, force x, position x)
+    const around = await page.evaluate(() => {
+      const s = window.__studio.pad;
+      const h = s.lastHops;
+      if (!h || h.device_us < 30000) return null;
+      const t0 = h.taken_t_us / 1000;
+      return { hops: h, rows: window.__studio.plot.window().filter((r) => r[0] >= t0 - 6 && r[0] <= t0 + h.loop_us / 1000 + 3)
+        .map((r) => `${(r[0] - t0).toFixed(0)}:${r[1]}/${r[3]}`).join(' ') };
+    });
+    if (around) console.log(`  slow device hop: ${JSON.stringify(around.hops)}\n    reports (ms after the take: force x/position x): ${around.rows}`);
+  }
+}
+const seconds = (performance.now() - t0) / 1000;
+const cpu = new Map();
+for (const p of procs) cpu.set(p.name, (cpu.get(p.name) ?? 0) + stat(p.pid) - before.get(p.pid));
+const lat = await page.evaluate(() => window.__studio.pad.latencies.slice());
+const stage = (k) => {
+  const v = lat.map((l) => l[k]).filter((x) => x !== undefined);
+  return `p50=${quantile(v, 0.5).toFixed(1)} p99=${quantile(v, 0.99).toFixed(1)}`;
+};
+console.log(`pointer->force shown (n=${lat.length}): ${stage('total')} ms; input ${stage('input')}, server ${stage('server')}, ` +
+  `transport ${stage('transport')}, paint ${stage('paint')}; device ${stage('device')} (loop ${stage('loop')}, transit ${stage('transit')}), frame ${stage('frame')}, built->onmessage ${stage('builtToArrive')}`);
+if (process.env.SLOWEST) {
+  for (const l of [...lat].sort((a, b) => b.total - a.total).slice(0, Number(process.env.SLOWEST))) {
+    console.log(`  slow: ${Object.entries(l).map(([k, v]) => `${k}=${typeof v === 'number' ? v.toFixed(1) : v}`).join(' ')}`);
+  }
+}
+console.log(`CPU over the ${seconds.toFixed(1)} s of moves (% of one core): ` +
+  [...cpu].sort((a, b) => b[1] - a[1]).map(([n, s]) => `${n} ${((100 * s) / seconds).toFixed(0)}%`).join(', ') +
+  `; load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}${process.env.FEEL_CHROMIUM_ARGS ? `; extra flags: ${process.env.FEEL_CHROMIUM_ARGS}` : ''}`);
+if (cdp) {
+  const { profile } = await cdp.send('Profiler.stop');
+  const self = new Map();
+  const dt = new Map();
+  profile.samples.forEach((id, i) => dt.set(id, (dt.get(id) ?? 0) + (profile.timeDeltas[i] ?? 0)));
+  for (const n of profile.nodes) {
+    const f = n.callFrame;
+    const key = `${f.functionName || '(anon)'} ${f.url.split('/').pop()}:${f.lineNumber}`;
+    self.set(key, (self.get(key) ?? 0) + (dt.get(n.id) ?? 0));
+  }
+  const total = [...self.values()].reduce((a, b) => a + b, 0);
+  console.log('page JS self time (top 15, % of the run):');
+  for (const [k, us] of [...self].sort((a, b) => b[1] - a[1]).slice(0, 15)) {
+    console.log(`  ${((100 * us) / total).toFixed(1)}%  ${(us / 1000).toFixed(0)} ms  ${k}`);
+  }
+}
+await page.mouse.up();
+await browser.close();
+studio.proc.kill('SIGTERM');
+rmSync(workspace, { recursive: true, force: true });
