@@ -8,8 +8,10 @@
 // previous match of the same KIND, a line of that kind and report that carries every token.
 // Order is kept per pipe: feature reports (set_feature, ep0) and output reports (the
 // interrupt OUT endpoint) travel on different pipes, so one may overtake the other. The probe
-// must also say that the device offered PID's eleven effect types and that it played them
-// all without an error. Prints one line per check and "pid-host: N passed, M failed".
+// must also say that the device offered PID's eleven effect types plus Custom Force (feel's
+// gadget declares Set Custom Force, Custom Force Data and Download Force Sample, so PidDevice
+// plays custom forces natively: twelve usable types) and that it played the eleven without
+// an error. Prints one line per check and "pid-host: N passed, M failed".
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -61,8 +63,8 @@ int main(int argc, char** argv) {
         if (line.rfind("pid error", 0) == 0) check(false, line);
         if (line.rfind("pid caps", 0) == 0) {
             saw_caps = true;
-            check(line.find(" feel_device=1") != std::string::npos && line.find(" types=11 ") != std::string::npos,
-                  "the host read PID's eleven effect types from the gadget's descriptor: " + line);
+            check(line.find(" feel_device=1") != std::string::npos && line.find(" types=12 ") != std::string::npos,
+                  "the host read PID's eleven effect types and Custom Force from the gadget's descriptor: " + line);
         }
         if (line.rfind("pid done", 0) == 0) {
             saw_done = true;

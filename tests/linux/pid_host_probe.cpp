@@ -4,7 +4,7 @@
 // Operation and Block Free on the interrupt OUT endpoint.
 //
 // It prints what it asked, one line per report the device must have received, in order:
-//   pid caps feel_device=1 types=11 max_effects=32 pool_bytes=16384
+//   pid caps feel_device=1 types=12 max_effects=32 pool_bytes=16384
 //   pid expect set_feature create_new_effect type_usage=0x26
 //   pid expect output_report set_constant_force block=1 magnitude=-6100
 //   ...
