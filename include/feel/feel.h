@@ -28,8 +28,8 @@
  * and FEEL_OK with an empty message when it succeeds. A NULL handle or out pointer is
  * FEEL_ERROR_INVALID_PARAMETER. No C++ exception ever crosses this interface.
  *
- * Handles. feel_device, feel_effect, feel_library, feel_subscription and feel_queue are
- * opaque. An effect stays valid after its device is closed, but every call on it then
+ * Handles. feel_device, feel_effect, feel_library, feel_subscription,
+ * feel_input_subscription and feel_queue are opaque. An effect stays valid after its device is closed, but every call on it then
  * returns FEEL_ERROR_INVALID_HANDLE; it must still be destroyed. Destroying a handle twice,
  * or using it after destroying it, is undefined (as free() is).
  *
@@ -306,6 +306,26 @@ typedef struct feel_input {
 FEEL_API int feel_poll_input(feel_device* device, feel_input* out);
 /* Waits up to timeout_ms (1..60000) for a state report newer than the current one. */
 FEEL_API int feel_wait_input(feel_device* device, int32_t timeout_ms, feel_input* out);
+
+/* Every state report the device sends, in order (Device::subscribe_input): the device's I/O
+ * thread appends each to this subscription's queue, `capacity` reports (1..1000000) allocated
+ * here; when the queue is full the oldest go and are counted, and the I/O thread never waits
+ * for the reader. Where feel_wait_input gives the newest state and skips the reports a slow
+ * reader missed, this gives all of them (a plot, a recorder). NULL on failure. */
+typedef struct feel_input_subscription feel_input_subscription;
+FEEL_API feel_input_subscription* feel_subscribe_input(feel_device* device, uint32_t capacity);
+/* Waits up to timeout_ms (0..60000; 0 never blocks) until at least one report is queued, then
+ * copies up to max_reports of them, oldest first, into reports[0..max_reports) (an array of
+ * feel_input; set reports[0].size to sizeof(feel_input): it is the array's stride, and every
+ * element is filled as feel_poll_input fills one). *count says how many were copied; the
+ * rest stay queued for the next call. *dropped (may be NULL) says how many reports were lost
+ * to a full queue since the previous call. FEEL_ERROR_TIMEOUT when none came in time,
+ * FEEL_ERROR_DISCONNECTED when none is queued and the device is gone. */
+FEEL_API int feel_input_subscription_wait(feel_input_subscription* subscription, int32_t timeout_ms,
+                                          feel_input* reports, int32_t max_reports, int32_t* count,
+                                          uint64_t* dropped);
+/* Ends the subscription and frees the handle; NULL ignored. */
+FEEL_API void feel_unsubscribe_input(feel_input_subscription* subscription);
 
 /* Force streaming (§2.4): one sample of the host's force per device axis, ±10000,
  * physical sign (+ pushes toward +axis), up to 1 kHz. axis_count must equal the device's. */

@@ -1,7 +1,9 @@
 // feel.h: devices — open, close, capabilities, gain, commands, input, force streaming.
 #include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <span>
+#include <utility>
 
 #include "capi_internal.hpp"
 
@@ -183,6 +185,61 @@ int feel_wait_input(feel_device* device, int32_t timeout_ms, feel_input* out) {
             device->device.wait_input(std::chrono::milliseconds(timeout_ms));
         if (!s) return fail(s.status());
         write_out(input_of(s.value()), out);
+        return succeed();
+    });
+}
+
+feel_input_subscription* feel_subscribe_input(feel_device* device, uint32_t capacity) {
+    return guard_ptr<feel_input_subscription>("feel_subscribe_input", [&]() -> feel_input_subscription* {
+        if (!device) return no_handle(null_argument("feel_subscribe_input", "device"));
+        if (capacity < 1 || capacity > 1000000) {
+            return no_handle(out_of_range("feel_subscribe_input", "capacity", capacity, 1, 1000000));
+        }
+        feel::host::Result<feel::host::InputSubscription> sub = device->device.subscribe_input(capacity);
+        if (!sub) return no_handle(fail(sub.status()));
+        auto* out = new feel_input_subscription{};
+        out->subscription = std::move(sub.value());
+        return out;
+    });
+}
+
+int feel_input_subscription_wait(feel_input_subscription* subscription, int32_t timeout_ms, feel_input* reports,
+                                 int32_t max_reports, int32_t* count, uint64_t* dropped) {
+    return guard("feel_input_subscription_wait", [&] {
+        const char* fn = "feel_input_subscription_wait";
+        if (!subscription) return null_argument(fn, "subscription");
+        if (!count) return null_argument(fn, "count");
+        *count = 0;
+        if (const int rc = check_out(fn, "reports", reports); rc != FEEL_OK) return rc;
+        if (max_reports < 1) return out_of_range(fn, "max_reports", max_reports, 1, INT32_MAX);
+        if (timeout_ms < 0 || timeout_ms > 60000) return out_of_range(fn, "timeout_ms", timeout_ms, 0, 60000);
+        if (subscription->pending.empty()) {
+            feel::host::Result<feel::host::InputBatch> batch =
+                subscription->subscription.wait(std::chrono::milliseconds(timeout_ms));
+            if (!batch) return fail(batch.status());
+            subscription->dropped += batch->dropped;
+            subscription->pending.assign(batch->reports.begin(), batch->reports.end());
+        }
+        // The caller's struct size is the array's stride.
+        const uint32_t stride = reports->size;
+        auto* base = reinterpret_cast<unsigned char*>(reports);
+        int32_t n = 0;
+        while (n < max_reports && !subscription->pending.empty()) {
+            auto* out = reinterpret_cast<feel_input*>(base + static_cast<size_t>(n) * stride);
+            out->size = stride;
+            write_out(input_of(subscription->pending.front()), out);
+            subscription->pending.pop_front();
+            ++n;
+        }
+        *count = n;
+        if (dropped) *dropped = std::exchange(subscription->dropped, 0);
+        return succeed();
+    });
+}
+
+void feel_unsubscribe_input(feel_input_subscription* subscription) {
+    (void)guard("feel_unsubscribe_input", [&] {
+        delete subscription;  // the subscription's destructor unsubscribes
         return succeed();
     });
 }

@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <exception>
+#include <deque>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -54,6 +55,14 @@ struct feel_effect {
 
 struct feel_subscription {
     feel::host::Subscription subscription;
+};
+
+// A per-report input subscription, and the reports a call had no room for (the next call
+// gives them first).
+struct feel_input_subscription {
+    feel::host::InputSubscription subscription;
+    std::deque<feel::host::InputState> pending;
+    uint64_t dropped = 0;  // lost to a full queue, not yet told
 };
 
 struct feel_library {

@@ -128,6 +128,9 @@ const stage = (k) => {
   const v = lat.map((l) => l[k]).filter((x) => x !== undefined);
   return `p50=${quantile(v, 0.5).toFixed(1)} p99=${quantile(v, 0.99).toFixed(1)}`;
 };
+const faded = lat.filter((l) => l.minFade < 1);
+console.log(`moves during which the device's safety faded the force: ${faded.length}` +
+  (faded.length ? ` (their device hops: ${faded.map((l) => l.device?.toFixed(0)).join(' ')} ms)` : ''));
 console.log(`pointer->force shown (n=${lat.length}): ${stage('total')} ms; input ${stage('input')}, server ${stage('server')}, ` +
   `transport ${stage('transport')}, paint ${stage('paint')}; device ${stage('device')} (loop ${stage('loop')}, transit ${stage('transit')}), frame ${stage('frame')}, built->onmessage ${stage('builtToArrive')}`);
 if (process.env.SLOWEST) {

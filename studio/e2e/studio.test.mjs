@@ -183,6 +183,10 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
   await page.mouse.up();
   const plotDraws = await page.evaluate(() => window.__studio.plot.drawTimes.slice());
   if (process.env.FEEL_STUDIO_LATENCY_DEBUG) console.log(JSON.stringify(lat.map((l, i) => ({ i, ...l })).sort((a, b) => b.total - a.total).slice(0, 8)));
+  // A move during which the device's safety faded its forces (docs/studio.md, "Latency")
+  // measures the fade, not the Studio: counted, and the figures given without them too.
+  const faded = lat.filter((l) => l.minFade !== undefined && l.minFade < 1);
+  const unfaded = lat.filter((l) => !(l.minFade < 1)).map((l) => l.total);
   const stage = (k) => {
     const v = lat.map((l) => l[k]).filter((x) => x !== undefined);
     return v.length ? `p50=${quantile(v, 0.5).toFixed(1)} p99=${quantile(v, 0.99).toFixed(1)}` : 'n/a';
@@ -194,6 +198,8 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
     `frame ${stage('frame')}, write ${stage('write')}, built->onmessage ${stage('builtToArrive')}; ` +
     `plot redraw p50=${quantile(plotDraws, 0.5).toFixed(1)} p99=${quantile(plotDraws, 0.99).toFixed(1)} (n=${plotDraws.length}); ` +
     `animation frame period p50=${quantile(frameGaps, 0.5).toFixed(1)} p99=${quantile(frameGaps, 0.99).toFixed(1)} ms; ` +
+    `moves during which the device's safety faded the force (hands-off detection): ${faded.length}` +
+    (faded.length ? `, without them p50=${quantile(unfaded, 0.5).toFixed(1)} p99=${quantile(unfaded, 0.99).toFixed(1)} ms` : '') + '; ' +
     `load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
   await page.close();
 });

@@ -11,6 +11,7 @@
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -172,8 +173,78 @@ static void test_library(void) {
           feel_last_error_message());
 }
 
+static int compare_i64(const void* a, const void* b) {
+    const int64_t x = *(const int64_t*)a, y = *(const int64_t*)b;
+    return (x > y) - (x < y);
+}
+
+static void test_input_subscription(void) {
+    /* Every report, in order: at 500 reports a second the device's clock advances 2000 µs
+     * from one report to the next (a skipped loop tick makes one gap longer), and a queue of
+     * 1000 loses none over 300 ms. Read 7 at a time, so that most calls leave reports queued
+     * for the next one. */
+    feel_open_options options;
+    FEEL_INIT(options);
+    options.report_rate_hz = 500;
+    feel_device* dev = feel_open_ex("sim:iforce2", &options);
+    CHECK(dev != NULL, "feel_open_ex(sim:iforce2, 500 Hz reports): %s", dev ? "opened" : feel_last_error_message());
+    if (!dev) return;
+    feel_input_subscription* sub = feel_subscribe_input(dev, 1000);
+    CHECK(sub != NULL, "feel_subscribe_input: %s", sub ? "subscribed" : feel_last_error_message());
+    if (sub) {
+        enum { kMax = 400 };
+        static int64_t t[kMax];
+        static int64_t gaps[kMax];
+        int n = 0;
+        uint64_t lost = 0;
+        while (n < kMax && (n == 0 || t[n - 1] - t[0] < 300000)) {
+            feel_input batch[7];
+            batch[0].size = sizeof(feel_input);
+            int32_t count = 0;
+            uint64_t dropped = 0;
+            if (feel_input_subscription_wait(sub, 500, batch, 7, &count, &dropped) != FEEL_OK) {
+                CHECK(false, "feel_input_subscription_wait: %s", feel_last_error_message());
+                break;
+            }
+            CHECK(count >= 1 && count <= 7, "a call gives 1..7 reports (%d)", count);
+            lost += dropped;
+            for (int i = 0; i < count && n < kMax; ++i) {
+                CHECK(batch[i].size == sizeof(feel_input) && batch[i].axis_count == 2, "report %d is filled", n);
+                t[n++] = batch[i].t_us;
+            }
+        }
+        int increasing = 1;
+        for (int i = 1; i < n; ++i) {
+            gaps[i - 1] = t[i] - t[i - 1];
+            if (gaps[i - 1] <= 0) increasing = 0;
+        }
+        CHECK(n > 100 && increasing, "%d reports, their device times strictly increasing", n);
+        qsort(gaps, (size_t)(n - 1), sizeof gaps[0], compare_i64);
+        CHECK(gaps[(n - 1) / 2] == 2000, "the median gap is the report period, 2000 µs (%lld)",
+              (long long)gaps[(n - 1) / 2]);
+        CHECK(lost == 0, "none lost (%llu)", (unsigned long long)lost);
+
+        int32_t count = -1;
+        feel_input one;
+        FEEL_INIT(one);
+        CHECK(feel_input_subscription_wait(sub, 500, &one, 0, &count, NULL) == FEEL_ERROR_INVALID_PARAMETER &&
+                  strstr(feel_last_error_message(), "max_reports = 0 is out of range") && count == 0,
+              "max_reports 0: \"%s\"", feel_last_error_message());
+        one.size = 4;
+        CHECK(feel_input_subscription_wait(sub, 500, &one, 1, &count, NULL) == FEEL_ERROR_INVALID_PARAMETER,
+              "a report struct without its size: \"%s\"", feel_last_error_message());
+        feel_unsubscribe_input(sub);
+    }
+    CHECK(feel_subscribe_input(dev, 0) == NULL && strstr(feel_last_error_message(), "capacity = 0 is out of range (allowed 1..1000000)"),
+          "capacity 0: \"%s\"", feel_last_error_message());
+    CHECK(feel_subscribe_input(NULL, 10) == NULL && feel_last_error() == FEEL_ERROR_INVALID_PARAMETER, "a NULL device");
+    feel_unsubscribe_input(NULL); /* harmless */
+    feel_close(dev);
+}
+
 int main(void) {
     test_device();
+    test_input_subscription();
     test_library();
     if (c_check_failures) printf("%d check(s) failed\n", c_check_failures);
     else printf("all checks passed\n");

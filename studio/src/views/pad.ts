@@ -39,6 +39,7 @@ export interface LatencySample {
   device?: number;
   transit?: number;
   loop?: number;
+  minFade?: number; // the device's lowest safety fade meanwhile (below 1: it faded the force)
   frame?: number;
   builtToArrive?: number;
   write?: number;
@@ -53,6 +54,7 @@ export interface PointerHops {
   transit_us: number;
   loop_us: number;
   taken_t_us: number;
+  min_fade: number;
   frame_us: number;
 }
 export interface PointerWritten {
@@ -195,6 +197,7 @@ export class Pad {
           sample.device = p.hops.device_us / 1000;
           sample.transit = p.hops.transit_us / 1000;
           if (p.hops.loop_us >= 0) sample.loop = p.hops.loop_us / 1000;
+          sample.minFade = p.hops.min_fade;
           sample.frame = p.hops.frame_us / 1000;
           sample.builtToArrive = (wall(p.arrived) - p.hops.built_wall_us) / 1000;
         }
