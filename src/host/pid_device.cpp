@@ -43,7 +43,11 @@ struct PidDeviceCore {
     std::unique_ptr<transport::Connection> connection;
     const std::string address;
     const OpenOptions options;
+    // Read from the descriptor by attach() while the I/O thread already runs (it has to, to
+    // receive the descriptor), and never changed after: the I/O thread reads no Input
+    // report until layout_known says it is set (ThreadSanitizer found the race).
     PidLayout layout;
+    std::atomic<bool> layout_known{false};
     PidCaps caps;
 
     std::mutex call_mu;  // one caller at a time
@@ -96,6 +100,7 @@ struct PidDeviceCore {
         }
         if (f.kind == FrameKind::input_report) {
             protocol::pid::JoystickReading reading;
+            if (!layout_known.load(std::memory_order_acquire)) return true;  // before attach() read it
             if (!protocol::pid::read_joystick(layout, f.payload, reading)) return true;
             const int64_t now = clock();
             {
@@ -382,6 +387,7 @@ Result<PidDevice> PidDevice::attach(std::unique_ptr<transport::Connection> conne
     std::optional<PidLayout> layout = PidLayout::from_bytes(descriptor.value(), error);
     if (!layout) return Status::failure(ErrorKind::not_supported, what + ": " + error);
     core->layout = std::move(*layout);
+    core->layout_known.store(true, std::memory_order_release);
     PidCaps& caps = core->caps;
     caps.address = name;
     caps.feel_device = check_report_descriptor(descriptor.value()).empty();

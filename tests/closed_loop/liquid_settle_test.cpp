@@ -23,7 +23,6 @@
 namespace feel::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Where the hand goes: still for 200 ms, 3000 units in 60 ms, then held.
 std::filesystem::path abrupt_move() {
@@ -104,7 +103,7 @@ TEST_P(LiquidSettle, UndulationsSettleAtTheRateOfTheParameters) {
     ASSERT_GE(swing.t.size(), 6u) << "a visible undulation";
     // Half a damped period between extrema.
     const double half_period = (swing.t.back() - swing.t.front()) / static_cast<double>(swing.t.size() - 1);
-    EXPECT_NEAR(half_period, kPi / want.omega_d, 0.01 * kPi / want.omega_d);
+    EXPECT_NEAR(half_period, std::numbers::pi / want.omega_d, 0.01 * std::numbers::pi / want.omega_d);
     // The envelope: the log of the extrema falls at γ per second.
     const double gamma = std::log(swing.amplitude.front() / swing.amplitude.back()) / (swing.t.back() - swing.t.front());
     EXPECT_NEAR(gamma, want.gamma, 0.02 * want.gamma);

@@ -18,7 +18,6 @@
 namespace feel::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // A ball from the screen (compass 0: it comes from +y and moves toward the user), an
 // elastic paddle: the paddle's normal is +y.
@@ -55,7 +54,7 @@ Leave bounce(sim::Grip grip, double shift, const std::string& name) {
     const EffectParams p = incoming_ball();
     const double m = p.dynamic.ball_mass / 10000.0 * config.dynamic_mass_ref;
     const double k = p.dynamic.paddle_compliance / 10000.0 * config.dynamic_stiffness_ref;
-    const double quarter_s = kPi / (2 * std::sqrt(k / m));
+    const double quarter_s = std::numbers::pi / (2 * std::sqrt(k / m));
 
     const std::string path = ::testing::TempDir() + "feel_paddle_" + name + ".csv";
     {

@@ -28,7 +28,6 @@
 namespace feel::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 EffectParams recoil(int32_t intensity, int32_t mass, int32_t resonance, int32_t decay) {
     EffectParams p;
@@ -75,7 +74,7 @@ struct Chain {
     [[nodiscard]] double slow_mode_hz() const {
         const double a = mh * M, bq = mh * k + M * (kg + k), c = kg * k;
         const double w2 = (bq - std::sqrt(bq * bq - 4 * a * c)) / (2 * a);
-        return std::sqrt(w2) / (2 * kPi);
+        return std::sqrt(w2) / (2 * std::numbers::pi);
     }
 
     // The tether's pull on the handle, k·(X − x) + b·(V − u), averaged over each
@@ -133,7 +132,7 @@ double dominant_hz(const std::vector<double>& f, double lo, double hi) {
     for (double hz = lo; hz <= hi; hz += 0.02) {
         double re = 0, im = 0;
         for (size_t n = 0; n < f.size(); ++n) {
-            const double phase = 2 * kPi * hz * static_cast<double>(n) * 1e-3;
+            const double phase = 2 * std::numbers::pi * hz * static_cast<double>(n) * 1e-3;
             re += f[n] * std::cos(phase);
             im += f[n] * std::sin(phase);
         }

@@ -14,7 +14,6 @@
 namespace feel::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kCircleRadius = 2000;  // position units: ±10 mm of the joystick's ±50 mm
 
 EffectParams spinning_ball() {
@@ -91,7 +90,7 @@ TEST_P(SlingSpin, AHandleCirclingExactlySpinsTheBallToItsSteadyState) {
     const double m = p.dynamic.ball_mass / 10000.0 * config.dynamic_mass_ref;
     const double k = p.dynamic.string_compliance / 10000.0 * config.dynamic_stiffness_ref;
     const double c = p.dynamic.ball_damping / 10000.0 * config.dynamic_damping_ref;
-    const double want = steady_tension(m, k, p.dynamic.string_length, c, kCircleRadius, 2 * kPi * hz);
+    const double want = steady_tension(m, k, p.dynamic.string_length, c, kCircleRadius, 2 * std::numbers::pi * hz);
     const Spin s = spin(sim::Grip::kinematic, hz);
     // The sensor quantizes the handle to 4.9 units and the engine estimates its velocity:
     // the pull is the analytic one within a percent.

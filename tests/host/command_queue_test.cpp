@@ -15,29 +15,10 @@
 namespace feel::host::test {
 namespace {
 
-EffectParams spring_x(int32_t k) {
-    EffectParams p;
-    p.type = EffectType::spring;
-    p.duration_us = kInfiniteUs;
-    p.conditions[0] = ConditionBlock{k, k, 0, 10000, 10000, 0};
-    return p;
-}
-
-OpenOptions fast_reports() {
-    OpenOptions o;
-    o.report_rate_hz = 1000;
-    return o;
-}
-
 std::vector<Outcome> drain(CommandQueue& queue) {
     std::vector<Outcome> out;
     queue.poll([&](const Outcome& o) { out.push_back(o); });
     return out;
-}
-
-InputState settled(Device& dev) {
-    for (int i = 0; i < 20; ++i) (void)dev.wait_input(100ms);
-    return dev.input();
 }
 
 TEST(CommandQueue, CommandsRunInTheOrderTheyWereQueued) {

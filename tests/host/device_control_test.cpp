@@ -17,12 +17,6 @@ EffectParams push_x(int32_t magnitude) {
     return p;
 }
 
-OpenOptions fast_reports() {
-    OpenOptions o;
-    o.report_rate_hz = 1000;
-    return o;
-}
-
 bool force_near(Device& dev, float expected, float tolerance) {
     return wait_until([&] { return std::fabs(dev.input().force[0] - expected) <= tolerance; });
 }

@@ -14,14 +14,6 @@
 namespace feel::host::test {
 namespace {
 
-EffectParams spring_x(int32_t k) {
-    EffectParams p;
-    p.type = EffectType::spring;
-    p.duration_us = kInfiniteUs;
-    p.conditions[0] = ConditionBlock{k, k, 0, 10000, 10000, 0};
-    return p;
-}
-
 EffectParams constant_x(int32_t magnitude, int64_t duration_us) {
     EffectParams p;
     p.type = EffectType::constant;
@@ -39,12 +31,6 @@ EffectParams sine_x(int32_t magnitude) {
     return p;
 }
 
-OpenOptions fast_reports() {
-    OpenOptions o;
-    o.report_rate_hz = 1000;
-    return o;
-}
-
 // The largest |force| on x over `window` of state reports.
 float peak_force(Device& dev, std::chrono::milliseconds window) {
     float peak = 0;
@@ -54,12 +40,6 @@ float peak_force(Device& dev, std::chrono::milliseconds window) {
         if (in) peak = std::max(peak, std::fabs(in->force[0]));
     }
     return peak;
-}
-
-// The input state two full report rounds from now (so that it reflects what was just sent).
-InputState settled(Device& dev) {
-    for (int i = 0; i < 20; ++i) (void)dev.wait_input(100ms);
-    return dev.input();
 }
 
 TEST(HostEffects, SpringPushesBackWithMinusKX) {

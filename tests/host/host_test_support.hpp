@@ -35,6 +35,28 @@ inline bool wait_for_full_force(Device& device) {
     return wait_until([&] { return device.input().fade_level >= 0.999f && device.input().handle_held; }, 3000ms);
 }
 
+// A spring on x of coefficient k both ways, centred, saturating at full scale, forever.
+inline EffectParams spring_x(int32_t k) {
+    EffectParams p;
+    p.type = EffectType::spring;
+    p.duration_us = kInfiniteUs;
+    p.conditions[0] = ConditionBlock{k, k, 0, 10000, 10000, 0};
+    return p;
+}
+
+// Open options for a device that reports its input state every millisecond.
+inline OpenOptions fast_reports() {
+    OpenOptions o;
+    o.report_rate_hz = 1000;
+    return o;
+}
+
+// The input state two full report rounds from now (so that it reflects what was just sent).
+inline InputState settled(Device& dev) {
+    for (int i = 0; i < 20; ++i) (void)dev.wait_input(100ms);
+    return dev.input();
+}
+
 // A simulated device served over an in-process connection, with the Peripheral kept where
 // the test can reach it (Device::open("sim:...") owns its Peripheral privately).
 struct SimRig {

@@ -21,7 +21,7 @@ std::string transient(double t, double i, double s) {
            std::to_string(i) + R"(}, {"ParameterID": "HapticSharpness", "ParameterValue": )" + std::to_string(s) + "}]}}";
 }
 
-std::string error_of(const std::string& text) {
+std::string ahap_error_of(const std::string& text) {
     try {
         (void)import_ahap(text, {});
     } catch (const ImportError& e) {
@@ -115,25 +115,25 @@ TEST(AhapImport, WhatCannotBeMappedIsANote) {
 }
 
 TEST(AhapImport, ErrorsNameTheEntryAndTheRange) {
-    EXPECT_NE(error_of(pattern(transient(0, 1.5, 0))).find(
+    EXPECT_NE(ahap_error_of(pattern(transient(0, 1.5, 0))).find(
                   "Pattern[0].Event.EventParameters[0]: HapticIntensity = 1.5 is out of range (allowed 0..1)"),
               std::string::npos);
-    EXPECT_NE(error_of(pattern(transient(-1, 1, 0))).find("Time (s) = -1 is out of range (allowed 0..65)"),
+    EXPECT_NE(ahap_error_of(pattern(transient(-1, 1, 0))).find("Time (s) = -1 is out of range (allowed 0..65)"),
               std::string::npos);
-    EXPECT_NE(error_of(pattern(transient(70, 1, 0))).find("allowed 0..65"), std::string::npos);
-    EXPECT_NE(error_of("{\"Pattern\": [").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(ahap_error_of(pattern(transient(70, 1, 0))).find("allowed 0..65"), std::string::npos);
+    EXPECT_NE(ahap_error_of("{\"Pattern\": [").find("not valid JSON"), std::string::npos);
     // Found by fuzz_ahap_import: a number too large for a double is the JSON reader's
     // out_of_range, not its parse_error, and escaped the importer.
-    EXPECT_NE(error_of(pattern(R"({"Event": {"Time": 1e999, "EventType": "HapticTransient"}})")).find("not valid JSON"),
+    EXPECT_NE(ahap_error_of(pattern(R"({"Event": {"Time": 1e999, "EventType": "HapticTransient"}})")).find("not valid JSON"),
               std::string::npos);
-    EXPECT_NE(error_of("{}").find("\"Pattern\" is missing"), std::string::npos);
-    EXPECT_NE(error_of(pattern("")).find("holds no haptic event"), std::string::npos);
-    EXPECT_NE(error_of(pattern(R"({"Event": {"Time": 0, "EventType": "Buzz"}})")).find("EventType \"Buzz\""),
+    EXPECT_NE(ahap_error_of("{}").find("\"Pattern\" is missing"), std::string::npos);
+    EXPECT_NE(ahap_error_of(pattern("")).find("holds no haptic event"), std::string::npos);
+    EXPECT_NE(ahap_error_of(pattern(R"({"Event": {"Time": 0, "EventType": "Buzz"}})")).find("EventType \"Buzz\""),
               std::string::npos);
-    EXPECT_NE(error_of(pattern(R"({"Event": {"Time": 0, "EventType": "HapticContinuous", "EventDuration": 0}})"))
+    EXPECT_NE(ahap_error_of(pattern(R"({"Event": {"Time": 0, "EventType": "HapticContinuous", "EventDuration": 0}})"))
                   .find("EventDuration = 0"),
               std::string::npos);
-    EXPECT_NE(error_of(pattern(R"({"Event": {"Time": "soon", "EventType": "HapticTransient"}})")).find("must be a number"),
+    EXPECT_NE(ahap_error_of(pattern(R"({"Event": {"Time": "soon", "EventType": "HapticTransient"}})")).find("must be a number"),
               std::string::npos);
 }
 

@@ -20,7 +20,7 @@ using test::ffe_file;
 
 ImportResult import(const std::string& bytes) { return import_ffe(bytes, ImportOptions{}); }
 
-std::string error_of(const std::string& bytes) {
+std::string ffe_error_of(const std::string& bytes) {
     try {
         (void)import(bytes);
     } catch (const ImportError& e) {
@@ -265,31 +265,31 @@ TEST(FfeImport, ErrorsNameTheFieldAndTheAllowedRange) {
     DiFileEffect e;
     e.guid = test::kGuidSine;
     e.type_specific = {12000, 0, 0, 10000};
-    EXPECT_NE(error_of(ffe_file({e})).find("DIPERIODIC.dwMagnitude = 12000 is out of range (allowed 0..10000)"),
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("DIPERIODIC.dwMagnitude = 12000 is out of range (allowed 0..10000)"),
               std::string::npos);
     e.type_specific = {5000, 0, 36000, 10000};
-    EXPECT_NE(error_of(ffe_file({e})).find("DIPERIODIC.dwPhase = 36000 is out of range (allowed 0..35999)"),
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("DIPERIODIC.dwPhase = 36000 is out of range (allowed 0..35999)"),
               std::string::npos);
     e.type_specific = {5000, 0, 0, 10000};
     e.guid = 0x77;
-    EXPECT_NE(error_of(ffe_file({e})).find("unknown effect GUID {13541C77-8E33-11D0-9AD0-00A0C9A06E35}"),
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("unknown effect GUID {13541C77-8E33-11D0-9AD0-00A0C9A06E35}"),
               std::string::npos);
     e.guid = test::kGuidSine;
     e.trigger_button = 12;
-    EXPECT_NE(error_of(ffe_file({e})).find("dwTriggerButton = 12 is not a button: allowed DIJOFS_BUTTON0..31 (48..79)"),
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("dwTriggerButton = 12 is not a button: allowed DIJOFS_BUTTON0..31 (48..79)"),
               std::string::npos);
     e.trigger_button = test::kDiInfinite;
     e.flags = 0x01 | test::kPolar;
-    EXPECT_NE(error_of(ffe_file({e})).find("DIEFF_OBJECTIDS"), std::string::npos);
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("DIEFF_OBJECTIDS"), std::string::npos);
     e.flags = test::kObjectOffsets | test::kPolar;
     e.axes = {test::kDijofsX, 28};
-    EXPECT_NE(error_of(ffe_file({e})).find("object offset 28"), std::string::npos);
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("object offset 28"), std::string::npos);
     e.axes = {test::kDijofsX, test::kDijofsY};
     e.type_specific = {5000, 0, 0};
-    EXPECT_NE(error_of(ffe_file({e})).find("cbTypeSpecificParams = 12 for GUID_Sine: DIPERIODIC has 16 bytes"),
+    EXPECT_NE(ffe_error_of(ffe_file({e})).find("cbTypeSpecificParams = 12 for GUID_Sine: DIPERIODIC has 16 bytes"),
               std::string::npos);
-    EXPECT_NE(error_of(std::string("RIFF\0\0\0\0WAVE", 12)).find("not \"FORC\""), std::string::npos);
-    EXPECT_NE(error_of(ffe_file({})).find("holds no effect"), std::string::npos);
+    EXPECT_NE(ffe_error_of(std::string("RIFF\0\0\0\0WAVE", 12)).find("not \"FORC\""), std::string::npos);
+    EXPECT_NE(ffe_error_of(ffe_file({})).find("holds no effect"), std::string::npos);
 }
 
 // Found by fuzz_ffe_import: a RIFF size smaller than the form type and the file's GUID
@@ -301,7 +301,7 @@ TEST(FfeImport, ARiffSizeSmallerThanItsHeaderIsRefusedWithTheAllowedRange) {
     for (const int size : {1, 3, 19}) {
         file[4] = static_cast<char>(size);
         file[5] = file[6] = file[7] = 0;
-        const std::string msg = error_of(file);
+        const std::string msg = ffe_error_of(file);
         EXPECT_NE(msg.find("the RIFF header says " + std::to_string(size) + " bytes follow it (allowed 0"),
                   std::string::npos)
             << msg;
@@ -315,7 +315,7 @@ TEST(FfeImport, EveryTruncationIsAClearErrorNeverACrash) {
     const std::string whole = ffe_file({e, e});
     for (size_t n = 0; n < whole.size(); ++n) {
         // The RIFF size still names the whole file, so every cut is a truncation.
-        const std::string msg = error_of(whole.substr(0, n));
+        const std::string msg = ffe_error_of(whole.substr(0, n));
         EXPECT_NE(msg, "(no error)") << n;
         if (n >= 12) {
             EXPECT_NE(msg.find("truncated"), std::string::npos) << n << ": " << msg;
@@ -323,7 +323,7 @@ TEST(FfeImport, EveryTruncationIsAClearErrorNeverACrash) {
     }
     // With the RIFF size 0 (Force Editor), a cut inside a chunk names the chunk.
     const std::string zero = ffe_file({e}, true);
-    const std::string msg = error_of(zero.substr(0, zero.size() - 6));
+    const std::string msg = ffe_error_of(zero.substr(0, zero.size() - 6));
     EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
 }
 

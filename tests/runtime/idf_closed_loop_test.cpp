@@ -28,6 +28,7 @@
 #include "feel/runtime/idf.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/sim_device.hpp"
+#include "runtime_tick.hpp"
 
 namespace feel::test {
 namespace {
@@ -36,8 +37,8 @@ using runtime::IdfConfig;
 using runtime::IdfFilter;
 using runtime::IdfSettings;
 
-constexpr int64_t kTickUs = 1000;  // the runtime's default 1 kHz loop
-constexpr double kTickS = 1e-3;
+using test_support::kTickS;
+using test_support::kTickUs;
 
 const sim::DeviceProfile& joystick() { return *sim::find_device_profile("joystick"); }
 

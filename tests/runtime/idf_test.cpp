@@ -20,6 +20,7 @@
 #include "feel/engine.hpp"
 #include "feel/runtime/idf.hpp"
 #include "feel/sim/device_profile.hpp"
+#include "runtime_tick.hpp"
 
 namespace feel::test {
 namespace {
@@ -30,8 +31,8 @@ using runtime::IdfPlant;
 using runtime::IdfSettings;
 
 constexpr double kPi = std::numbers::pi;
-constexpr int64_t kTickUs = 1000;
-constexpr double kTickS = 1e-3;
+using test_support::kTickS;
+using test_support::kTickUs;
 
 // The joystick held firmly, in normalized units (hand-computed from docs/simulated-device.md:
 // 0.15 kg stick + 0.15 kg of hand, 0.5 + 6 N·s/m, 400 N/m; times 0.05 m / 4.45 N).

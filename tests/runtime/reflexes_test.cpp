@@ -11,11 +11,12 @@
 
 #include "feel/engine.hpp"
 #include "feel/runtime/reflexes.hpp"
+#include "runtime_tick.hpp"
 
 namespace feel::runtime {
 namespace {
 
-constexpr int64_t kTickUs = 1000;
+using test_support::kTickUs;
 
 EffectParams jolt(int32_t magnitude, int64_t duration_us) {
     EffectParams p;

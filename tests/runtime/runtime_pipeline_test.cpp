@@ -23,11 +23,12 @@
 #include "../../bench/busy_mix.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
 #include "runtime_rig.hpp"
+#include "runtime_tick.hpp"
 
 namespace feel::runtime::test {
 namespace {
 
-constexpr int64_t kTickUs = 1000;  // the default 1 kHz loop
+using test_support::kTickUs;
 
 EffectParams constant_x(int32_t magnitude, int64_t duration_us = kInfiniteUs) {
     EffectParams p;

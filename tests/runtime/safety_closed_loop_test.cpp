@@ -27,11 +27,12 @@
 #include "feel/runtime/safety.hpp"
 #include "feel/sim/input_schedule.hpp"
 #include "feel/sim/sim_device.hpp"
+#include "runtime_tick.hpp"
 
 namespace feel::runtime {
 namespace {
 
-constexpr int64_t kTickUs = 1000;
+using test_support::kTickUs;
 
 // One tick's record.
 struct Tick {
@@ -123,8 +124,8 @@ TEST(SafetyClosedLoop, GrabLetGoGrabWithTheDeadManSwitch) {
     const sim::DeviceProfile& joystick = *sim::find_device_profile("joystick");
     const int64_t fade_in = 300'000;
     Rig rig(joystick, sim::Grip::firm, no_watchdog(joystick, fade_in));
-    rig.play(test::constant_on_x(6000, kInfiniteUs));
-    rig.play(test::on_xy_polar(test::constant_on_x(4000, kInfiniteUs), 0));  // pushes +y
+    rig.play(feel::test::constant_on_x(6000, kInfiniteUs));
+    rig.play(feel::test::on_xy_polar(feel::test::constant_on_x(4000, kInfiniteUs), 0));  // pushes +y
     rig.schedule().let_go(1'000'000).grab(1'500'000).let_go(2'200'000).grab(2'350'000);
 
     const std::vector<Tick> ticks = rig.run_until(4'000'000);
@@ -206,7 +207,7 @@ TEST_P(HandsOffClosedLoop, AFreeHandleIsCaughtLeftAloneAndReArmedByTheHand) {
     const HandsOffConfig& h = config.hands_off;
     Rig rig(profile, sim::Grip::firm, config,
             sim::TargetMotion::parse(c.motion, 4.0, profile.axis_count));
-    rig.play(test::constant_on_x(c.force, kInfiniteUs));
+    rig.play(feel::test::constant_on_x(c.force, kInfiniteUs));
     rig.schedule().let_go(1'000'000).grab(3'500'000);
 
     // Held: the fade-in completes and nothing trips.
@@ -284,15 +285,15 @@ TEST(SafetyClosedLoop, AFirmHandNeverTrips) {
         profile.dead_man_switch = false;
         for (sim::Grip grip : {sim::Grip::firm, sim::Grip::stiff}) {
             std::vector<EffectParams> loads;
-            loads.push_back(test::constant_on_x(10000, kInfiniteUs));
+            loads.push_back(feel::test::constant_on_x(10000, kInfiniteUs));
             EffectParams spring;
             spring.type = EffectType::spring;
             spring.conditions[0].pos_coefficient = 10000;
             spring.conditions[0].neg_coefficient = 10000;
             loads.push_back(spring);
             for (int64_t period : {1'000'000, 333'333, 200'000, 100'000, 50'000, 20'000}) {
-                loads.push_back(test::periodic_on_x(EffectType::sine, 10000, 0, period, 0, kInfiniteUs));
-                loads.push_back(test::periodic_on_x(EffectType::square, 10000, 0, period, 0, kInfiniteUs));
+                loads.push_back(feel::test::periodic_on_x(EffectType::sine, 10000, 0, period, 0, kInfiniteUs));
+                loads.push_back(feel::test::periodic_on_x(EffectType::square, 10000, 0, period, 0, kInfiniteUs));
             }
             for (const EffectParams& load : loads) {
                 Rig rig(profile, grip, no_watchdog(profile, 100'000));
@@ -315,8 +316,8 @@ TEST(SafetyClosedLoop, ASilentHostStopsEveryEffect) {
     config.host_timeout_us = 100'000;
     config.host_fade_out_us = 0;  // cut at once (the fade has its own tests)
     Rig rig(joystick, sim::Grip::firm, config);
-    const EffectId push = rig.play(test::constant_on_x(3000, kInfiniteUs));
-    const EffectId buzz = rig.play(test::periodic_on_x(EffectType::sine, 2000, 0, 50'000, 9000, kInfiniteUs));
+    const EffectId push = rig.play(feel::test::constant_on_x(3000, kInfiniteUs));
+    const EffectId buzz = rig.play(feel::test::periodic_on_x(EffectType::sine, 2000, 0, 50'000, 9000, kInfiniteUs));
     // The host talks every 10 ms (its ~100 Hz game loop) until 1 s, then falls silent.
     int64_t tripped = -1;
     for (int64_t t = 0; t < 1'500'000; t += kTickUs) {

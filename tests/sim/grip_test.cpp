@@ -17,7 +17,6 @@
 namespace feel::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Oscillation {
     double period = 0;      // s, mean over the downward zero crossings
@@ -75,7 +74,7 @@ TEST_P(GripOscillator, RingsAtTheDampedNaturalFrequency) {
     const double wn = std::sqrt(g.stiffness / m);
     const double zeta = b / (2 * std::sqrt(g.stiffness * m));
     const double wd = wn * std::sqrt(1 - zeta * zeta);
-    const double td = 2 * kPi / wd;
+    const double td = 2 * std::numbers::pi / wd;
 
     const Oscillation o = measure(profile, c.grip, 3000, 1.0 / c.rate_hz, 5);
     EXPECT_NEAR(o.period, td, 0.002 * td) << "ζ = " << zeta;
@@ -168,7 +167,7 @@ TEST(Grip, NoneLeavesTheHandleAlone) {
 
 TEST(Kinematic, TheHandleFollowsTheTargetExactly) {
     const DeviceProfile& joystick = *find_device_profile("joystick");
-    const double w = 2 * kPi * 2;
+    const double w = 2 * std::numbers::pi * 2;
     SimDevice device(joystick, Grip::kinematic, TargetMotion::parse("sine:x:5000:2", 1, 2));
     const AxisModel& ax = joystick.axes[0];
     const double scale = 1 / test::per_unit(ax);
@@ -194,7 +193,7 @@ TEST(Kinematic, TheHandleFollowsTheTargetExactly) {
 TEST(Kinematic, FollowsACircleOnTwoAxes) {
     const DeviceProfile& three = *find_device_profile("3axis");
     SimDevice device(three, Grip::kinematic, TargetMotion::parse("circle:4000:0.5", 1, 3));
-    const double w = 2 * kPi * 0.5;
+    const double w = 2 * std::numbers::pi * 0.5;
     for (int n = 1; n <= 3000; ++n) {
         test::run(device, 0, 1e-3, 1);
         const double t = n * 1e-3;

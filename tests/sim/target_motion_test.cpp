@@ -15,7 +15,6 @@
 namespace feel::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 std::string write_file(const std::string& name, const std::string& text) {
     const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / name;
@@ -63,8 +62,8 @@ TEST(TargetMotion, SineIsAmplitudeTimesSin2PiFt) {
     const TargetMotion m = TargetMotion::parse("sine:x:3000:2", 1, 2);
     for (double t = 0; t < 2; t += 0.013) {
         const TargetMotion::Sample s = m.at(t);
-        EXPECT_NEAR(s.position[0], 3000 * std::sin(4 * kPi * t), 1e-9);
-        EXPECT_NEAR(s.velocity[0], 3000 * 4 * kPi * std::cos(4 * kPi * t), 1e-7);
+        EXPECT_NEAR(s.position[0], 3000 * std::sin(4 * std::numbers::pi * t), 1e-9);
+        EXPECT_NEAR(s.velocity[0], 3000 * 4 * std::numbers::pi * std::cos(4 * std::numbers::pi * t), 1e-7);
         EXPECT_EQ(s.position[1], 0);
     }
     EXPECT_EQ(TargetMotion::parse("sine:z:-100:0.5", 1, 3).used_axes(), 3);
@@ -80,7 +79,7 @@ TEST(TargetMotion, CircleKeepsItsRadiusAndMovesTangentially) {
     for (double t = 0; t < 3; t += 0.07) {
         const TargetMotion::Sample s = m.at(t);
         EXPECT_NEAR(std::hypot(s.position[0], s.position[1]), 4000, 1e-9);
-        EXPECT_NEAR(std::hypot(s.velocity[0], s.velocity[1]), 4000 * kPi, 1e-9);
+        EXPECT_NEAR(std::hypot(s.velocity[0], s.velocity[1]), 4000 * std::numbers::pi, 1e-9);
         EXPECT_NEAR(s.position[0] * s.velocity[0] + s.position[1] * s.velocity[1], 0, 1e-6);
     }
 }

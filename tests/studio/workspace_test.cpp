@@ -12,7 +12,7 @@ namespace feel::studio {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr const char* kSpring = R"({"format": "feel/1", "sensations": {"s": {"type": "spring", "duration_us": "infinite",
+constexpr const char* kSpringFile = R"({"format": "feel/1", "sensations": {"s": {"type": "spring", "duration_us": "infinite",
   "axes": ["x"], "conditions": [{"pos_coefficient": 5000, "neg_coefficient": 5000}]}}})";
 
 class WorkspaceTest : public ::testing::Test {
@@ -24,7 +24,7 @@ protected:
         fs::create_directories(root_ / "inside");
         outside_ = root_.string() + "-outside";
         fs::create_directories(outside_);
-        std::ofstream(outside_ / "secret.feel.json") << kSpring;
+        std::ofstream(outside_ / "secret.feel.json") << kSpringFile;
     }
     void TearDown() override {
         fs::remove_all(root_);
@@ -61,18 +61,18 @@ TEST_F(WorkspaceTest, RefusesSymlinksThatLeadOut) {
     Workspace ws(root_);
     expect_refused([&] { (void)ws.read("link/secret.feel.json"); }, "leads out of the workspace");
     expect_refused([&] { (void)ws.read("secret.feel.json"); }, "leads out of the workspace");
-    expect_refused([&] { (void)ws.save("link/new.feel.json", kSpring, false); }, "leads out of the workspace");
+    expect_refused([&] { (void)ws.save("link/new.feel.json", kSpringFile, false); }, "leads out of the workspace");
     EXPECT_TRUE(ws.list().empty());  // the links that lead out are not listed
     EXPECT_FALSE(fs::exists(outside_ / "new.feel.json"));
 }
 
 TEST_F(WorkspaceTest, SavesOnlyValidFilesInCanonicalFormAndBoundsSizes) {
     Workspace ws(root_);
-    const std::string canonical = ws.save("inside/a.feel.json", kSpring, false);
+    const std::string canonical = ws.save("inside/a.feel.json", kSpringFile, false);
     // The format's own writer is the reference for the canonical form.
-    EXPECT_EQ(canonical, format::write_sensation_file(format::parse_sensation_file(kSpring, "t")));
+    EXPECT_EQ(canonical, format::write_sensation_file(format::parse_sensation_file(kSpringFile, "t")));
     EXPECT_EQ(ws.read("inside/a.feel.json"), canonical);
-    expect_refused([&] { (void)ws.save("inside/a.feel.json", kSpring, false); }, "already exists");
+    expect_refused([&] { (void)ws.save("inside/a.feel.json", kSpringFile, false); }, "already exists");
     EXPECT_THROW((void)ws.save("b.feel.json", R"({"format": "feel/1", "sensations": {}})", false), format::FormatError);
     EXPECT_FALSE(fs::exists(root_ / "b.feel.json"));
     expect_refused([&] { (void)ws.save("big.feel.json", std::string(kMaxFileBytes + 1, ' '), false); }, "limit");
@@ -82,7 +82,7 @@ TEST_F(WorkspaceTest, SavesOnlyValidFilesInCanonicalFormAndBoundsSizes) {
 
 TEST_F(WorkspaceTest, RenamesCopiesAndCombines) {
     Workspace ws(root_);
-    (void)ws.save("a.feel.json", kSpring, false);
+    (void)ws.save("a.feel.json", kSpringFile, false);
     ws.rename("a.feel.json", "inside/b.feel.json");
     EXPECT_EQ(ws.list(), std::vector<std::string>{"inside/b.feel.json"});
     const std::string other = R"({"format": "feel/1", "sensations": {"t": {"type": "sine", "duration_us": 1000,

@@ -5,20 +5,14 @@
 #include <thread>
 
 #include "feel/transport/transport.hpp"
+#include "frame_of.hpp"
 
 namespace feel::transport {
 namespace {
 
 using namespace std::chrono_literals;
 
-Frame frame_of(FrameKind kind, std::vector<uint8_t> payload) {
-    Frame f;
-    f.kind = kind;
-    f.payload = std::move(payload);
-    return f;
-}
-
-TransportError::Kind receive_error(Connection& c, std::chrono::milliseconds timeout = 1000ms) {
+TransportError::Kind in_process_receive_error(Connection& c, std::chrono::milliseconds timeout = 1000ms) {
     try {
         (void)c.receive(timeout);
     } catch (const TransportError& e) {
@@ -68,18 +62,18 @@ TEST(InProcess, ThePeerReadsWhatWasSentBeforeTheCloseThenDisconnected) {
     pair.host->close();
     EXPECT_EQ(pair.device->receive(100ms)->payload, std::vector<uint8_t>{1});
     EXPECT_EQ(pair.device->receive(100ms)->payload, std::vector<uint8_t>{2});
-    EXPECT_EQ(receive_error(*pair.device), TransportError::Kind::disconnected);
+    EXPECT_EQ(in_process_receive_error(*pair.device), TransportError::Kind::disconnected);
     // Sending into a closed pair, from either end.
     EXPECT_THROW(pair.device->send(frame_of(FrameKind::input_report, {3})), TransportError);
     EXPECT_THROW(pair.host->send(frame_of(FrameKind::output_report, {3})), TransportError);
-    EXPECT_EQ(receive_error(*pair.host), TransportError::Kind::disconnected);
+    EXPECT_EQ(in_process_receive_error(*pair.host), TransportError::Kind::disconnected);
     pair.host->close();  // harmless twice
 }
 
 TEST(InProcess, DestroyingOneEndDisconnectsTheOther) {
     ConnectionPair pair = in_process_pair();
     pair.host.reset();
-    EXPECT_EQ(receive_error(*pair.device), TransportError::Kind::disconnected);
+    EXPECT_EQ(in_process_receive_error(*pair.device), TransportError::Kind::disconnected);
 }
 
 TEST(InProcess, CloseWakesABlockedReceiveAtOnce) {
@@ -89,7 +83,7 @@ TEST(InProcess, CloseWakesABlockedReceiveAtOnce) {
         std::chrono::steady_clock::duration waited{};
         std::thread receiver([&] {
             const auto begin = std::chrono::steady_clock::now();
-            kind = receive_error(*pair.device, 10'000ms);
+            kind = in_process_receive_error(*pair.device, 10'000ms);
             waited = std::chrono::steady_clock::now() - begin;
         });
         std::this_thread::sleep_for(20ms);

@@ -18,19 +18,13 @@
 #include <thread>
 
 #include "feel/transport/transport.hpp"
+#include "frame_of.hpp"
 
 namespace feel::transport {
 namespace {
 
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
-
-Frame frame_of(FrameKind kind, std::vector<uint8_t> payload) {
-    Frame f;
-    f.kind = kind;
-    f.payload = std::move(payload);
-    return f;
-}
 
 std::vector<uint8_t> pattern(std::size_t size, uint8_t seed) {
     std::vector<uint8_t> bytes(size);
@@ -45,7 +39,7 @@ std::vector<uint8_t> wire(uint8_t kind, uint16_t length, const std::vector<uint8
     return bytes;
 }
 
-TransportError::Kind receive_error(Connection& c, std::chrono::milliseconds timeout = 2000ms) {
+TransportError::Kind stream_receive_error(Connection& c, std::chrono::milliseconds timeout = 2000ms) {
     try {
         const auto f = c.receive(timeout);
         ADD_FAILURE() << (f ? "a frame came instead of an error" : "timed out instead of an error");
@@ -278,7 +272,7 @@ TEST_P(StreamTransport, HostileBytesAreABadFrameAndCloseTheConnection) {
             EXPECT_EQ(e.kind(), TransportError::Kind::bad_frame) << h.what;
             EXPECT_NE(std::string(e.what()).find(h.what), std::string::npos) << e.what();
         }
-        EXPECT_EQ(receive_error(*device), TransportError::Kind::disconnected) << h.what;
+        EXPECT_EQ(stream_receive_error(*device), TransportError::Kind::disconnected) << h.what;
         EXPECT_TRUE(raw.sees_close(2000ms)) << h.what << ": the device kept the connection open";
     }
 }
@@ -323,8 +317,8 @@ TEST_P(StreamTransport, PeerCloseIsDisconnectedAfterThePendingFrames) {
         ASSERT_TRUE(f.has_value());
         EXPECT_EQ(f->payload, std::vector<uint8_t>{i});
     }
-    EXPECT_EQ(receive_error(*pair.device), TransportError::Kind::disconnected);
-    EXPECT_EQ(receive_error(*pair.host), TransportError::Kind::disconnected);  // closed here
+    EXPECT_EQ(stream_receive_error(*pair.device), TransportError::Kind::disconnected);
+    EXPECT_EQ(stream_receive_error(*pair.host), TransportError::Kind::disconnected);  // closed here
 }
 
 TEST_P(StreamTransport, APeerVanishingMidFrameIsDisconnected) {
@@ -332,7 +326,7 @@ TEST_P(StreamTransport, APeerVanishingMidFrameIsDisconnected) {
     auto device = accept_raw(raw);
     raw.write({1, 10, 0, 1, 2, 3});
     raw.close();
-    EXPECT_EQ(receive_error(*device), TransportError::Kind::disconnected);
+    EXPECT_EQ(stream_receive_error(*device), TransportError::Kind::disconnected);
 }
 
 TEST_P(StreamTransport, SendingToAClosedPeerIsDisconnectedNotASignal) {
@@ -357,7 +351,7 @@ TEST_P(StreamTransport, SendingToAClosedPeerIsDisconnectedNotASignal) {
 TEST_P(StreamTransport, CloseWakesABlockedReceiveAndABlockedAccept) {
     ConnectionPair pair = connect_pair();
     TransportError::Kind kind = TransportError::Kind::timeout;
-    std::thread receiver([&] { kind = receive_error(*pair.device, 10'000ms); });
+    std::thread receiver([&] { kind = stream_receive_error(*pair.device, 10'000ms); });
     std::this_thread::sleep_for(20ms);
     const auto begin = std::chrono::steady_clock::now();
     pair.device->close();
@@ -490,7 +484,7 @@ TEST_P(StreamTransport, APartialFrameNotCompletedInTimeClosesTheConnection) {
     auto device = accept_raw(raw);
     raw.write({1, 40, 0, 0xAA, 0xBB});  // an output report of 40 bytes: 2 of them, then nothing
     const auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(receive_error(*device, 5000ms), TransportError::Kind::bad_frame);
+    EXPECT_EQ(stream_receive_error(*device, 5000ms), TransportError::Kind::bad_frame);
     const auto waited = std::chrono::steady_clock::now() - start;
     EXPECT_GE(waited, kPartialFrameTimeout - 50ms);
     EXPECT_TRUE(raw.sees_close(2000ms));

@@ -19,6 +19,9 @@ namespace feel::test {
 
 inline constexpr double kPi = std::numbers::pi;
 
+// The joystick profile's velocity reference (units/s): the speed that reads as full scale.
+inline constexpr double kVelocityRef = 1e5;
+
 // The joystick profile's sensor step: 20000 units over 4096 counts.
 inline constexpr double kJoystickStep = 20000.0 / 4096.0;
 

@@ -20,8 +20,6 @@ double damper_force(double v, double offset, double b_pos, double b_neg, double 
     return 0;
 }
 
-constexpr double kVelocityRef = 1e5;  // the joystick profile's, units/s
-
 TEST_F(Damper, HandComputedPoint) {
     // 20000 units/s = 2000 on the ±10000 scale; b = 5000 resists with 1000.
     play(condition(EffectType::damper, {Axis::x}, {block(5000, 5000)}));

@@ -11,9 +11,6 @@ namespace {
 
 using detail::MotionEstimator;
 
-// The joystick profile's velocity_ref: 0.5 m/s at the grip reads 10000.
-constexpr double kVelocityRef = 1e5;
-
 struct RampRun {
     double worst_error = 0;      // largest |v_est - v| / |v| once the window has filled
     int ticks = 0;               // ticks checked

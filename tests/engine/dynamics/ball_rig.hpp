@@ -19,6 +19,8 @@
 namespace feel::test {
 
 inline constexpr double kBallPi = std::numbers::pi;
+// The engine's 1 kHz tick, in seconds: the step the ball tests advance by.
+inline constexpr double kBallTickS = 1e-3;
 
 // The value of a Dynamic Struct integer whose 10000 means `reference`.
 inline double scaled(int32_t value, float reference) { return value / 10000.0 * reference; }

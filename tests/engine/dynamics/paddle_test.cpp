@@ -13,8 +13,6 @@
 namespace feel::test {
 namespace {
 
-constexpr double kTick = 1e-3;
-
 // A paddle's physical constants, from the integers and the config the model reads.
 struct PaddlePhysics {
     double m, k, b, speed, g;
@@ -22,7 +20,7 @@ struct PaddlePhysics {
     double zeta() const { return b / (2 * std::sqrt(k * m)); }
 };
 
-PaddlePhysics physics_of(const EffectParams& p, const EngineConfig& c) {
+PaddlePhysics paddle_physics_of(const EffectParams& p, const EngineConfig& c) {
     const DynamicBlock& d = p.dynamic;
     return {scaled(d.ball_mass, c.dynamic_mass_ref), scaled(d.paddle_compliance, c.dynamic_stiffness_ref),
             scaled(d.paddle_damping, c.dynamic_damping_ref), scaled(d.initial_velocity, c.velocity_ref),
@@ -46,8 +44,8 @@ std::vector<BallRig::Tick> bounce(BallRig& rig, double dt, double max_s = 5.0) {
 
 TEST(PaddleContact, ElasticBounceOffAStillPaddleReturnsTheIncomingSpeed) {
     BallRig rig(detail::paddle_dynamic, paddle_params(4000, 6000, 0, 5000, 0, 0));
-    const PaddlePhysics ph = physics_of(rig.params(), rig.config());
-    const auto ticks = bounce(rig, kTick);
+    const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
+    const auto ticks = bounce(rig, kBallTickS);
     ASSERT_TRUE(ticks.back().result.finished);
     // Compass 0: the ball comes from +y, moving toward −y; it leaves along +y at the same
     // speed. Exact integration: only rounding separates it from V.
@@ -57,7 +55,7 @@ TEST(PaddleContact, ElasticBounceOffAStillPaddleReturnsTheIncomingSpeed) {
     // Half an undamped period in contact.
     EXPECT_NEAR(rig.state.ball.now.contact_s, kBallPi / ph.omega(), 1e-9 * kBallPi / ph.omega());
     // The event ends on the first tick after the ball has left.
-    const double ticks_in_contact = kBallPi / ph.omega() / kTick;
+    const double ticks_in_contact = kBallPi / ph.omega() / kBallTickS;
     EXPECT_EQ(static_cast<double>(ticks.size() - 1), std::ceil(ticks_in_contact));
 }
 
@@ -68,13 +66,13 @@ TEST(PaddleContact, TheHandleFeelsTheWholeImpulse) {
     // the engine's first tick does, so every tick's impulse is predicted.)
     for (const int32_t damping : {0, 1500}) {
         BallRig rig(detail::paddle_dynamic, paddle_params(4000, 6000, 0, 5000, damping, 0));
-        const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+        const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
         double impulse = 0;
         bool finished = false;
         for (int i = 0; i < 5000 && !finished; ++i) {
-            const auto t = rig.tick(kTick);
+            const auto t = rig.tick(kBallTickS);
             finished = t.result.finished;
-            if (!finished) impulse += t.force[1] * kTick;  // the engine drops the last tick's force
+            if (!finished) impulse += t.force[1] * kBallTickS;  // the engine drops the last tick's force
         }
         ASSERT_TRUE(finished);
         const double change = ph.m * (rig.state.ball.now.velocity[1] - (-ph.speed));
@@ -87,8 +85,8 @@ TEST(PaddleContact, PeakPushIsTheEnergyBound) {
     // mean of the push V·√(km)·sin ωt over the coming tick; the tick whose middle is
     // nearest the peak (within half a tick) has a mean of at least sinc(ωT/2)·cos(ωT/2) of it.
     BallRig rig(detail::paddle_dynamic, paddle_params(6000, 8000, 0, 3000, 0, 0));
-    const PaddlePhysics ph = physics_of(rig.params(), rig.config());
-    const auto ticks = bounce(rig, kTick);
+    const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
+    const auto ticks = bounce(rig, kBallTickS);
     double peak = 0;
     for (const auto& t : ticks) {
         EXPECT_NEAR(t.force[0], 0.0, 1e-9);
@@ -96,7 +94,7 @@ TEST(PaddleContact, PeakPushIsTheEnergyBound) {
         peak = std::max(peak, -t.force[1]);
     }
     const double bound = ph.speed * std::sqrt(ph.k * ph.m);
-    const double half = ph.omega() * kTick / 2;
+    const double half = ph.omega() * kBallTickS / 2;
     EXPECT_LE(peak, bound * (1 + 1e-9));
     EXPECT_GE(peak, bound * std::sin(half) / half * std::cos(half));
 }
@@ -113,9 +111,9 @@ TEST_P(DampedBounce, RestitutionAndContactTimeMatchTheClosedForm) {
     ASSERT_GE(damping, 1);
     ASSERT_LE(damping, 10000) << "pick a lighter ball or softer paddle for this config";
     BallRig rig(detail::paddle_dynamic, paddle_params(mass, 5000, 0, compliance, damping, 0), config);
-    const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+    const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
     const Bounce want = pushes_only_bounce(ph.zeta(), ph.omega());
-    const auto ticks = bounce(rig, kTick);
+    const auto ticks = bounce(rig, kBallTickS);
     ASSERT_TRUE(ticks.back().result.finished);
     EXPECT_NEAR(rig.state.ball.now.velocity[1] / ph.speed, want.restitution, 1e-7) << "zeta " << ph.zeta();
     EXPECT_NEAR(rig.state.ball.now.contact_s, want.contact_s, 1e-7 * want.contact_s) << "zeta " << ph.zeta();
@@ -156,7 +154,7 @@ TEST(PaddleContact, DirectionNamesWhereTheBallComesFrom) {
     for (const Case c : {Case{5000, 9000, 1, 0}, Case{5000, 13500, s, -s}, Case{5000, 27000, -1, 0},
                          Case{-5000, 0, 0, -1}, Case{-5000, 9000, -1, 0}}) {
         BallRig rig(detail::paddle_dynamic, paddle_params(3000, c.velocity, c.direction, 4000, 0, 0));
-        const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+        const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
         const double speed = std::fabs(ph.speed);
         const auto first = rig.tick(0);
         EXPECT_NEAR(rig.state.ball.now.velocity[0], -speed * c.nx, 1e-9 * speed);
@@ -164,7 +162,7 @@ TEST(PaddleContact, DirectionNamesWhereTheBallComesFrom) {
         EXPECT_FALSE(first.result.finished);
         bool pushed = false;
         for (int i = 0; i < 5000; ++i) {
-            const auto t = rig.tick(kTick);
+            const auto t = rig.tick(kBallTickS);
             // The push on the handle is along −n: the way the ball travels.
             EXPECT_LE(t.force[0] * c.nx + t.force[1] * c.ny, 1e-9);
             EXPECT_NEAR(t.force[0] * c.ny - t.force[1] * c.nx, 0.0, 1e-6);
@@ -186,15 +184,15 @@ TEST(PaddleContact, ASwungPaddleHitsHarder) {
     // the fixed frame (a bat). V = 0: a ball resting against the paddle, batted away.
     for (int32_t velocity : {0, 3000}) {
         BallRig rig(detail::paddle_dynamic, paddle_params(3000, velocity, 0, 4000, 0, 0));
-        const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+        const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
         const double w = 0.2 * rig.config().velocity_ref;  // along +y, into the ball
         double t = 0;
         rig.velocity[1] = static_cast<float>(w);  // the hand's velocity over the coming tick
         bool finished = rig.tick(0).result.finished;
         while (!finished && t < 2) {
-            t += kTick;
+            t += kBallTickS;
             rig.position[1] = static_cast<float>(w * t);
-            finished = rig.tick(kTick).result.finished;
+            finished = rig.tick(kBallTickS).result.finished;
         }
         ASSERT_TRUE(finished);
         EXPECT_NEAR(rig.state.ball.now.velocity[1], ph.speed + 2 * w, 1e-4 * w) << velocity;
@@ -207,10 +205,10 @@ TEST(PaddleContact, GravityRestsTheBallOnThePaddle) {
     // by m·g/k and the paddle carries its weight m·g. It never leaves by itself.
     const EngineConfig config;
     BallRig rig(detail::paddle_dynamic, paddle_params(5000, 0, 0, 5000, damping_for(0.5, 5000, 5000, config), 3000));
-    const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+    const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
     BallRig::Tick last = rig.tick(0);
     for (int i = 0; i < 5000; ++i) {
-        last = rig.tick(kTick);
+        last = rig.tick(kBallTickS);
         ASSERT_FALSE(last.result.finished) << i;
     }
     EXPECT_NEAR(last.force[1], -ph.m * ph.g, 1e-6 * ph.m * ph.g);
@@ -221,19 +219,19 @@ TEST(PaddleContact, NegativeGravityLiftsTheBallOff) {
     // Gravity away from the paddle and no impact: free flight from the first instant; the
     // ball leaves at once with g·t.
     BallRig rig(detail::paddle_dynamic, paddle_params(5000, 0, 9000, 5000, 0, -3000));
-    const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+    const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
     EXPECT_FALSE(rig.tick(0).result.finished);
-    const auto t = rig.tick(kTick);
+    const auto t = rig.tick(kBallTickS);
     ASSERT_TRUE(t.result.finished);
     EXPECT_EQ(t.force[0], 0.0);
-    EXPECT_NEAR(t.result.mass_velocity[0], -ph.g * kTick, 1e-6 * std::fabs(ph.g) * kTick);  // away: +x
-    EXPECT_NEAR(t.result.mass_position[0], -0.5 * ph.g * kTick * kTick, 1e-6 * std::fabs(ph.g) * kTick * kTick);
+    EXPECT_NEAR(t.result.mass_velocity[0], -ph.g * kBallTickS, 1e-6 * std::fabs(ph.g) * kBallTickS);  // away: +x
+    EXPECT_NEAR(t.result.mass_position[0], -0.5 * ph.g * kBallTickS * kBallTickS, 1e-6 * std::fabs(ph.g) * kBallTickS * kBallTickS);
 }
 
 TEST(PaddleContact, AStillBallAtAStillPaddleWaits) {
     BallRig rig(detail::paddle_dynamic, paddle_params(5000, 0, 0, 5000, 2000, 0));
     for (int i = 0; i < 1000; ++i) {
-        const auto t = rig.tick(i == 0 ? 0 : kTick);
+        const auto t = rig.tick(i == 0 ? 0 : kBallTickS);
         ASSERT_FALSE(t.result.finished);
         EXPECT_EQ(t.force[0], 0.0);
         EXPECT_EQ(t.force[1], 0.0);
@@ -251,7 +249,7 @@ TEST(PaddleContact, PumpingDuringTheReboundLaunchesFaster) {
     const double moves[3] = {-1, 0, 1};
     for (int i = 0; i < 3; ++i) {
         BallRig rig(detail::paddle_dynamic, paddle_params(3000, 5000, 0, 4000, 0, 0));
-        const PaddlePhysics ph = physics_of(rig.params(), rig.config());
+        const PaddlePhysics ph = paddle_physics_of(rig.params(), rig.config());
         const double quarter = kBallPi / (2 * ph.omega());
         const double w = moves[i] * 0.1 * ph.speed;
         // The hand: at each tick the handle is where its velocity so far has taken it,
@@ -262,13 +260,13 @@ TEST(PaddleContact, PumpingDuringTheReboundLaunchesFaster) {
         double t_s = -1;
         bool finished = rig.tick(0).result.finished;
         while (!finished && t < 2) {
-            t += kTick;
-            y += v * kTick;
+            t += kBallTickS;
+            y += v * kBallTickS;
             v = t > quarter ? w : 0.0;
             if (v != 0 && t_s < 0) t_s = t;
             rig.position[1] = static_cast<float>(y);
             rig.velocity[1] = static_cast<float>(v);
-            finished = rig.tick(kTick).result.finished;
+            finished = rig.tick(kBallTickS).result.finished;
         }
         ASSERT_TRUE(finished);
         leave[i] = rig.state.ball.now.velocity[1];

@@ -11,14 +11,12 @@
 namespace feel::test {
 namespace {
 
-constexpr double kTick = 1e-3;
-
 struct SlingPhysics {
     double m, k, L, c;
     double omega() const { return std::sqrt(k / m); }
 };
 
-SlingPhysics physics_of(const EffectParams& p, const EngineConfig& c) {
+SlingPhysics sling_physics_of(const EffectParams& p, const EngineConfig& c) {
     const DynamicBlock& d = p.dynamic;
     return {scaled(d.ball_mass, c.dynamic_mass_ref), scaled(d.string_compliance, c.dynamic_stiffness_ref),
             static_cast<double>(d.string_length), scaled(d.ball_damping, c.dynamic_damping_ref)};
@@ -58,7 +56,7 @@ TEST(Sling, StartsHangingAtTheBobbinAndIsSlackWithinItsLength) {
     // the ball stays where it hung.
     for (int i = 1; i <= 1000; ++i) {
         rig.position[0] = static_cast<float>(1234 + 2.9 * i);
-        const auto t = rig.tick(kTick);
+        const auto t = rig.tick(kBallTickS);
         ASSERT_EQ(t.force[0], 0.0);
         ASSERT_EQ(t.force[1], 0.0);
         ASSERT_FALSE(t.result.finished);
@@ -74,7 +72,7 @@ TEST(Sling, ATautStringPullsTheHandleTowardTheBall) {
     // [T, 2T]) pulls k·s0·(1 − (7/6)·(ω·T)²), and the ball has fallen ½·(k·s0/m)·T².
     for (const double bx : {-3000.0, 1000.0, 4000.0}) {
         BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
-        const SlingPhysics s = physics_of(rig.params(), rig.config());
+        const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
         const double by = -2000;
         place_ball(rig, bx, by, 0, 0);
         const double r = norm2(bx, by);
@@ -82,12 +80,12 @@ TEST(Sling, ATautStringPullsTheHandleTowardTheBall) {
         const auto now = rig.tick(0);
         EXPECT_NEAR(now.force[0], pull * bx / r, 1e-9 * (1 + pull)) << bx;
         EXPECT_NEAR(now.force[1], pull * by / r, 1e-9 * (1 + pull)) << bx;
-        const auto next = rig.tick(kTick);
-        const double shrink = 7.0 / 6.0 * std::pow(s.omega() * kTick, 2);
+        const auto next = rig.tick(kBallTickS);
+        const double shrink = 7.0 / 6.0 * std::pow(s.omega() * kBallTickS, 2);
         EXPECT_NEAR(next.force[0], pull * (1 - shrink) * bx / r, 0.1 * shrink * pull + 1e-9) << bx;
         EXPECT_NEAR(next.force[1], pull * (1 - shrink) * by / r, 0.1 * shrink * pull + 1e-9) << bx;
         const double fallen = norm2(next.result.mass_position[0] - bx, next.result.mass_position[1] - by);
-        EXPECT_NEAR(fallen, 0.5 * pull / s.m * kTick * kTick, 0.05 * pull / s.m * kTick * kTick + 1e-3) << bx;
+        EXPECT_NEAR(fallen, 0.5 * pull / s.m * kBallTickS * kBallTickS, 0.05 * pull / s.m * kBallTickS * kBallTickS + 1e-3) << bx;
     }
 }
 
@@ -98,15 +96,15 @@ double orbit_radius(const SlingPhysics& s, double u) {
 
 TEST(Sling, CirclesAStillHandleWithTheCentripetalPull) {
     BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
-    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
     const double u = 20000;
     const double R = orbit_radius(s, u);
     place_ball(rig, R, 0, 0, u);
     const double centripetal = s.m * u * u / R;
     double t = 0;
     for (int i = 0; i < 2000; ++i) {
-        const auto tick = rig.tick(kTick);
-        t += kTick;
+        const auto tick = rig.tick(kBallTickS);
+        t += kBallTickS;
         EXPECT_NEAR(norm2(tick.force[0], tick.force[1]), centripetal, 1e-3 * centripetal) << t;
         EXPECT_NEAR(norm2(tick.result.mass_position[0], tick.result.mass_position[1]), R, 1e-3 * (R - s.L));
     }
@@ -120,11 +118,11 @@ TEST(Sling, SpinningFasterPullsHarder) {
     const double speeds[2] = {15000, 30000};
     for (int i = 0; i < 2; ++i) {
         BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
-        const SlingPhysics s = physics_of(rig.params(), rig.config());
+        const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
         place_ball(rig, orbit_radius(s, speeds[i]), 0, 0, speeds[i]);
         double sum = 0;
         for (int n = 0; n < 1000; ++n) {
-            const auto t = rig.tick(kTick);
+            const auto t = rig.tick(kBallTickS);
             sum += norm2(t.force[0], t.force[1]);
         }
         pull[i] = sum / 1000;
@@ -139,7 +137,7 @@ TEST(Sling, AHandleCirclingDrivesTheBallOnALargerCircle) {
     // ray, radius ρ, where the string's pull k·(ρ − a − L) is the centripetal m·Ω²·ρ:
     // ρ = k·(a + L)/(k − m·Ω²).
     BallRig rig(detail::sling_dynamic, sling_params(5000, 3000, 5000, 0));
-    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
     const double a = 2000;
     const double Omega = 2 * kBallPi * 1.0;
     ASSERT_GT(s.k, s.m * Omega * Omega);
@@ -149,18 +147,18 @@ TEST(Sling, AHandleCirclingDrivesTheBallOnALargerCircle) {
     place_ball(rig, rho, 0, 0, Omega * rho);
     const double pull = s.m * Omega * Omega * rho;
     for (int i = 1; i <= 3000; ++i) {
-        const double t = i * kTick;
+        const double t = i * kBallTickS;
         rig.position[0] = static_cast<float>(a * std::cos(Omega * t));
         rig.position[1] = static_cast<float>(a * std::sin(Omega * t));
         rig.velocity[0] = static_cast<float>(-a * Omega * std::sin(Omega * t));
         rig.velocity[1] = static_cast<float>(a * Omega * std::cos(Omega * t));
-        const auto tick = rig.tick(kTick);
+        const auto tick = rig.tick(kBallTickS);
         EXPECT_NEAR(norm2(tick.force[0], tick.force[1]), pull, 2e-3 * pull) << t;
         // Radially outward, toward the ball on the handle's ray: the mean over the coming
         // tick, so along the ray half a tick ahead (the handle's path between ticks is a
         // chord of its circle, and the coming tick is predicted along the last chord).
-        EXPECT_NEAR(tick.force[0] / pull, std::cos(Omega * (t + kTick / 2)), 2e-3) << t;
-        EXPECT_NEAR(tick.force[1] / pull, std::sin(Omega * (t + kTick / 2)), 2e-3) << t;
+        EXPECT_NEAR(tick.force[0] / pull, std::cos(Omega * (t + kBallTickS / 2)), 2e-3) << t;
+        EXPECT_NEAR(tick.force[1] / pull, std::sin(Omega * (t + kBallTickS / 2)), 2e-3) << t;
     }
 }
 
@@ -170,7 +168,7 @@ TEST(Sling, TheHandleFeelsEveryImpulseTheStringGives) {
     // ball's whole change of momentum. Exact while the hand moves steadily, as the
     // prediction assumes: here it drags the ball from hanging, across the travel.
     BallRig rig(detail::sling_dynamic, sling_params(3000, 1500, 7000, 0));
-    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
     const double ux = 6000, uy = -3500;  // position units/s
     rig.position[0] = -6000;
     rig.position[1] = 3500;
@@ -180,16 +178,16 @@ TEST(Sling, TheHandleFeelsEveryImpulseTheStringGives) {
     double start[2] = {}, impulse[2] = {};
     for (int i = 1; i <= 2000; ++i) {
         // Steps of 6 and 3.5 units, which float holds exactly: a perfectly steady hand.
-        rig.position[0] = static_cast<float>(-6000 + ux * i * kTick);
-        rig.position[1] = static_cast<float>(3500 + uy * i * kTick);
-        const auto tick = rig.tick(kTick);
+        rig.position[0] = static_cast<float>(-6000 + ux * i * kBallTickS);
+        rig.position[1] = static_cast<float>(3500 + uy * i * kBallTickS);
+        const auto tick = rig.tick(kBallTickS);
         if (i == 1) {
             start[0] = rig.state.ball.now.velocity[0];
             start[1] = rig.state.ball.now.velocity[1];
         }
         if (i < 2000) {  // the force of tick i acts until tick i + 1
-            impulse[0] += tick.force[0] * kTick;
-            impulse[1] += tick.force[1] * kTick;
+            impulse[0] += tick.force[0] * kBallTickS;
+            impulse[1] += tick.force[1] * kBallTickS;
         }
     }
     for (int a = 0; a < 2; ++a) {
@@ -205,15 +203,15 @@ TEST(Sling, EnergyIsKeptWithAStillHandleAndNoAirResistance) {
     // exactly; the true energy ripples about it by about (ω·h)²/2 = 3e-4 (h·ω <= 0.025),
     // and does not drift.
     BallRig rig(detail::sling_dynamic, sling_params(100, 2000, 10000, 0));
-    const SlingPhysics s = physics_of(rig.params(), rig.config());
-    ASSERT_GT(s.omega() * kTick, 0.1);
+    const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
+    ASSERT_GT(s.omega() * kBallTickS, 0.1);
     place_ball(rig, 1.3 * s.L, 0, 3000, 9000);
     const double e0 = energy(s, rig.state.ball);
     double worst = 0;
     double first_10s = 0, last_10s = 0;
     int taut_ticks = 0;
     for (int i = 0; i < 60000; ++i) {
-        const auto t = rig.tick(kTick);
+        const auto t = rig.tick(kBallTickS);
         taut_ticks += t.force[0] != 0 || t.force[1] != 0;
         const double e = energy(s, rig.state.ball) / e0 - 1;
         worst = std::max(worst, std::fabs(e));
@@ -229,16 +227,16 @@ TEST(Sling, EnergyIsKeptWithAStillHandleAndNoAirResistance) {
 TEST(Sling, AirResistanceSlowsAFreeBallExponentially) {
     // Inside its string's reach the ball only feels the air: v(t) = u·e^{−c·t/m} exactly.
     BallRig rig(detail::sling_dynamic, sling_params(5000, 9000, 5000, 2000));
-    const SlingPhysics s = physics_of(rig.params(), rig.config());
+    const SlingPhysics s = sling_physics_of(rig.params(), rig.config());
     const double u = 10000;
     ASSERT_LT(u * s.m / s.c, s.L) << "the ball must stay inside the string's reach";
     place_ball(rig, 0, 0, u, 0);
     for (int i = 1; i <= 200; ++i) {
-        const auto t = rig.tick(kTick);
+        const auto t = rig.tick(kBallTickS);
         EXPECT_EQ(t.force[0], 0.0);
-        EXPECT_NEAR(rig.state.ball.now.velocity[0], u * std::exp(-s.c / s.m * i * kTick), 1e-9 * u);
+        EXPECT_NEAR(rig.state.ball.now.velocity[0], u * std::exp(-s.c / s.m * i * kBallTickS), 1e-9 * u);
         // Position: the integral, to the splitting's (c·h/m)²/24.
-        const double x = u * s.m / s.c * (1 - std::exp(-s.c / s.m * i * kTick));
+        const double x = u * s.m / s.c * (1 - std::exp(-s.c / s.m * i * kBallTickS));
         EXPECT_NEAR(rig.state.ball.now.position[0], x, 1e-4 * x);
     }
 }
@@ -279,12 +277,12 @@ TEST(Sling, OnOneAxisItIsABallOnALine) {
     EffectParams p = sling_params(5000, 2000, 5000, 0);
     p.axis_count = 1;
     BallRig rig(detail::sling_dynamic, p);
-    const SlingPhysics s = physics_of(p, rig.config());
+    const SlingPhysics s = sling_physics_of(p, rig.config());
     const double u = 15000;
     place_ball(rig, 0, 0, u, 0);
     double reach = 0, pull = 0;
     for (int i = 0; i < 400; ++i) {
-        const auto t = rig.tick(kTick);
+        const auto t = rig.tick(kBallTickS);
         EXPECT_EQ(t.force[1], 0.0);
         EXPECT_EQ(t.result.mass_position[1], 0.0f);
         reach = std::max(reach, static_cast<double>(t.result.mass_position[0]));
@@ -302,13 +300,13 @@ TEST(Sling, TheOrderOfTheAxesDoesNotMatter) {
     BallRig a(detail::sling_dynamic, sling_params(5000, 2000, 5000, 100));
     BallRig b(detail::sling_dynamic, yx);
     for (int i = 0; i < 1500; ++i) {
-        const double t = i * kTick;
+        const double t = i * kBallTickS;
         for (BallRig* r : {&a, &b}) {
             r->position[0] = static_cast<float>(3000 * std::sin(9 * t));
             r->position[1] = static_cast<float>(2000 * std::cos(5 * t) - 2000);
         }
-        const auto ta = a.tick(i == 0 ? 0 : kTick);
-        const auto tb = b.tick(i == 0 ? 0 : kTick);
+        const auto ta = a.tick(i == 0 ? 0 : kBallTickS);
+        const auto tb = b.tick(i == 0 ? 0 : kBallTickS);
         ASSERT_NEAR(ta.force[0], tb.force[0], 1e-9 * (1 + std::fabs(ta.force[0])));
         ASSERT_NEAR(ta.force[1], tb.force[1], 1e-9 * (1 + std::fabs(ta.force[1])));
         ASSERT_FALSE(ta.result.finished);
