@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ clang libclang-rt-14-dev pkg-config  # toolchain; clang + its runtime for libFuzzer
+  lld                  # the sanitizer trees' linker: half the CPU of ld.bfd per test executable
   nlohmann-json3-dev   # sensation files (JSON)
   libcli11-dev         # the feel command line
   libgtest-dev         # unit tests
