@@ -191,18 +191,19 @@ TEST_F(Friction, ThePresslidingDistanceFollowsTheTickAndTheDevice) {
     EXPECT_NEAR(tick_at(1000).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
 }
 
-TEST_F(Friction, StictionLetsGoWithThePushItHeld) {
-    // Coulomb's static friction is whatever balances the push on a handle at rest, no more
-    // (§3.5: friction only resists motion). The handle is dragged 300 units into the bristle
-    // and held there while a constant effect pushes it; when the push ends, the friction's
-    // force changes by exactly the push at that very tick, and if that would turn it
-    // around it lets go to 0 instead. (device_mass 0: the stop guard is off, this needs no
+TEST_F(Friction, StictionBalancesThePushItHolds) {
+    // Coulomb's static friction is whatever balances the push on a handle at rest, within ±f
+    // (§3.5: friction "always resists the direction of motion"; it does not move a handle
+    // that nothing moves). At the first tick the handle has not moved, so the friction holds
+    // the constant push at once: the engine's total force is 0. A hand then drags the handle
+    // 300 units into the bristle and holds it; when the push ends, the friction's force
+    // changes by exactly the push at that very tick, so the hand feels no step (the friction
+    // holds the hand's share alone). (device_mass 0: the stop guard is off, this needs no
     // mass.)
     EngineConfig config = joystick_config();
     config.device_mass = 0;
     const double Z = presliding(6000);
-    const double held = -6000 * bristle(0, 300, Z);  // about -2570
-    for (int32_t push : {2000, 3000}) {
+    for (int32_t push : {2000, 3000, -2000}) {
         SCOPED_TRACE(push);
         reset(config);
         play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
@@ -213,13 +214,28 @@ TEST_F(Friction, StictionLetsGoWithThePushItHeld) {
         constant.axes[0] = Axis::x;
         constant.constant.magnitude = push;
         const EffectId pushing = play(constant);
-        tick_at(0);
+        EXPECT_NEAR(tick_at(0).force[0], 0.0, 1.0);
+        const double held = -6000 * bristle(push / 6000.0, 300, Z);  // dragged from z = push/f
         tick_at(300);
         for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], push + held, 1.0);
         ASSERT_TRUE(engine_->stop(pushing).ok());
-        const double expected = push + held < 0 ? push + held : 0.0;  // eased by the push, never turned
-        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], expected, 1.0) << k;
+        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], push + held, 1.0) << k;
     }
+}
+
+TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
+    // A push above f is not held (§3.5: the handle slides): at the first tick the friction
+    // adds nothing yet, and the push moves the handle into the bristle as before.
+    reset(joystick_config());
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    EffectParams constant;
+    constant.type = EffectType::constant;
+    constant.duration_us = kInfiniteUs;
+    constant.axis_count = 1;
+    constant.axes[0] = Axis::x;
+    constant.constant.magnitude = 7000;
+    play(constant);
+    EXPECT_NEAR(tick_at(0).force[0], 7000.0, 1.0);
 }
 
 }  // namespace
