@@ -105,7 +105,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
                 const bool slipping = z == 1.0f || z == -1.0f || held != bristle_force;
-                hold_with_others(bristle, held, slipping, state.others[i], pushed, pos, neg);
+                hold_with_others(bristle, bristle_force, held, slipping, state.others[i], pushed, pos, neg);
                 z = bristle.deflection;
             }
             state.others[i] = pushed;

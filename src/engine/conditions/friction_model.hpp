@@ -153,21 +153,29 @@ inline float set_bristle_force(Bristle& bristle, float hold, float pos_coefficie
 // not moved this tick (its sensed position is the bristle's anchor), so whatever holds it
 // holds it against the other effects' force, which went from `before` to `now` (this
 // friction's force units). Coulomb's static friction is whatever balances the push, within
-// ±f, so the bristle is set at once to hold `now` plus what else it held (a hand's push the
-// engine cannot see: what it held beyond `before`). The handle then never moves into the
-// bristle's presliding zone under an effect's push smaller than f (before: it deflected the
-// bristle by push/K, 30 to 409 sensor counts), and when the push eases or ends the bristle
-// holds less by as much at the same tick, so it never throws the handle back (the joystick,
-// friction 6000, a push of 3000 or 5000 held and released: 76 to 1403 units back with a
-// bristle alone). `held` is what the bristle applied (after its saturation); `slipping`
-// says it was at its limit (|z| = 1 or saturated), where the push may be larger than what
-// it held: then nothing else is assumed to push. Needs no mass: the engine knows its own
-// effects' forces (ConditionContext::others_force).
-inline void hold_with_others(Bristle& bristle, float held, bool slipping, float before, float now,
+// ±f, so a bristle within its zone (stuck) is set at once to hold `now` plus what else it
+// held (a hand's push, which the engine cannot see: what it held beyond `before`). The
+// handle then never moves into the bristle's presliding zone under an effect's push smaller
+// than f (before: it deflected the bristle by push/K, 30 to 409 sensor counts), and when the
+// push eases, ends or turns the bristle follows at the same tick, so it never throws the
+// handle back (the joystick, friction 6000, a push of 3000 or 5000 held and released: 76 to
+// 1403 units back with a bristle alone). A bristle at its limit (`slipping`: |z| = 1 or
+// saturated) may be sliding slowly, under a count a tick, with a hand on it: it only lets go
+// with an easing push, by as much and never past 0 (the previous pass's rule), so that a
+// sliding handle keeps its kinetic friction. A push larger than f is not held. `force` is
+// the bristle's force -c·z, `held` what it applied (after its saturation). Needs no mass:
+// the engine knows its own effects' forces (ConditionContext::others_force).
+inline void hold_with_others(Bristle& bristle, float force, float held, bool slipping, float before, float now,
                              float pos_coefficient, float neg_coefficient) noexcept {
     if (now == before) return;
-    const float unseen = slipping ? 0.0f : -held - before;
-    const float hold = -(now + unseen);
+    if (slipping) {
+        const float change = now - before;
+        if (!(force * change > 0)) return;  // the push grew: the bristle slides on as it was
+        const float ratio = (held - change) / force;
+        bristle.deflection *= ratio > 0 ? ratio : 0.0f;
+        return;
+    }
+    const float hold = -(now - held - before);
     // A push larger than f is not held: the handle slides into the bristle as it would
     // without this rule (taking it at once, z = ±1, was tried: the free wheel at 500 Hz, f =
     // 8000, shoved by 10000, then moves within the stop guard's velocity noise and its stop

@@ -67,7 +67,7 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
         if (at_rest && (state.others_known || first)) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
             if (bump > 0) {
-                hold_with_others(bristle, held, z == 1.0f || z == -1.0f, state.others[0], pushed, pos * bump,
+                hold_with_others(bristle, held, held, z == 1.0f || z == -1.0f, state.others[0], pushed, pos * bump,
                                  neg * bump);
             }
             z = bristle.deflection;
