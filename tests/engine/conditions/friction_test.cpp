@@ -223,6 +223,35 @@ TEST_F(Friction, StictionBalancesThePushItHolds) {
     }
 }
 
+TEST_F(Friction, ASlowlySlidingHandleKeepsItsKineticFriction) {
+    // §3.5: friction "always resists the direction of motion". A handle dragged toward +x
+    // under a count a tick (the sensed position repeats for 5 ticks, then moves a count)
+    // while a ramp pushes along +x with a growing force: on the ticks where the sensor shows
+    // no motion the stiction rule must not take the ramp's growth for a push to balance, so
+    // the friction stays -f throughout (the bristle is fully slid, z = 1).
+    EngineConfig config = joystick_config();
+    config.device_mass = 0;
+    reset(config);
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    tick_at(-5000);
+    tick_at(5000);  // slid 10000 units: z = 1 to the float
+    EffectParams ramp;
+    ramp.type = EffectType::ramp;
+    ramp.duration_us = 100'000;
+    ramp.axis_count = 1;
+    ramp.axes[0] = Axis::x;
+    ramp.ramp.start = 0;
+    ramp.ramp.end = 3000;
+    play(ramp);
+    const double count = config.sensor_step;
+    for (int k = 0; k < 80; ++k) {
+        const TickOutput out = tick_at(5000 + count * (k / 5));
+        // The ramp's level at this tick plus the friction's -6000.
+        const double ramp_level = 3000.0 * (static_cast<double>(k) * 1e-3) / 0.1;
+        ASSERT_NEAR(out.force[0], ramp_level - 6000, 31.0) << k;  // the ramp moves 30 a tick
+    }
+}
+
 TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
     // A push above f is not held (§3.5: the handle slides): at the first tick the friction
     // adds nothing yet, and the push moves the handle into the bristle as before.
