@@ -191,6 +191,16 @@ TEST_F(Friction, ThePresslidingDistanceFollowsTheTickAndTheDevice) {
     EXPECT_NEAR(tick_at(1000).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
 }
 
+// An effect of `type` on x alone, running for `duration_us`.
+EffectParams on_x(EffectType type, int64_t duration_us = kInfiniteUs) {
+    EffectParams p;
+    p.type = type;
+    p.duration_us = duration_us;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    return p;
+}
+
 TEST_F(Friction, StictionBalancesThePushItHolds) {
     // Coulomb's static friction is whatever balances the push on a handle at rest, within ±f
     // (§3.5: friction "always resists the direction of motion"; it does not move a handle
@@ -207,11 +217,7 @@ TEST_F(Friction, StictionBalancesThePushItHolds) {
         SCOPED_TRACE(push);
         reset(config);
         play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
-        EffectParams constant;
-        constant.type = EffectType::constant;
-        constant.duration_us = kInfiniteUs;
-        constant.axis_count = 1;
-        constant.axes[0] = Axis::x;
+        EffectParams constant = on_x(EffectType::constant);
         constant.constant.magnitude = push;
         const EffectId pushing = play(constant);
         EXPECT_NEAR(tick_at(0).force[0], 0.0, 1.0);
@@ -235,11 +241,7 @@ TEST_F(Friction, ASlowlySlidingHandleKeepsItsKineticFriction) {
     play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
     tick_at(-5000);
     tick_at(5000);  // slid 10000 units: z = 1 to the float
-    EffectParams ramp;
-    ramp.type = EffectType::ramp;
-    ramp.duration_us = 100'000;
-    ramp.axis_count = 1;
-    ramp.axes[0] = Axis::x;
+    EffectParams ramp = on_x(EffectType::ramp, 100'000);
     ramp.ramp.start = 0;
     ramp.ramp.end = 3000;
     play(ramp);
@@ -257,11 +259,7 @@ TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
     // adds nothing yet, and the push moves the handle into the bristle as before.
     reset(joystick_config());
     play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
-    EffectParams constant;
-    constant.type = EffectType::constant;
-    constant.duration_us = kInfiniteUs;
-    constant.axis_count = 1;
-    constant.axes[0] = Axis::x;
+    EffectParams constant = on_x(EffectType::constant);
     constant.constant.magnitude = 7000;
     play(constant);
     EXPECT_NEAR(tick_at(0).force[0], 7000.0, 1.0);
