@@ -11,9 +11,10 @@
 // around, the force passes through zero along the presliding spring. A free handle coming
 // to rest gets, at the last tick, only the force that stops it, and the bristle is then
 // anchored where it stopped (stop_guard.hpp): the bristle's stored force never throws it
-// back. And a handle held still by the other effects' push is let go with the push: when
-// they push less, the bristle at once holds less by as much (release_with_others below), so
-// it never throws the handle back either; this needs no mass. A negative
+// back. And a handle that the other effects push while it stands still is held by static
+// friction that balances their push at once, within ±f (hold_with_others below): it does
+// not move into the presliding zone, and when the push eases or ends the friction follows
+// it at the same tick, so it never throws the handle back either; this needs no mass. A negative
 // coefficient pushes the handle along its motion instead: an energy source, allowed
 // because the primer's range allows it.
 //
@@ -88,7 +89,10 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         }
         const float surface_speed =
             b.offset == 0 ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
-        const bool at_rest = bristle.primed && position == bristle.anchor && b.offset == 0;
+        // At its first tick the friction has held nothing yet (its state is zeroed at start):
+        // it takes the other effects' push at once from there.
+        const bool first = !bristle.primed;
+        const bool at_rest = (first || position == bristle.anchor) && b.offset == 0;
         float z = advance(bristle, position, surface_speed * dt_s, inverse_presliding);
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
         const float others = c.others_force != nullptr ? c.others_force[a] : c.applied_force != nullptr
@@ -96,11 +100,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
                                                                     : 0.0f;
         if (others_known) {
             const float pushed = others * inverse_gain;
-            if (at_rest && state.others_known && pos >= 0 && neg >= 0) {
+            if (at_rest && (state.others_known || first) && pos >= 0 && neg >= 0) {
                 const float bristle_force = -(z >= 0 ? pos : neg) * z;
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-                release_with_others(bristle, bristle_force, held, pushed - state.others[i]);
+                const bool slipping = z == 1.0f || z == -1.0f || held != bristle_force;
+                hold_with_others(bristle, bristle_force, held, slipping, state.others[i], pushed, pos, neg);
                 z = bristle.deflection;
             }
             state.others[i] = pushed;

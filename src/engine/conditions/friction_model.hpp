@@ -138,20 +138,50 @@ struct PreslidingRule {
     return z;
 }
 
-// Stiction lets go with the push it held (issue 16 §1). Called when the handle has not
-// moved this tick, so the bristle holds it against the other effects (and whatever else
-// pushes it). When the others push less against the bristle (their force changed by
-// `change`, in this friction's force units, with the sign of the bristle's force), the
-// bristle holds less by as much, at once: Coulomb's static friction is whatever balances
-// the push, while a Dahl bristle alone keeps its deflection and throws the handle back when
-// the push ends (the joystick, friction 6000, a push of 3000 or 5000 held and released: 7
-// to 123 units back with the stop guard, 76 to 1403 without it). `held` is what the bristle
-// applied (after its saturation), `force` its unsaturated -c·z. Needs no mass: the engine
-// knows its own effects' forces (ConditionContext::others_force).
-inline void release_with_others(Bristle& bristle, float force, float held, float change) noexcept {
-    if (!(force * change > 0)) return;  // the push grew: the bristle loads as usual
-    const float ratio = (held - change) / force;
-    bristle.deflection *= ratio > 0 ? ratio : 0.0f;
+// Sets the bristle to the deflection whose force is `hold` (force units; -c·z with c =
+// pos_coefficient for z >= 0, neg_coefficient for z < 0), z kept within ±1. Returns the
+// force it now applies. A zero coefficient on hold's side leaves the bristle relaxed.
+inline float set_bristle_force(Bristle& bristle, float hold, float pos_coefficient, float neg_coefficient) noexcept {
+    const float coefficient = hold <= 0 ? pos_coefficient : neg_coefficient;
+    float z = coefficient != 0 ? -hold / coefficient : 0.0f;
+    z = z > 1.0f ? 1.0f : (z < -1.0f ? -1.0f : z);
+    bristle.deflection = z;
+    return -(z >= 0 ? pos_coefficient : neg_coefficient) * z;
+}
+
+// Stiction balances the engine's own push at once (issue 16 §1). Called when the handle has
+// not moved this tick (its sensed position is the bristle's anchor), so whatever holds it
+// holds it against the other effects' force, which went from `before` to `now` (this
+// friction's force units). Coulomb's static friction is whatever balances the push, within
+// ±f, so a bristle within its zone (stuck) is set at once to hold `now` plus what else it
+// held (a hand's push, which the engine cannot see: what it held beyond `before`). The
+// handle then never moves into the bristle's presliding zone under an effect's push smaller
+// than f (before: it deflected the bristle by push/K, 30 to 409 sensor counts), and when the
+// push eases, ends or turns the bristle follows at the same tick, so it never throws the
+// handle back (the joystick, friction 6000, a push of 3000 or 5000 held and released: 76 to
+// 1403 units back with a bristle alone). A bristle at its limit (`slipping`: |z| = 1 or
+// saturated) may be sliding slowly, under a count a tick, with a hand on it: it only lets go
+// with an easing push, by as much and never past 0 (the previous pass's rule), so that a
+// sliding handle keeps its kinetic friction. A push larger than f is not held. `force` is
+// the bristle's force -c·z, `held` what it applied (after its saturation). Needs no mass:
+// the engine knows its own effects' forces (ConditionContext::others_force).
+inline void hold_with_others(Bristle& bristle, float force, float held, bool slipping, float before, float now,
+                             float pos_coefficient, float neg_coefficient) noexcept {
+    if (now == before) return;
+    if (slipping) {
+        const float change = now - before;
+        if (!(force * change > 0)) return;  // the push grew: the bristle slides on as it was
+        const float ratio = (held - change) / force;
+        bristle.deflection *= ratio > 0 ? ratio : 0.0f;
+        return;
+    }
+    const float hold = -(now - held - before);
+    // A push larger than f is not held: the handle slides into the bristle as it would
+    // without this rule (taking it at once, z = ±1, was tried: the free wheel at 500 Hz, f =
+    // 8000, shoved by 10000, then moves within the stop guard's velocity noise and its stop
+    // overshoots, 6 units back against a bound of 2.4).
+    if (hold > pos_coefficient || -hold > neg_coefficient) return;
+    (void)set_bristle_force(bristle, hold, pos_coefficient, neg_coefficient);
 }
 
 // The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force

@@ -7,15 +7,9 @@ namespace feel::detail {
 
 namespace {
 
-// Sets the bristle to the deflection whose force balances `others` (within ±1) and returns
-// that force.
+// Sets the bristle to hold against `others` (within ±1) and returns that force.
 float hold_against(Bristle& bristle, float others, float pos_coefficient, float neg_coefficient) noexcept {
-    const float hold = -others;
-    const float coefficient = hold <= 0 ? pos_coefficient : neg_coefficient;
-    float z = coefficient != 0 ? -hold / coefficient : 0.0f;
-    z = z > 1.0f ? 1.0f : (z < -1.0f ? -1.0f : z);
-    bristle.deflection = z;
-    return -(z >= 0 ? pos_coefficient : neg_coefficient) * z;
+    return set_bristle_force(bristle, -others, pos_coefficient, neg_coefficient);
 }
 
 }  // namespace
@@ -72,6 +66,12 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
         if (std::fabs(position - g.stop_at) < t.count) {
             // At rest: the bristle, anchored here, holds against the other effects (nothing
             // for a free handle).
+            return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+        }
+        if ((position - g.stop_at) * g.direction < 0) {
+            // It went back: the stop overshot (the observer's velocity within its noise of a
+            // slow handle). Friction may not push it on: anchor here, holding the others.
+            g.direction = -g.direction;
             return hold_against(bristle, others, pos_coefficient, neg_coefficient);
         }
         g.hold_off = t.hold_off;  // it went on: a push the observer has not learned yet

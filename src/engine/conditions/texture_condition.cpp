@@ -10,12 +10,13 @@
 //           while z < 0 (the bristle's microdamping scaled by the bump, friction_model.hpp)
 //   F     = F_s along the line (on each axis a, F_s·u_a)
 //
-// A texture is friction, so it lets go as friction does (issue 16 §1): a handle held still
-// on a bump by the other effects is let go with their push (release_with_others,
-// friction_model.hpp). The stop guard of friction (stop_guard.hpp) is not applied: its test
-// of a free handle (the force on it besides the engine's, learned by an observer with a
-// 3 ms lag) mistook a hand dragging the handle onto a bump's rising force for a free stop
-// (docs/conditions.md, "Limits").
+// A texture is friction, so it holds and lets go as friction does (issue 16 §1): a handle
+// that the other effects push while it stands on a bump is held with their push, within
+// the bump's roughness, and let go with it (hold_with_others, friction_model.hpp). The
+// stop guard of friction (stop_guard.hpp) is not applied: its test of a free handle (the
+// force on it besides the engine's, learned by an observer with a 3 ms lag) mistook a hand
+// dragging the handle onto a bump's rising force for a free stop (docs/conditions.md,
+// "Limits").
 //
 // The primer calls a texture "a spatially varying resistance" (§3.1) whose intensity can
 // differ with the direction of travel (§3.6): here every bump is a patch of friction of
@@ -53,7 +54,8 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const float roughness = pos > neg ? pos : neg;
     const float presliding = static_cast<float>(presliding_distance(*c.config, c.dt_s, roughness));
     Bristle& bristle = state.bristle[0];
-    const bool at_rest = bristle.primed && s == bristle.anchor;
+    const bool first = !bristle.primed;  // nothing held yet: take the others' push from here
+    const bool at_rest = first || s == bristle.anchor;
     float z = advance(bristle, s, 0.0f, presliding > 0 ? 1.0f / presliding : 0.0f);
     const float width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
     const float bump = static_cast<float>(texture_bump(s, t.spacing, width));
@@ -62,9 +64,12 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const bool others_known = c.others_force != nullptr && output_gain != 0;
     const float pushed = others_known ? along(u, c.others_force) / output_gain : 0.0f;
     if (others_known) {
-        if (at_rest && state.others_known) {
+        if (at_rest && (state.others_known || first)) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
-            release_with_others(bristle, held, held, pushed - state.others[0]);
+            if (bump > 0) {
+                hold_with_others(bristle, held, held, z == 1.0f || z == -1.0f, state.others[0], pushed, pos * bump,
+                                 neg * bump);
+            }
             z = bristle.deflection;
         }
         state.others[0] = pushed;

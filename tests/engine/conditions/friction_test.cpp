@@ -191,35 +191,78 @@ TEST_F(Friction, ThePresslidingDistanceFollowsTheTickAndTheDevice) {
     EXPECT_NEAR(tick_at(1000).force[0], -5000 * (1 - std::exp(-1.0)), 1.0);
 }
 
-TEST_F(Friction, StictionLetsGoWithThePushItHeld) {
-    // Coulomb's static friction is whatever balances the push on a handle at rest, no more
-    // (§3.5: friction only resists motion). The handle is dragged 300 units into the bristle
-    // and held there while a constant effect pushes it; when the push ends, the friction's
-    // force changes by exactly the push at that very tick, and if that would turn it
-    // around it lets go to 0 instead. (device_mass 0: the stop guard is off, this needs no
+// An effect of `type` on x alone, running for `duration_us`.
+EffectParams on_x(EffectType type, int64_t duration_us = kInfiniteUs) {
+    EffectParams p;
+    p.type = type;
+    p.duration_us = duration_us;
+    p.axis_count = 1;
+    p.axes[0] = Axis::x;
+    return p;
+}
+
+TEST_F(Friction, StictionBalancesThePushItHolds) {
+    // Coulomb's static friction is whatever balances the push on a handle at rest, within ±f
+    // (§3.5: friction "always resists the direction of motion"; it does not move a handle
+    // that nothing moves). At the first tick the handle has not moved, so the friction holds
+    // the constant push at once: the engine's total force is 0. A hand then drags the handle
+    // 300 units into the bristle and holds it; when the push ends, the friction's force
+    // changes by exactly the push at that very tick, so the hand feels no step (the friction
+    // holds the hand's share alone). (device_mass 0: the stop guard is off, this needs no
     // mass.)
     EngineConfig config = joystick_config();
     config.device_mass = 0;
     const double Z = presliding(6000);
-    const double held = -6000 * bristle(0, 300, Z);  // about -2570
-    for (int32_t push : {2000, 3000}) {
+    for (int32_t push : {2000, 3000, -2000}) {
         SCOPED_TRACE(push);
         reset(config);
         play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
-        EffectParams constant;
-        constant.type = EffectType::constant;
-        constant.duration_us = kInfiniteUs;
-        constant.axis_count = 1;
-        constant.axes[0] = Axis::x;
+        EffectParams constant = on_x(EffectType::constant);
         constant.constant.magnitude = push;
         const EffectId pushing = play(constant);
-        tick_at(0);
+        EXPECT_NEAR(tick_at(0).force[0], 0.0, 1.0);
+        const double held = -6000 * bristle(push / 6000.0, 300, Z);  // dragged from z = push/f
         tick_at(300);
         for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], push + held, 1.0);
         ASSERT_TRUE(engine_->stop(pushing).ok());
-        const double expected = push + held < 0 ? push + held : 0.0;  // eased by the push, never turned
-        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], expected, 1.0) << k;
+        for (int k = 0; k < 5; ++k) EXPECT_NEAR(tick_at(300).force[0], push + held, 1.0) << k;
     }
+}
+
+TEST_F(Friction, ASlowlySlidingHandleKeepsItsKineticFriction) {
+    // §3.5: friction "always resists the direction of motion". A handle dragged toward +x
+    // under a count a tick (the sensed position repeats for 5 ticks, then moves a count)
+    // while a ramp pushes along +x with a growing force: on the ticks where the sensor shows
+    // no motion the stiction rule must not take the ramp's growth for a push to balance, so
+    // the friction stays -f throughout (the bristle is fully slid, z = 1).
+    EngineConfig config = joystick_config();
+    config.device_mass = 0;
+    reset(config);
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    tick_at(-5000);
+    tick_at(5000);  // slid 10000 units: z = 1 to the float
+    EffectParams ramp = on_x(EffectType::ramp, 100'000);
+    ramp.ramp.start = 0;
+    ramp.ramp.end = 3000;
+    play(ramp);
+    const double count = config.sensor_step;
+    for (int k = 0; k < 80; ++k) {
+        const TickOutput out = tick_at(5000 + count * (k / 5));
+        // The ramp's level at this tick plus the friction's -6000.
+        const double ramp_level = 3000.0 * (static_cast<double>(k) * 1e-3) / 0.1;
+        ASSERT_NEAR(out.force[0], ramp_level - 6000, 31.0) << k;  // the ramp moves 30 a tick
+    }
+}
+
+TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
+    // A push above f is not held (§3.5: the handle slides): at the first tick the friction
+    // adds nothing yet, and the push moves the handle into the bristle as before.
+    reset(joystick_config());
+    play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    EffectParams constant = on_x(EffectType::constant);
+    constant.constant.magnitude = 7000;
+    play(constant);
+    EXPECT_NEAR(tick_at(0).force[0], 7000.0, 1.0);
 }
 
 }  // namespace
