@@ -34,6 +34,14 @@ namespace {
 using detail::ClockPhase;
 using detail::Slot;
 
+// A periodic or sweep wave (sine .. sweep_saw_down, contiguous in EffectType): a vibration
+// meant to be felt, which friction's stiction lets through (the tick's `vibration`).
+constexpr bool oscillates(EffectType t) noexcept {
+    return t >= EffectType::sine && t <= EffectType::sweep_saw_down;
+}
+static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_sine) &&
+              !oscillates(EffectType::force_profile) && !oscillates(EffectType::smart_pop));
+
 }  // namespace
 
 Error detail::check_engine_config(const EngineConfig& c) noexcept {
@@ -230,6 +238,11 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // Single precision (issue 14): forces are within ±10000 per effect and a sum of a few
     // hundred effects keeps float's 7 digits far beyond a unit.
     float sum[kMaxAxes] = {};
+    // What the periodic and sweep waves add to sum: a vibration, not a push. Friction's
+    // stiction balances the others' push (friction_model.hpp, hold_with_others) but not
+    // this part, so a rumble played with a friction is felt by a hand holding the handle
+    // still (docs/conditions.md, "Stiction balances the engine's push").
+    float vibration[kMaxAxes] = {};
     int32_t playing = 0;
     if (m.paused) {
         // Pause freezes every effect's clock (§2.2 device control): each running effect's
@@ -289,6 +302,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          clock.tau_us, s.waveform, axes};
             const float value = detail::scalar_wave_value(wave);
             for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            if (oscillates(s.params.type))
+                for (int a = 0; a < axes; ++a) vibration[a] += value * s.direction_gain[a];
             continue;
         }
         float force[kMaxAxes] = {};
@@ -326,6 +341,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             detail::render_wave(wave, force);
+            if (oscillates(s.params.type))
+                for (int a = 0; a < axes; ++a) vibration[a] += force[a] * s.gain_factor;
         }
         if (axes == 2) {  // the common device, unrolled
             sum[0] += force[0] * s.gain_factor;
@@ -340,7 +357,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         // Friction and texture, once the others' force of this tick is known: each sees the
         // sum of everything rendered before it, at the motors' scale.
         float others[kMaxAxes] = {};
-        for (int a = 0; a < axes; ++a) others[a] = sum[a] * device_gain;
+        for (int a = 0; a < axes; ++a) others[a] = (sum[a] - vibration[a]) * device_gain;
         condition.others_force = others;
         for (int32_t k = 0; k < last_count; ++k) {
             Slot& s = m.slots[m.last_slots[k].index];

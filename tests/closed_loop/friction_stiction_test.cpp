@@ -8,6 +8,7 @@
 // there be no creep under a constant push smaller than f and no chatter at rest. These
 // tests measure the handle's true position (the simulated device's, not the sensor's), so
 // the zone is judged in physical travel: it must stay within one sensor count.
+#include <algorithm>
 #include <cstdio>
 #include <numbers>
 
@@ -65,24 +66,27 @@ TEST(FrictionStiction, AConstantPushSmallerThanTheFrictionDoesNotMoveTheHandle) 
     }
 }
 
-TEST(FrictionStiction, AVaryingPushSmallerThanTheFrictionDoesNotWalkTheHandle) {
-    // A sine push of 3000 at 2 Hz against f = 6000 for 3 s. Coulomb's stiction follows the
-    // push both ways, so the handle stays within a sensor count of where it started: no
-    // ratchet, no drift (before: the handle rocked through the bristle's zone, ±300 units on
-    // the joystick, and walked by up to 21 units on the wheel and the 3-axis device).
+TEST(FrictionStiction, AVibrationIsFeltThroughTheFrictionByAHandHoldingStill) {
+    // Forces add (§3: the effects' forces are summed); friction "always resists the
+    // direction of motion" (§3.5), and a handle held still has none. So a sine of 3000 at
+    // 20 Hz (a rumble) played with a friction of 6000 reaches the hand in full: stiction
+    // balances the engine's push, not its vibrations (the periodic and sweep waves), or a
+    // strong friction would silence every rumble while the hand holds the handle.
+    // Tolerance: the stiff grip yields a few counts under 3000, and the bristle answers
+    // each count with at most 200 units (docs/stability.md): 20 % of the wave.
     for (const char* profile_name : {"joystick", "wheel", "3axis"}) {
-        const double count = count_of(profile_name);
         for (double rate : {500.0, 1000.0, 10000.0}) {
-            for (bool mass_known : {true, false}) {
-                SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz" +
-                             (mass_known ? "" : " mass unknown"));
-                const auto rows = run_loop(profile_name, sim::Grip::none, "hold:0",
-                                           {friction_on({Axis::x}, 6000), sine_push_on_x(3000, 500'000)}, 3.0, rate,
-                                           0, mass_known);
-                EXPECT_LE(largest_travel(rows), count);
-                // The engine's total force is the push less what holds it: nothing left.
-                for (const LoopRow& row : rows) ASSERT_LE(std::fabs(row.force[0]), 1.0) << row.t_s;
+            SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz");
+            const auto rows = run_loop(profile_name, sim::Grip::stiff, "hold:0",
+                                       {friction_on({Axis::x}, 6000), sine_push_on_x(3000, 50'000)}, 1.0, rate, 0,
+                                       true);
+            double highest = 0, lowest = 0;
+            for (const LoopRow& row : rows) {
+                highest = std::max(highest, double(row.force[0]));
+                lowest = std::min(lowest, double(row.force[0]));
             }
+            EXPECT_GE(highest, 0.8 * 3000);
+            EXPECT_LE(lowest, -0.8 * 3000);
         }
     }
 }
