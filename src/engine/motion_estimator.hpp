@@ -98,8 +98,9 @@ private:
         int rung_n[kRungs] = {};     // their lengths, ascending
         int rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
         float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
-        float u[kHistory] = {};      // u_i = -age_i / kMaxWindowUs, in [-1, 0]
-        float u2[kHistory] = {};     // u_i²
+        // u_i = -age_i / kMaxWindowUs, in [-1, 0]. The fits square it where they need u_i²
+        // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
+        float u[kHistory] = {};
         int64_t steady_interval_us = 0;  // every interval was this (0: not a steady pattern)
     };
 
