@@ -91,13 +91,7 @@ namespace {
 
 static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
 constexpr int kMask = MotionEstimator::kHistory - 1;
-// The first kLadder index whose window's sums are kept.
-constexpr int first_summed() {
-    int k = 0;
-    while (MotionEstimator::kLadder[k] < MotionEstimator::kMinSummedWindow) ++k;
-    return k;
-}
-constexpr int kFirstSummed = first_summed();
+constexpr int kFirstSummed = MotionEstimator::kFirstSummed;
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
@@ -389,7 +383,7 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         const int64_t still = fixed[(head_ + 2) & kMask];
         for (int k = kFirstSummed; k < kLadderSize; ++k) {
             const int64_t n = kLadder[k];
-            int64_t* s = sums_[axis].s[k];
+            int64_t* s = sums_[axis].at(k);
             s[0] = n * still;
             s[1] = n * (n - 1) / 2 * still;
             s[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
@@ -400,7 +394,7 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         const int64_t n = kLadder[k];
         // Before the ring holds n + 1 frozen samples nothing leaves.
         const int64_t out = n + 1 <= count_ - 1 ? fixed[(head_ + kLadder[k] + 1) & kMask] : 0;
-        int64_t* s = sums_[axis].s[k];
+        int64_t* s = sums_[axis].at(k);
         const int64_t s0 = s[0], s1 = s[1];
         s[0] = s0 + in - out;
         s[1] = s1 + s0 - n * out;
@@ -416,7 +410,7 @@ void MotionEstimator::ladder_sums(int axis, int k, int64_t sums[3]) const noexce
         sums[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
         return;
     }
-    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].s[k][p];
+    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].at(k)[p];
 }
 
 // The running sums of an axis from the ring, for an axis that was not kept up to date.
@@ -429,7 +423,7 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
         ++fixed_run_[axis];
     }
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
-        int64_t* s = sums_[axis].s[k];
+        int64_t* s = sums_[axis].at(k);
         s[0] = s[1] = s[2] = 0;
         for (int i = 1; i <= kLadder[k] && i < count_; ++i) {
             const int64_t value = fixed_[axis][(head_ + i) & kMask];
