@@ -28,4 +28,5 @@ paste <(cut -f1,3 "$list.raw") "$list.names" >"$list"
 rm -f "$list.raw" "$list.names"
 total=$(awk -F'\t' '{ n += $2 } END { print n + 0 }' "$list")
 echo "double precision in the engine: $(wc -l <"$list") functions call soft-float double or libm double routines $total times, by source file (the functions: $list):"
-awk -F'\t' '{ n[$1] += 1; c[$1] += $2 } END { for (f in n) printf "  %-26s %3d functions %4d calls\n", f, n[f], c[f] }' "$list" | sort -k4,4nr
+awk -F'\t' '{ n[$1] += 1; c[$1] += $2 }
+    END { for (f in n) printf "  %-26s %4d calls in %d function%s\n", f, c[f], n[f], n[f] == 1 ? "" : "s" }' "$list" | sort -k2,2nr
