@@ -1,7 +1,9 @@
 # Flash bytes of a linked image by where they come from, read from its GNU ld map file:
 # every input section placed in an output section that lives in flash (code, constants,
 # vectors, the initial values of .data), summed by the archive it came from.
-#   engine   libfeel_engine_m4.a: the engine's code and constants
+#   engine   libfeel_engine_m4.a: the engine's code and constants; since the engine is
+#            optimised at link time, the link's ltrans partitions (only the engine's
+#            objects are LTO objects: firmware/CMakeLists.txt)
 #   libgcc   soft-float double routines and 64-bit division the engine's code calls
 #   libm     the math library (exp, sin, cos, fmod, ...)
 #   runtime  newlib, libstdc++ and the semihosting syscalls: printf, malloc, exit
@@ -24,7 +26,7 @@ flash {
     # An input section: [name] 0xADDRESS 0xSIZE FILE (the name may be on the line before).
     if (n >= 4 && f[n - 2] ~ /^0x/ && f[n - 1] ~ /^0x/ && f[n] !~ /^0x/) {
         file = f[n]
-        if (file ~ /libfeel_engine_m4\.a/) k = "engine"
+        if (file ~ /libfeel_engine_m4\.a|\.ltrans[0-9]*\.ltrans\.o$/) k = "engine"
         else if (file ~ /libgcc\.a/) k = "libgcc"
         else if (file ~ /libm\.a/) k = "libm"
         else if (file ~ /\/lib[^\/]*\.a\(|crt[^\/]*\.o$/) k = "runtime"

@@ -75,11 +75,12 @@ int main() {
                 "constants, clock and commands %u)\n",
                 slots, kSlotBudget, slot, slot_params, slot_memory, slot - slot_params - slot_memory);
     std::printf("  sample memory    %6u  goal %5u  (1024 force-profile samples)\n", samples, kSampleBudget);
-    std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes)\n", estimator,
-                kEstimatorBudget, kMaxAxes);
+    std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes: %d samples of time, "
+                "position and its fixed-point copy; the fits' time pattern and running sums)\n",
+                estimator, kEstimatorBudget, kMaxAxes, detail::MotionEstimator::kHistory);
     std::printf("  reports          %6u  goal %5u  (16 dynamic reports of %u)\n", reports, kReportBudget,
                 static_cast<unsigned>(sizeof(DynamicReport)));
-    std::printf("  engine, rest     %6u  goal %5u  (configuration, pool accounting, sample index)\n", rest,
+    std::printf("  engine, rest     %6u  goal %5u  (the engine's own fields, friction's and texture's render-last list, the sample memory's index)\n", rest,
                 kRestBudget);
     std::printf("  total            %6u  goal %5u  (all allocated once, by the constructor)\n", heap, 16384u);
     std::printf("  stack in a tick  %6u              (deepest, measured)\n", stack);

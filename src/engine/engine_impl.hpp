@@ -27,6 +27,10 @@ struct Slot {
     float gain_factor = 0.0f;         // params.gain / kFullScale
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
     bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
+    // Two flags of the clock and the commands below, kept here where they fill the padding
+    // after the flags above (16 bytes a slot less: issue 14's RAM).
+    bool began_playing = false;            // start_position is set
+    PlayEnd last_end = PlayEnd::none;      // how the last play ended
     float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
     detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
@@ -36,7 +40,6 @@ struct Slot {
     EffectState state = EffectState::free;
     uint16_t generation = 0;
     int64_t start_t_us = 0;
-    bool began_playing = false;            // start_position is set
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
     // The effect's memory between ticks: a condition's (bristles, contact ledger) or a
     // dynamic's (its simulated mass), never both, so they share the bytes. Which one is
@@ -52,7 +55,6 @@ struct Slot {
     int32_t completed_iterations = 0;      // of the current or last play, set by the tick
     int64_t elapsed_us = 0;                // effect time of the current or last play, set by the tick
     uint32_t starts = 0;                   // times started since created
-    PlayEnd last_end = PlayEnd::none;      // how the last play ended
     int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
 
     // Starts the memory of the slot's class afresh (cls must be set: prepare_slot). Both

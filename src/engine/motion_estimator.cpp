@@ -91,13 +91,7 @@ namespace {
 
 static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
 constexpr int kMask = MotionEstimator::kHistory - 1;
-// The first kLadder index whose window's sums are kept.
-constexpr int first_summed() {
-    int k = 0;
-    while (MotionEstimator::kLadder[k] < MotionEstimator::kMinSummedWindow) ++k;
-    return k;
-}
-constexpr int kFirstSummed = first_summed();
+constexpr int kFirstSummed = MotionEstimator::kFirstSummed;
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
@@ -105,20 +99,20 @@ constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1
 // Sums of y, u·y and (for a parabola) u²·y over samples begin..end-1, added to sum[0..2].
 // Four partial sums in a fixed order: vectorizable and the same on every platform.
 template <bool kParabola>
-void add_moments(const float* y, const float* u, const float* u2, int begin, int end, float sum[3]) noexcept {
+void add_moments(const float* y, const float* u, int begin, int end, float sum[3]) noexcept {
     float a0[4] = {}, a1[4] = {}, a2[4] = {};
     int i = begin;
     for (; i + 4 <= end; i += 4) {
         for (int j = 0; j < 4; ++j) {
             a0[j] += y[i + j];
             a1[j] += u[i + j] * y[i + j];
-            if (kParabola) a2[j] += u2[i + j] * y[i + j];
+            if (kParabola) a2[j] += (u[i + j] * u[i + j]) * y[i + j];
         }
     }
     for (int j = 0; i < end; ++i, ++j) {
         a0[j] += y[i];
         a1[j] += u[i] * y[i];
-        if (kParabola) a2[j] += u2[i] * y[i];
+        if (kParabola) a2[j] += (u[i] * u[i]) * y[i];
     }
     sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
     sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
@@ -130,10 +124,10 @@ void add_moments(const float* y, const float* u, const float* u2, int begin, int
 // so those three samples are tried first; then the whole window in one pass without
 // branches (vector code).
 template <bool kParabola>
-bool within_band(const float* y, const float* u, const float* u2, int n, float c0, float c1, float c2,
+bool within_band(const float* y, const float* u, int n, float c0, float c1, float c2,
                  float band) noexcept {
     auto outside = [=](int i) {
-        const float fit = kParabola ? c0 + c1 * u[i] + c2 * u2[i] : c0 + c1 * u[i];
+        const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
         return static_cast<int>(std::fabs(y[i] - fit) > band);
     };
     if (outside(0) | outside(n) | outside(n / 2)) return false;
@@ -147,7 +141,6 @@ bool within_band(const float* y, const float* u, const float* u2, int n, float c
 struct AxisWindow {
     const float* y;
     const float* u;
-    const float* u2;
     const float (*time)[MotionEstimator::kRungs];  // time[p][r] = Σ u^p
     const float* sum[3];                            // sum[p][r] = Σ u^p·y
 };
@@ -161,7 +154,7 @@ bool fit_line(const AxisWindow& w, int r, int n, float band, float& slope) noexc
     if (!(det > 0)) return false;
     const float c1 = (s0 * r1 - s1 * r0) / det;
     const float c0 = (r0 - c1 * s1) / s0;
-    if (!within_band<false>(w.y, w.u, w.u2, n, c0, c1, 0.0f, band)) return false;
+    if (!within_band<false>(w.y, w.u, n, c0, c1, 0.0f, band)) return false;
     slope = c1 / kWindowS;
     return true;
 }
@@ -183,7 +176,7 @@ bool fit_parabola(const AxisWindow& w, int r, int n, float band, float& curvatur
     if (band < std::numeric_limits<float>::infinity()) {
         const float c0 = det3(r0, s1, s2, r1, s2, s3, r2, s3, s4) / det;
         const float c1 = det3(s0, r0, s2, s1, r1, s3, s2, r2, s4) / det;
-        if (!within_band<true>(w.y, w.u, w.u2, n, c0, c1, c2, band)) return false;
+        if (!within_band<true>(w.y, w.u, n, c0, c1, c2, band)) return false;
     }
     curvature = 2.0f * c2 / (kWindowS * kWindowS);
     return true;
@@ -218,11 +211,11 @@ int adaptive_window(const AxisWindow& w, const int* rung_n, int rung_count, int 
 constexpr int kDenseSamples = 8;
 
 template <bool kParabola>
-bool sampled_within_band(const float* x, int head, float x0, const float* u, const float* u2, int n, float c0,
+bool sampled_within_band(const float* x, int head, float x0, const float* u, int n, float c0,
                          float c1, float c2, float band) noexcept {
     auto outside = [=](int i) {
         const float y = x[(head + i) & kMask] - x0;
-        const float fit = kParabola ? c0 + c1 * u[i] + c2 * u2[i] : c0 + c1 * u[i];
+        const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
         return std::fabs(y - fit) > band;
     };
     const int dense = n < kDenseSamples ? n : kDenseSamples;
@@ -390,7 +383,7 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         const int64_t still = fixed[(head_ + 2) & kMask];
         for (int k = kFirstSummed; k < kLadderSize; ++k) {
             const int64_t n = kLadder[k];
-            int64_t* s = sums_[axis].s[k];
+            int64_t* s = sums_[axis].at(k);
             s[0] = n * still;
             s[1] = n * (n - 1) / 2 * still;
             s[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
@@ -401,7 +394,7 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         const int64_t n = kLadder[k];
         // Before the ring holds n + 1 frozen samples nothing leaves.
         const int64_t out = n + 1 <= count_ - 1 ? fixed[(head_ + kLadder[k] + 1) & kMask] : 0;
-        int64_t* s = sums_[axis].s[k];
+        int64_t* s = sums_[axis].at(k);
         const int64_t s0 = s[0], s1 = s[1];
         s[0] = s0 + in - out;
         s[1] = s1 + s0 - n * out;
@@ -417,7 +410,7 @@ void MotionEstimator::ladder_sums(int axis, int k, int64_t sums[3]) const noexce
         sums[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
         return;
     }
-    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].s[k][p];
+    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].at(k)[p];
 }
 
 // The running sums of an axis from the ring, for an axis that was not kept up to date.
@@ -430,7 +423,7 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
         ++fixed_run_[axis];
     }
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
-        int64_t* s = sums_[axis].s[k];
+        int64_t* s = sums_[axis].at(k);
         s[0] = s[1] = s[2] = 0;
         for (int i = 1; i <= kLadder[k] && i < count_; ++i) {
             const int64_t value = fixed_[axis][(head_ + i) & kMask];
@@ -516,7 +509,7 @@ void MotionEstimator::fast_velocity(int axis) noexcept {
         if (!(det > 0)) continue;
         const float c1 = (s0 * sums[1] - s1 * sums[0]) / det;
         const float c0 = (sums[0] - c1 * s1) / s0;
-        if (!sampled_within_band<false>(x, head_, x0, p.u, p.u2, n, c0, c1, 0.0f, band_)) continue;
+        if (!sampled_within_band<false>(x, head_, x0, p.u, n, c0, c1, 0.0f, band_)) continue;
         const float v = c1 / kWindowS;
         velocity_rung_[axis] = r;
         velocity_window_[axis] = n;
@@ -551,7 +544,7 @@ void MotionEstimator::fast_acceleration(int axis) noexcept {
         const float c2 = det3(s0, s1, sums[0], s1, s2, sums[1], s2, s3, sums[2]) / det;
         const float c0 = det3(sums[0], s1, s2, sums[1], s2, s3, sums[2], s3, s4) / det;
         const float c1 = det3(s0, sums[0], s2, s1, sums[1], s3, s2, sums[2], s4) / det;
-        if (!last && !sampled_within_band<true>(x, head_, x0, p.u, p.u2, n, c0, c1, c2, band_)) continue;
+        if (!last && !sampled_within_band<true>(x, head_, x0, p.u, n, c0, c1, c2, band_)) continue;
         const float a = 2.0f * c2 / (kWindowS * kWindowS);
         acceleration_rung_[axis] = r;
         acceleration_window_[axis] = n;
@@ -575,7 +568,6 @@ void MotionEstimator::refresh_time_pattern() noexcept {
         const int64_t age_us = t_us_[head_] - t_us_[(head_ + i) & kMask];
         if (i > 1 && age_us > kMaxWindowUs) break;  // the newest two samples are always usable
         p.u[i] = -static_cast<float>(age_us) * kUnitsPerUs;
-        p.u2[i] = p.u[i] * p.u[i];
         max_n = i;
     }
     p.max_n = max_n;
@@ -593,7 +585,7 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     int i = 0;
     for (int r = 0; r < p.rung_count; ++r) {
         for (; i <= p.rung_n[r]; ++i) {
-            const float u = p.u[i], u2 = p.u2[i];
+            const float u = p.u[i], u2 = u * u;
             sum[0] += 1.0f;
             sum[1] += u;
             sum[2] += u2;
@@ -628,12 +620,12 @@ bool MotionEstimator::gather_axis(int axis, bool parabola, float* y, float (*sum
             for (int i = begin; i < end; ++i) {
                 running[0] += y[i];
                 running[1] += p.u[i] * y[i];
-                if (parabola) running[2] += p.u2[i] * y[i];
+                if (parabola) running[2] += (p.u[i] * p.u[i]) * y[i];
             }
         } else if (parabola) {
-            add_moments<true>(y, p.u, p.u2, begin, end, running);
+            add_moments<true>(y, p.u, begin, end, running);
         } else {
-            add_moments<false>(y, p.u, p.u2, begin, end, running);
+            add_moments<false>(y, p.u, begin, end, running);
         }
         begin = end;
         for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
@@ -672,7 +664,7 @@ void MotionEstimator::estimate_axis(int axis, bool with_acceleration) noexcept {
         if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
         return;
     }
-    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
+    const AxisWindow w{y, p.u, p.moment, {sums[0], sums[1], sums[2]}};
     float v = 0;
     const int nv = adaptive_window(w, p.rung_n, p.rung_count, 1, band_, fit_line, v);
     velocity_window_[axis] = nv;
@@ -710,7 +702,7 @@ void MotionEstimator::fit_acceleration(int axis, const float* y, const float (*s
     // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Until the history holds
     // that many samples, it reads 0.
     if (p.max_n < kMinAccelerationWindow) return;
-    const AxisWindow w{y, p.u, p.u2, p.moment, {sums[0], sums[1], sums[2]}};
+    const AxisWindow w{y, p.u, p.moment, {sums[0], sums[1], sums[2]}};
     float a = 0;
     int na = adaptive_window(w, p.rung_n, p.rung_count, kMinAccelerationWindow, band_, fit_parabola, a);
     // Where no longer window fits, the shortest one is used anyway: its estimate is the

@@ -60,6 +60,12 @@ public:
     // Running sums are kept for the ladder's windows of this many intervals or more;
     // shorter ones are summed from the ring when a fit needs them.
     static constexpr int kMinSummedWindow = 8;
+    // The first kLadder index whose window's sums are kept.
+    static constexpr int kFirstSummed = [] {
+        int k = 0;
+        while (kLadder[k] < kMinSummedWindow) ++k;
+        return k;
+    }();
 
     // sensor_step: the position change of one sensor count, normalized units (> 0). The
     // fit tolerance is one count: a sample one count off a line is quantization, two
@@ -98,16 +104,20 @@ private:
         int rung_n[kRungs] = {};     // their lengths, ascending
         int rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
         float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
-        float u[kHistory] = {};      // u_i = -age_i / kMaxWindowUs, in [-1, 0]
-        float u2[kHistory] = {};     // u_i²
+        // u_i = -age_i / kMaxWindowUs, in [-1, 0]. The fits square it where they need u_i²
+        // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
+        float u[kHistory] = {};
         int64_t steady_interval_us = 0;  // every interval was this (0: not a steady pattern)
     };
 
     // Running sums of the frozen samples (all but the newest, which a later sample of the
     // same instant may replace) over the ladder's window lengths, in 1/fixed_scale_ units:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
+    // Only the windows of kFirstSummed up are kept (issue 14's RAM: 120 bytes an axis).
     struct RungSums {
-        int64_t s[kLadderSize][3] = {};
+        int64_t s[kLadderSize - kFirstSummed][3] = {};
+        int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
+        const int64_t* at(int k) const noexcept { return s[k - kFirstSummed]; }
     };
     // Σ X, Σ m·X, Σ m²·X of ladder window k (kLadder[k] >= kMinSummedWindow).
     void ladder_sums(int axis, int k, int64_t sums[3]) const noexcept;

@@ -64,7 +64,7 @@ void ball_tick(const Model& model, const DynamicContext& c, double force[kMaxAxe
     const bool fresh = !c.state->initialized || !(c.dt_s > 0);  // no line through two positions yet
     const double step = std::min(c.dt_s, kBallMaxAdvanceS);     // how far the ball advances
     if (!c.state->initialized) {
-        ball = BallState{};
+        c.state->ball = BallState{};  // the union member (DynamicState) begins here
         model.start(ball.now, c);
         c.state->initialized = true;
     } else if (c.dt_s > 0) {

@@ -20,12 +20,19 @@
 namespace feel::detail {
 
 struct DynamicState {
+    DynamicState() noexcept : law{} {}  // the union's first member live; every other field as declared
+
     bool initialized = false;  // the first playing tick sets up the mass
     // The slot's parameters are worked into its per-tick form (ControlLawState::laws);
     // prepare_slot clears it after every command that sets them.
     bool prepared = false;
-    ControlLawState law{};     // control-law dynamics (recoil ... center drift, control law)
-    BallState ball{};          // sling and paddle
+    // The simulated mass: a control law's or a ball's, never both (the type of a slot's
+    // effect never changes), so they share the bytes (issue 14: RAM). The control law's is
+    // live from construction; ball_tick assigns the ball's whole on a ball's first tick.
+    union {
+        ControlLawState law;    // control-law dynamics (recoil ... center drift, control law)
+        BallState ball;         // sling and paddle
+    };
 };
 
 struct DynamicContext {
