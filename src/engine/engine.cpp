@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "conditions/condition.hpp"
+#include "conditions/contact_surface.hpp"
 #include "direction.hpp"
 #include "dynamics/dynamic.hpp"
 #include "effect_clock.hpp"
@@ -80,6 +81,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
     s.dynamic.prepared = false;
+    detail::element_direction(s.params, s.direction);  // walls and barriers: u across the surface
 }
 
 namespace {
