@@ -290,7 +290,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             const float value = detail::scalar_wave_value(wave);
-            for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            if (axes == 2) {  // the common device, unrolled
+                sum[0] += value * s.direction_gain[0];
+                sum[1] += value * s.direction_gain[1];
+            } else {
+                for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            }
             continue;
         }
         float force[kMaxAxes] = {};

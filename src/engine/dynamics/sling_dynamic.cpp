@@ -129,6 +129,19 @@ struct Sling {
             r[i] = q[i] - handle.from[a];
             relative[i] = v[i] - handle.velocity[a];
         }
+        // A ball at rest on a slack string beside a still handle stays exactly where it is
+        // (every Verlet step maps it to itself): no steps, no impulse.
+        bool idle = true;
+        for (int i = 0; i < count; ++i) idle = idle && v[i] == 0 && handle.velocity[axes[i]] == 0;
+        if (idle) {
+            double acc[kMaxAxes] = {};
+            acceleration(r, acc);
+            for (int i = 0; i < count; ++i) idle = idle && acc[i] == 0;
+            if (idle) {
+                for (int i = 0; i < count; ++i) impulse[axes[i]] = 0;
+                return;
+            }
+        }
         const double rate = std::max(std::sqrt(stiffness / mass), turning_rate(r, relative));
         const int steps = static_cast<int>(
             std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
