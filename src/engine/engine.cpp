@@ -308,7 +308,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             detail::DynamicResult result;
             double dynamic_force[kMaxAxes] = {};
             detail::render_dynamic(dynamic, dynamic_force, result);
-            for (int a = 0; a < kMaxAxes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
+            for (int a = 0; a < axes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;

@@ -61,7 +61,7 @@
 //
 // Single precision with an exact ledger (issue 14 §2). The port's readings, forces and
 // the controller are float. The ledger is not: it sums, tick after tick, small differences
-// of large energies (a wall pressed 2000 units deep at K = 50 stores 10^8), and a float
+// of large energies (a wall pressed 10000 units deep at full force stores 10^8), and a float
 // sum would lose each tick's few units in the rounding of the total. Two things keep it
 // exact:
 //   * each tick's ideal energy change U(s(n)) − U(s(n−1)) is computed as one difference
@@ -72,8 +72,8 @@
 //     tick's booking to it is exact however large it grows. Scaling a float by a power of
 //     two is exact, so a booking of 256 units or more (whose float ulp is at least 2^-15)
 //     enters the ledger without any rounding; smaller ones are cut to 2^-16 of a unit, far
-//     below the ½·k·q² the observer forgives each tick (about 60 units on the joystick at
-//     the softest useful wall).
+//     below the ½·k·q² the observer forgives each tick (670 units with the default wall
+//     stiffness at hardness 10000, 67 at hardness 1000).
 // On the Cortex-M4F that is a handful of FPU instructions and two integer conversions a
 // tick instead of the soft-float double it used to be.
 //
