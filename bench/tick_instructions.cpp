@@ -14,7 +14,8 @@
 //   feel_tick_instructions MIX [TICKS]
 //     MIX: peer_moving, peer_at_rest (bench/peer_mix.hpp's 40 effects),
 //          busy_64 (bench/busy_mix.hpp's 64 effects of every type, moving),
-//          busy_N (its first N effects, 0..64), busy_one_I (its effect I alone: the cost
+//          busy_N (its first N effects, 0..64), busy_rest_N (the same with the handle
+//          held still where the motion starts), busy_one_I (its effect I alone: the cost
 //          of one effect type is busy_one_I minus busy_0, the engine and estimator alone),
 //          estimator, estimator_velocity (the estimator alone on the slow circle,
 //          with and without the acceleration), estimator_at_rest,
@@ -83,14 +84,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "TICKS must be >= 1\n");
         return 2;
     }
-    const bool moving = std::strcmp(mix, "peer_at_rest") != 0 && std::strcmp(mix, "estimator_at_rest") != 0;
+    const bool moving = std::strcmp(mix, "peer_at_rest") != 0 && std::strcmp(mix, "estimator_at_rest") != 0 &&
+                        std::strncmp(mix, "busy_rest_", 10) != 0;
     Run run;
     std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
     for (size_t k = 0; k < inputs.size(); ++k) {
         const int64_t n = static_cast<int64_t>(k) + 1;
         if (std::strncmp(mix, "busy_", 5) == 0 || std::strncmp(mix, "friction_", 9) == 0 ||
             std::strncmp(mix, "damper_", 7) == 0) {
-            bench::move_handle(inputs[k], n);
+            bench::move_handle(inputs[k], moving ? n : 0);
             inputs[k].t_us = n * 1000;
         } else {
             bench::move_handle_in_slow_circle(inputs[k], moving ? n : 0);
@@ -115,9 +117,10 @@ int main(int argc, char** argv) {
     } else if (std::strncmp(mix, "busy_", 5) == 0) {
         run.engine = std::make_unique<Engine>(EngineConfig{});
         const bool one = std::strncmp(mix, "busy_one_", 9) == 0;
-        const int n = std::atoi(mix + (one ? 9 : 5));
+        const bool rest = std::strncmp(mix, "busy_rest_", 10) == 0;
+        const int n = std::atoi(mix + (one ? 9 : rest ? 10 : 5));
         if (n < 0 || n > 64) {
-            std::fprintf(stderr, "busy_N and busy_one_I take 0..64\n");
+            std::fprintf(stderr, "busy_N, busy_rest_N and busy_one_I take 0..64\n");
             return 2;
         }
         const bench::BusyMixResult r = one ? bench::load_busy_mix_effect(*run.engine, n)

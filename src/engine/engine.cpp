@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "conditions/condition.hpp"
+#include "conditions/contact_surface.hpp"
 #include "direction.hpp"
 #include "dynamics/dynamic.hpp"
 #include "effect_clock.hpp"
@@ -88,6 +89,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
     s.dynamic.prepared = false;
+    detail::element_direction(s.params, s.direction);  // walls and barriers: u across the surface
 }
 
 namespace {
@@ -301,7 +303,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             const float value = detail::scalar_wave_value(wave);
-            for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            if (axes == 2) {  // the common device, unrolled
+                sum[0] += value * s.direction_gain[0];
+                sum[1] += value * s.direction_gain[1];
+            } else {
+                for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
+            }
             if (oscillates(s.params.type))
                 for (int a = 0; a < axes; ++a) vibration[a] += value * s.direction_gain[a];
             continue;
@@ -316,7 +323,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             detail::DynamicResult result;
             double dynamic_force[kMaxAxes] = {};
             detail::render_dynamic(dynamic, dynamic_force, result);
-            for (int a = 0; a < kMaxAxes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
+            for (int a = 0; a < axes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;

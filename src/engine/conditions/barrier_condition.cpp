@@ -53,36 +53,47 @@ namespace {
 // The face that holds a handle on one side: its stiffness (the crossing's), the direction
 // of travel into it along u, and its coordinate.
 struct Face {
-    double k = 0;        // force units per position unit
-    double into = 1;     // +1: the negative side's face, entered moving in +u; −1 otherwise
-    double surface = 0;  // the face's coordinate along u
+    float k = 0;        // force units per position unit
+    float into = 1;     // +1: the negative side's face, entered moving in +u; −1 otherwise
+    float surface = 0;  // the face's coordinate along u
 };
 
-Face face_of(const BarrierBlock& barrier, double center, const EngineConfig& config, int side,
+Face face_of(const BarrierBlock& barrier, float center, const EngineConfig& config, int side,
              int crossing) noexcept {
-    const double half = 0.5 * barrier.thickness;
-    const double k = element_stiffness(config, crossing > 0 ? barrier.pos_hardness : barrier.neg_hardness);
-    if (side < 0) return {k, 1.0, center - half};
-    return {k, -1.0, center + half};
+    const float half = 0.5f * static_cast<float>(barrier.thickness);
+    const float k = element_stiffness(config, crossing > 0 ? barrier.pos_hardness : barrier.neg_hardness);
+    if (side < 0) return {k, 1.0f, center - half};
+    return {k, -1.0f, center + half};
 }
 
-double face_depth(const Face& f, double s) noexcept { return f.into * (s - f.surface); }
-double face_energy(const Face& f, double s) noexcept { return saturated_spring_energy(f.k, face_depth(f, s)); }
+float face_depth(const Face& f, float s) noexcept { return f.into * (s - f.surface); }
+
+// The ideal energy change from the handle at `from` against face `before` to `to` against
+// `after` (the same face, or one of another hardness where the tent is zero). One
+// difference when the faces are alike, so the rounding is the change's, not the energy's
+// (passivity.hpp).
+float face_energy_change(const Face& before, float from, const Face& after, float to) noexcept {
+    if (before.k == after.k && before.into == after.into && before.surface == after.surface) {
+        return saturated_spring_energy_change(after.k, face_depth(before, from), face_depth(after, to));
+    }
+    return saturated_spring_energy(after.k, face_depth(after, to)) -
+           saturated_spring_energy(before.k, face_depth(before, from));
+}
 
 }  // namespace
 
-void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const BarrierBlock& barrier = c.params->barrier;
-    const ContactFrame frame = element_contact_frame(c, barrier.angle);
-    const double s = dot(frame.u, c.position);
-    const double center =
-        barrier.offset + (barrier.offset_mode == OffsetMode::relative ? dot(frame.u, c.start_position) : 0.0);
+    const float* u = c.direction;  // across the surface (element_direction)
+    const float s = dot(c, u, c.position);
+    const float center = static_cast<float>(barrier.offset) +
+                         (barrier.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
 
     ContactState& state = c.state->contact;
     if (state.side == 0) state.side = s >= center ? 1 : -1;
     const int previous_side = state.side;
     const int previous_crossing = state.crossing != 0 ? state.crossing : -state.side;
-    const bool inside = std::fabs(s - center) < 0.5 * barrier.thickness;
+    const bool inside = std::fabs(s - center) < 0.5f * static_cast<float>(barrier.thickness);
     if (!inside) state.crossing = 0;
     else if (state.crossing == 0) state.crossing = static_cast<int8_t>(-state.side);  // entered from this side
     if (state.side < 0 && s > center) state.side = 1;        // pushed past half the thickness
@@ -94,13 +105,13 @@ void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
     // hardness, so a new crossing's hardness changes nothing that was stored.
     const Face face = face_of(barrier, center, *c.config, state.side, crossing);
     const Face before = face_of(barrier, center, *c.config, previous_side, previous_crossing);
-    double ideal_energy_change = 0;
+    float ideal_energy_change = 0;
     if (state.side == previous_side) {
-        ideal_energy_change = face_energy(face, s) - face_energy(before, state.coordinate);
+        ideal_energy_change = face_energy_change(before, state.coordinate, face, s);
     } else {
         const Face before_at_center = face_of(barrier, center, *c.config, previous_side, crossing);
-        ideal_energy_change = (face_energy(before_at_center, center) - face_energy(before, state.coordinate)) +
-                              (face_energy(face, s) - face_energy(face, center));
+        ideal_energy_change = face_energy_change(before, state.coordinate, before_at_center, center) +
+                              face_energy_change(face, center, face, s);
     }
 
     PortTick tick;
@@ -108,13 +119,13 @@ void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexce
     tick.ideal_energy_change = ideal_energy_change;
     tick.force = face.into * saturated_spring_force(face.k, face_depth(face, s));
     tick.stiffness = std::fabs(face.k);
-    tick.velocity = dot(frame.u, c.velocity);
-    tick.dt_s = c.dt_s;
+    tick.velocity = dot(c, u, c.velocity);
+    tick.dt_s = static_cast<float>(c.dt_s);
     tick.resolution = c.config->sensor_step;
-    const double normal_force = passive_port_force(state, tick, c.config->passivity_control);
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += normal_force * frame.u[a];
+    const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
+    for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
 
-    add_rubbing_force(frame, c, std::fabs(tick.force), barrier.surface_friction, barrier.surface_texture,
+    add_rubbing_force(c, std::fabs(tick.force), barrier.surface_friction, barrier.surface_texture,
                       force);
 }
 

@@ -17,15 +17,6 @@ ConditionCurve curve_of(const ConditionBlock& b) noexcept {
 
 namespace {
 
-// A family that still renders in double precision, seen as a single-precision one: its
-// forces are summed in double and converted once.
-template <DoubleConditionLaw kLaw>
-void in_double(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    double wide[kMaxAxes] = {};
-    kLaw(c, wide);
-    for (int a = 0; a < c.axes; ++a) force[a] += static_cast<float>(wide[a]);
-}
-
 template <ConditionLaw kLaw>
 void directed(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     directed_condition(c, kLaw, force);
@@ -52,9 +43,9 @@ ConditionLaw condition_renderer(const EffectParams& params) noexcept {
         case EffectType::friction: return friction_condition;
         case EffectType::texture: return texture_condition;
         case EffectType::axis_wall:
-        case EffectType::angle_wall: return in_double<wall_condition>;
+        case EffectType::angle_wall: return wall_condition;
         case EffectType::axis_barrier:
-        case EffectType::angle_barrier: return in_double<barrier_condition>;
+        case EffectType::angle_barrier: return barrier_condition;
         default: return no_condition;  // not a condition: the engine never routes other classes here
     }
 }

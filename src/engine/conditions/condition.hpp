@@ -61,20 +61,18 @@ struct ConditionContext {
 // The curve of a block: the single-precision constants condition_response needs.
 [[nodiscard]] ConditionCurve curve_of(const ConditionBlock& b) noexcept;
 
-// The families, one file each. Spring, damper and inertia are single precision (issue 14).
-// Friction, texture, walls and barriers still add double forces (docs/stability.md, "Where
-// double remains"): the function condition_renderer picks for them converts their sum once.
+// The families, one file each, all single precision (issue 14; docs/stability.md, "Where
+// double remains", for the few double constants left).
 void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;   // spring, angle_spring
 void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void inertia_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
 void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
-void wall_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;     // axis_wall, angle_wall
-void barrier_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept;  // axis_barrier, angle_barrier
+void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;     // axis_wall, angle_wall
+void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;  // axis_barrier, angle_barrier
 
-// A 1-D condition law in single precision, and friction's in double.
+// A condition law: it adds its force into force[kMaxAxes].
 using ConditionLaw = void (*)(const ConditionContext&, float*);
-using DoubleConditionLaw = void (*)(const ConditionContext&, double*);
 
 // The function that renders a condition of these params, chosen once per command so that
 // the tick calls it directly: it adds the condition's force (±10000 units, before effect and

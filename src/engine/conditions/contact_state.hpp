@@ -23,14 +23,15 @@ struct ContactState {
     bool observing = false;
     // The handle's coordinate along the element's direction u at the last tick, position
     // units (±10000 of travel, any finite value).
-    double coordinate = 0.0;
+    float coordinate = 0.0f;
     // The force along u the element commanded at the last tick (held until this tick),
     // force units ±10000, before effect and device gain.
-    double force = 0.0;
+    float force = 0.0f;
     // The energy the sampled element has put out beyond what its ideal continuous-time
-    // counterpart would have, force units · position units, >= 0 (the observer never
-    // keeps credit). The controller dissipates it.
-    double generated_energy = 0.0;
+    // counterpart would have, in ledger units (1/kLedgerScale of a force unit · position
+    // unit: passivity.hpp), >= 0 (the observer never keeps credit). An integer, so the
+    // sum of many small bookings stays exact. The controller dissipates it.
+    int64_t generated_energy = 0;
 };
 
 }  // namespace feel::detail

@@ -34,6 +34,10 @@
 // them. The texture is a friction that varies along the surface rather than a washboard
 // potential: a conservative grating of useful depth would be far stiffer than the
 // device's passivity bound.
+//
+// Single precision (issue 14 §2): positions, forces and directions are float, as the
+// tick's other conditions; u is worked out once per command (in double, rounded once to
+// float), not per tick.
 #pragma once
 
 #include <cstdint>
@@ -44,41 +48,41 @@ namespace feel::detail {
 
 // Bumps of the surface texture: a ridge every 2% of the travel (1 mm on the joystick),
 // half as wide as the spacing (§3.6's density 5000).
-inline constexpr double kSurfaceBumpSpacing = 200.0;  // position units
-inline constexpr double kSurfaceBumpWidth = 100.0;    // position units
+inline constexpr float kSurfaceBumpSpacing = 200.0f;  // position units
+inline constexpr float kSurfaceBumpWidth = 100.0f;     // position units
 // The rubbing force reaches tanh(1) = 76% of its full value at 10% of velocity_ref
 // (50 mm/s on the joystick). A sharper transition would act near rest as a damper too
 // stiff for the device's tick (μN/v_s is its slope) and chatter.
-inline constexpr double kSurfaceSlipSpeed = 0.1;      // fraction of EngineConfig::velocity_ref
+inline constexpr float kSurfaceSlipSpeed = 0.1f;       // fraction of EngineConfig::velocity_ref
 
-struct ContactFrame {
-    double u[kMaxAxes] = {};                  // unit direction across the surface, device axes
-    int32_t tangent_count = 0;                // 0..kMaxAxes-1
-    double tangent[kMaxAxes - 1][kMaxAxes] = {};  // unit directions along the surface
-};
-
-// The frame of an axis element on device axis `axis` of a device with device_axes axes.
-ContactFrame axis_contact_frame(int axis, int device_axes) noexcept;
-// The frame of an angle element at compass angle (hundredths of a degree) on x, y.
-ContactFrame angle_contact_frame(int32_t angle, int device_axes) noexcept;
-// The frame of a wall or barrier effect: axis_* types use their one axis, angle_* the
-// block's angle.
-ContactFrame element_contact_frame(const ConditionContext& c, int32_t angle) noexcept;
+// The direction u across the surface of a wall or barrier (axis_wall, angle_wall,
+// axis_barrier, angle_barrier), on the device's axes: the effect's one axis, or the compass
+// direction of the block's angle on x, y. Worked out once per command (prepare_slot puts it
+// in the slot's direction, which the tick hands the element as ConditionContext::direction);
+// any other type's factors are left alone.
+void element_direction(const EffectParams& params, float u[kMaxAxes]) noexcept;
 
 // The stiffness of a wall or barrier of this hardness (-10000..10000): hardness/10000 of
 // EngineConfig::wall_stiffness, in force units per position unit.
-double element_stiffness(const EngineConfig& config, int32_t hardness) noexcept;
+float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept;
 
-// a · b over the device axes.
-double dot(const double a[kMaxAxes], const float b[kMaxAxes]) noexcept;
+// u · v over the device's c.axes axes.
+[[nodiscard]] inline float dot(const ConditionContext& c, const float u[kMaxAxes], const float* v) noexcept {
+    float sum = 0;
+    for (int i = 0; i < c.axes; ++i) sum += u[i] * v[i];
+    return sum;
+}
 
-// The rubbing force of a surface pressed with normal force `pressure` (>= 0, force units),
-// added into force[]. friction and texture are the block's 0..10000 parameters.
-void add_rubbing_force(const ContactFrame& frame, const ConditionContext& c, double pressure,
-                       int32_t friction, int32_t texture, double force[kMaxAxes]) noexcept;
+// The rubbing force of a surface across u (c.direction) pressed with normal force
+// `pressure` (>= 0, force units), added into force[]. friction and texture are the block's
+// 0..10000 parameters. The surface's tangent directions are the device axes other than an
+// axis element's own, or for an angle element the in-plane t = (cos a, −sin a) and any
+// axes beyond x and y: the velocity along the surface is v − (v·u)·u.
+void add_rubbing_force(const ConditionContext& c, float pressure, int32_t friction, int32_t texture,
+                       float force[kMaxAxes]) noexcept;
 
 // bump(r): 1 on a ridge line (r a multiple of kSurfaceBumpSpacing), falling as a raised
 // cosine to 0 at kSurfaceBumpWidth/2 from it, 0 between ridges.
-double surface_bump(double r) noexcept;
+float surface_bump(float r) noexcept;
 
 }  // namespace feel::detail

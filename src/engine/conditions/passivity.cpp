@@ -16,55 +16,98 @@ namespace {
 // changes the force by at most k·|v|·T, the force change of one tick of motion, so it
 // never jolts the handle; and k·T²/m stays far below 2 (the discrete damper's own
 // stability limit) for any wall the device can render without the wall itself aliasing.
-constexpr double kDampingCeilingTicks = 1.0;
+constexpr float kDampingCeilingTicks = 1.0f;
+
+constexpr float kLimit = static_cast<float>(kFullScale);
+
+// A tick's booking is clamped to this many energy units before it becomes ledger units,
+// and the ledger to kLedgerCeiling, so neither can overflow int64 (the largest a real
+// port books is a full-scale force over the whole travel, about 10^9).
+constexpr float kLargestBooking = 1e12f;
+constexpr int64_t kLedgerCeiling = int64_t{1} << 62;
+
+// A tick's booking within this fraction of its two terms' size (2^-20, eight ulps of
+// float) is their rounding, not energy.
+constexpr float kRoundingSlack = 1.0f / 1048576.0f;
 
 }  // namespace
 
-double saturated_spring_energy(double k, double depth) noexcept {
-    if (!(depth > 0) || k == 0) return 0.0;
-    const double limit = kFullScale;
-    const double stiffness = std::fabs(k);
-    const double saturation_depth = limit / stiffness;
-    const double magnitude = depth <= saturation_depth
-                                 ? 0.5 * stiffness * depth * depth
-                                 : limit * depth - 0.5 * limit * saturation_depth;
+float saturated_spring_energy(float k, float depth) noexcept {
+    if (!(depth > 0) || k == 0) return 0.0f;
+    const float stiffness = std::fabs(k);
+    const float saturation_depth = kLimit / stiffness;
+    const float magnitude = depth <= saturation_depth ? 0.5f * stiffness * depth * depth
+                                                      : kLimit * depth - 0.5f * kLimit * saturation_depth;
     return k > 0 ? magnitude : -magnitude;
 }
 
-double saturated_spring_force(double k, double depth) noexcept {
-    if (!(depth > 0)) return 0.0;
-    const double limit = kFullScale;
-    return -std::clamp(k * depth, -limit, limit);
+float saturated_spring_energy_change(float k, float from, float to) noexcept {
+    if (k == 0) return 0.0f;
+    const float stiffness = std::fabs(k);
+    const float saturation_depth = kLimit / stiffness;
+    // The force grows linearly up to the saturation depth and is constant beyond: the
+    // change is the linear part's ½k·(b² − a²) over the depths clamped to it, plus the
+    // constant part's L·(the distance moved beyond it).
+    const float a = std::clamp(from, 0.0f, saturation_depth);
+    const float b = std::clamp(to, 0.0f, saturation_depth);
+    const float linear = 0.5f * stiffness * (b - a) * (b + a);
+    const float saturated = kLimit * (std::max(to, saturation_depth) - std::max(from, saturation_depth));
+    const float magnitude = linear + saturated;
+    return k > 0 ? magnitude : -magnitude;
 }
 
-double passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept {
+float saturated_spring_force(float k, float depth) noexcept {
+    if (!(depth > 0)) return 0.0f;
+    return -std::clamp(k * depth, -kLimit, kLimit);
+}
+
+double generated_energy(const ContactState& state) noexcept {
+    return static_cast<double>(state.generated_energy) / static_cast<double>(kLedgerScale);
+}
+
+float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept {
     if (state.observing) {
         // The element held state.force over the tick while the handle moved by ds, so the
         // handle did −force·ds of work on it; the ideal element's storage changed by
         // ideal_energy_change. The excess is what the sampling created.
-        const double ds = tick.coordinate - state.coordinate;
-        double generated = tick.ideal_energy_change + state.force * ds;
+        const float ds = tick.coordinate - state.coordinate;
+        const float work = state.force * ds;
+        float generated = tick.ideal_energy_change + work;
         // A handle a hair across a count boundary reads as a whole count of motion, so
         // one count's worth of what a tick books, ½·k·q² (less for a smaller move), may
         // be the sensor's and not the handle's: forgive it. A flicker between two counts
         // books nothing; a move of n counts keeps (n² − 1)/n² of its k·Δs²/2.
-        const double doubt =
-            0.5 * std::fabs(tick.stiffness) * std::min(std::fabs(ds), tick.resolution) * tick.resolution;
-        if (generated > 0) generated = std::max(0.0, generated - doubt);
-        const double total = state.generated_energy + generated;
-        state.generated_energy = std::isfinite(total) ? std::max(0.0, total) : 0.0;
+        const float doubt =
+            0.5f * std::fabs(tick.stiffness) * std::min(std::fabs(ds), tick.resolution) * tick.resolution;
+        if (generated > 0) {
+            // What is left within float's rounding of the two terms (a few ulps of each) is
+            // not energy anyone can tell from zero: a flicker forgiven in exact arithmetic
+            // must not leave its rounding residue in the ledger, tick after tick.
+            const float rounding = (std::fabs(tick.ideal_energy_change) + std::fabs(work)) * kRoundingSlack;
+            generated -= doubt;
+            if (generated <= rounding) generated = 0;
+        }
+        if (std::isfinite(generated)) {
+            // Exact from here on: an integer sum (passivity.hpp, "single precision").
+            const float booked = std::clamp(generated, -kLargestBooking, kLargestBooking) * kLedgerScale;
+            const int64_t total = state.generated_energy + static_cast<int64_t>(booked);
+            state.generated_energy = std::clamp(total, int64_t{0}, kLedgerCeiling);
+        } else {
+            state.generated_energy = 0;
+        }
     }
 
-    double force = tick.force;
+    float force = tick.force;
     if (control && state.generated_energy > 0 && tick.dt_s > 0 && force != 0 && tick.velocity != 0) {
-        const double speed = std::fabs(tick.velocity);
-        const double travel = std::max(speed * tick.dt_s, tick.resolution);
-        const double wanted = state.generated_energy / (speed * travel);
-        const double ceiling = kDampingCeilingTicks * std::fabs(tick.stiffness) * tick.dt_s;
-        const double damping = std::min(wanted, ceiling);
-        double damped = force - damping * tick.velocity;
+        const float ledger = static_cast<float>(state.generated_energy) * (1.0f / kLedgerScale);
+        const float speed = std::fabs(tick.velocity);
+        const float travel = std::max(speed * tick.dt_s, tick.resolution);
+        const float wanted = ledger / (speed * travel);
+        const float ceiling = kDampingCeilingTicks * std::fabs(tick.stiffness) * tick.dt_s;
+        const float damping = std::min(wanted, ceiling);
+        float damped = force - damping * tick.velocity;
         if (damped * force < 0) damped = 0;  // never reverse: a wall pushes, it does not pull
-        force = std::clamp(damped, -static_cast<double>(kFullScale), static_cast<double>(kFullScale));
+        force = std::clamp(damped, -kLimit, kLimit);
     }
 
     state.observing = true;

@@ -48,45 +48,50 @@
 
 namespace feel::detail {
 
-void wall_condition(const ConditionContext& c, double force[kMaxAxes]) noexcept {
+void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const WallBlock& wall = c.params->wall;
-    const ContactFrame frame = element_contact_frame(c, wall.angle);
-    const double s = dot(frame.u, c.position);
-    const double surface =
-        wall.offset + (wall.offset_mode == OffsetMode::relative ? dot(frame.u, c.start_position) : 0.0);
-    const double into = wall.sense == WallSense::positive ? 1.0 : -1.0;  // along u, into the solid
-    const double k = element_stiffness(*c.config, wall.hardness);
+    const float* u = c.direction;  // across the surface (element_direction)
+    const float s = dot(c, u, c.position);
+    const float surface = static_cast<float>(wall.offset) +
+                          (wall.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
+    const float into = wall.sense == WallSense::positive ? 1.0f : -1.0f;  // along u, into the solid
+    const float k = element_stiffness(*c.config, wall.hardness);
 
     ContactState& state = c.state->contact;
-    const double depth = into * (s - surface);
-    const double previous_depth = into * (state.coordinate - surface);
+    const float depth = into * (s - surface);
+    const float previous_depth = into * (state.coordinate - surface);
 
     PortTick tick;
     tick.coordinate = s;
-    tick.ideal_energy_change = saturated_spring_energy(k, depth) - saturated_spring_energy(k, previous_depth);
+    tick.ideal_energy_change = saturated_spring_energy_change(k, previous_depth, depth);
     tick.force = into * saturated_spring_force(k, depth);
     tick.stiffness = std::fabs(k);
-    tick.velocity = dot(frame.u, c.velocity);
-    tick.dt_s = c.dt_s;
+    tick.velocity = dot(c, u, c.velocity);
+    tick.dt_s = static_cast<float>(c.dt_s);
     tick.resolution = c.config->sensor_step;
-    const double normal_force = passive_port_force(state, tick, c.config->passivity_control);
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += normal_force * frame.u[a];
+    const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
+    for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
 
-    add_rubbing_force(frame, c, std::fabs(tick.force), wall.surface_friction, wall.surface_texture, force);
+    add_rubbing_force(c, std::fabs(tick.force), wall.surface_friction, wall.surface_texture, force);
 
     if (wall.clipping) {
-        const double reported_depth = into * (dot(frame.u, c.reported_position) - surface);
+        const float reported_depth = into * (dot(c, u, c.reported_position) - surface);
         if (reported_depth > 0) {
+            float clipped[kMaxAxes];
             for (int a = 0; a < kMaxAxes; ++a) {
-                if (frame.u[a] == 0) continue;
-                const double on_surface = c.reported_position[a] - into * reported_depth * frame.u[a];
-                // Round to a float on the free side, so the report never lies inside.
-                float clipped = static_cast<float>(on_surface);
-                const double free_direction = -into * frame.u[a];
-                if ((clipped - on_surface) * free_direction < 0) {
-                    clipped = std::nextafter(clipped, free_direction > 0 ? HUGE_VALF : -HUGE_VALF);
+                clipped[a] = c.reported_position[a] - into * reported_depth * u[a];
+            }
+            // The projection is rounded: if it still reads inside, step the moved
+            // coordinates an ulp toward the free side (once: each further step would only
+            // chase the rounding of the test itself away from the surface).
+            if (into * (dot(c, u, clipped) - surface) > 0) {
+                for (int a = 0; a < kMaxAxes; ++a) {
+                    if (u[a] == 0) continue;
+                    clipped[a] = std::nextafter(clipped[a], -into * u[a] > 0 ? HUGE_VALF : -HUGE_VALF);
                 }
-                c.reported_position[a] = clipped;
+            }
+            for (int a = 0; a < kMaxAxes; ++a) {
+                if (u[a] != 0) c.reported_position[a] = clipped[a];
             }
         }
     }

@@ -69,6 +69,7 @@ struct Sling {
     double stiffness = 0;     // k, force units per position unit
     double length = 0;        // L, position units
     double drag = 0;          // c, force units per (position unit/s)
+    double rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
 
@@ -78,6 +79,7 @@ struct Sling {
         stiffness = dynamic_stiffness(config, d.string_compliance);
         length = d.string_length;
         drag = dynamic_damping(config, d.ball_damping);
+        rate_squared = stiffness / mass;
         count = p.axis_count;
         for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
     }
@@ -88,7 +90,7 @@ struct Sling {
         for (int i = 0; i < count; ++i) r2 += r[i] * r[i];
         const double distance = std::sqrt(r2);
         // −k·(|r| − L)/|r| per unit of r, when taut. L = 0: −k·r, smooth through r = 0.
-        const double pull = distance > length ? -stiffness * (1.0 - length / distance) / mass : 0.0;
+        const double pull = distance > length ? -rate_squared * (1.0 - length / distance) : 0.0;
         for (int i = 0; i < count; ++i) a[i] = pull * r[i];
     }
 
@@ -129,10 +131,24 @@ struct Sling {
             r[i] = q[i] - handle.from[a];
             relative[i] = v[i] - handle.velocity[a];
         }
-        const double rate = std::max(std::sqrt(stiffness / mass), turning_rate(r, relative));
+        // A ball at rest on a slack string beside a still handle stays exactly where it is
+        // (every Verlet step maps it to itself): no steps, no impulse.
+        bool idle = true;
+        for (int i = 0; i < count; ++i) idle = idle && v[i] == 0 && handle.velocity[axes[i]] == 0;
+        if (idle) {
+            double acc[kMaxAxes] = {};
+            acceleration(r, acc);
+            for (int i = 0; i < count; ++i) idle = idle && acc[i] == 0;
+            if (idle) {
+                for (int i = 0; i < count; ++i) impulse[axes[i]] = 0;
+                return;
+            }
+        }
+        const double rate = std::max(std::sqrt(rate_squared), turning_rate(r, relative));
         const int steps = static_cast<int>(
             std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
         const double h = h_total / steps;
+        const double half_h = 0.5 * h;
         const double half_drag = std::exp(-drag * h / (2.0 * mass));
 
         double acc[kMaxAxes] = {};
@@ -140,15 +156,17 @@ struct Sling {
         for (int step = 0; step < steps; ++step) {
             const double t_end = (step + 1) * h;
             for (int i = 0; i < count; ++i) {
-                v[i] = v[i] * half_drag + 0.5 * h * acc[i];
-                kicks[i] += 0.5 * h * acc[i];
+                const double kick = half_h * acc[i];
+                v[i] = v[i] * half_drag + kick;
+                kicks[i] += kick;
                 q[i] += h * v[i];
                 r[i] = q[i] - handle.at(axes[i], t_end);
             }
             acceleration(r, acc);
             for (int i = 0; i < count; ++i) {
-                v[i] = (v[i] + 0.5 * h * acc[i]) * half_drag;
-                kicks[i] += 0.5 * h * acc[i];
+                const double kick = half_h * acc[i];
+                v[i] = (v[i] + kick) * half_drag;
+                kicks[i] += kick;
             }
         }
         for (int i = 0; i < count; ++i) {

@@ -116,6 +116,14 @@ float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxis
     float rate = rate0;
     for (int32_t i = 0; i < t.pieces; ++i) {
         const Region r = tether_region(t.length, s, rate, taut_force);
+        if (r == Region::slack && rate == 0 && slack_force == 0) {
+            // At rest in the play with nothing pushing it: no piece moves the mass (the
+            // free propagator maps (y, 0) to (y, 0) exactly), so neither do the rest. The
+            // exact piece would be asked every time (a piece that starts at rest may have
+            // turned), which is most of what a still handle costs.
+            count_half_cycle(state, s, rest, hysteresis);
+            break;
+        }
         const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
         const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
         float y = s - origin;

@@ -45,19 +45,21 @@ PortRun drive(const SpringPort& spring, const std::vector<double>& path, bool co
     ContactState state;
     PortRun run;
     for (size_t n = 0; n < path.size(); ++n) {
+        // The port is single precision (passivity.hpp): the double readings rounded once.
         PortTick tick;
-        tick.coordinate = path[n];
-        tick.ideal_energy_change = n > 0 ? spring.energy(path[n]) - spring.energy(path[n - 1]) : 0.0;
-        tick.force = spring.force(path[n]);
-        tick.stiffness = spring.k;
-        tick.velocity = n > 0 ? (path[n] - path[n - 1]) / kT : 0.0;
-        tick.dt_s = n > 0 ? kT : 0.0;
-        tick.resolution = kStep;
+        tick.coordinate = static_cast<float>(path[n]);
+        tick.ideal_energy_change =
+            static_cast<float>(n > 0 ? spring.energy(path[n]) - spring.energy(path[n - 1]) : 0.0);
+        tick.force = static_cast<float>(spring.force(path[n]));
+        tick.stiffness = static_cast<float>(spring.k);
+        tick.velocity = static_cast<float>(n > 0 ? (path[n] - path[n - 1]) / kT : 0.0);
+        tick.dt_s = static_cast<float>(n > 0 ? kT : 0.0);
+        tick.resolution = static_cast<float>(kStep);
         const double f = passive_port_force(state, tick, control);
         if (n > 0) run.handle_gain += run.out.back() * (path[n] - path[n - 1]);
         run.out.push_back(f);
     }
-    run.ledger = state.generated_energy;
+    run.ledger = generated_energy(state);
     return run;
 }
 
@@ -70,6 +72,7 @@ std::vector<double> in_and_out(double from, double to, double step) {
 
 TEST(SaturatedSpring, EnergyIsTheIntegralOfItsForce) {
     for (const double k : {50.0, -30.0, 0.5, 2000.0}) {
+        const float kf = static_cast<float>(k);
         for (const double depth : {0.0, 3.0, 100.0, 199.0, 333.0, 1000.0, 30000.0}) {
             // Trapezoid rule on a fine grid; the force is piecewise linear so it is exact
             // up to the one panel containing the saturation kink.
@@ -77,17 +80,44 @@ TEST(SaturatedSpring, EnergyIsTheIntegralOfItsForce) {
             double integral = 0;
             for (int i = 0; i < panels; ++i) {
                 const double a = depth * i / panels, b = depth * (i + 1) / panels;
-                integral -= 0.5 * (saturated_spring_force(k, a) + saturated_spring_force(k, b)) * (b - a);
+                integral -= 0.5 *
+                            (saturated_spring_force(kf, static_cast<float>(a)) +
+                             saturated_spring_force(kf, static_cast<float>(b))) *
+                            (b - a);
             }
-            EXPECT_NEAR(saturated_spring_energy(k, depth), integral, 1e-6 * std::fabs(integral) + 1e-6)
+            // Single precision: float's 7 digits of the energy.
+            EXPECT_NEAR(saturated_spring_energy(kf, static_cast<float>(depth)), integral,
+                        1e-6 * std::fabs(integral) + 1e-6)
                 << "k=" << k << " depth=" << depth;
         }
     }
-    EXPECT_EQ(saturated_spring_energy(50, -10), 0.0);
-    EXPECT_EQ(saturated_spring_force(50, -10), 0.0);
-    EXPECT_EQ(saturated_spring_force(50, 100), -5000.0);
-    EXPECT_EQ(saturated_spring_force(50, 1000), -10000.0);
-    EXPECT_EQ(saturated_spring_force(-50, 1000), 10000.0);
+    EXPECT_EQ(saturated_spring_energy(50, -10), 0.0f);
+    EXPECT_EQ(saturated_spring_force(50, -10), 0.0f);
+    EXPECT_EQ(saturated_spring_force(50, 100), -5000.0f);
+    EXPECT_EQ(saturated_spring_force(50, 1000), -10000.0f);
+    EXPECT_EQ(saturated_spring_force(-50, 1000), 10000.0f);
+}
+
+TEST(SaturatedSpring, AnEnergyChangeKeepsItsDigitsHoweverMuchIsStored) {
+    // Deep in a stiff wall the stored energy is ~10^8 and a tick's change a few units:
+    // the difference of two float energies would round to multiples of 8. The change is
+    // computed as one difference, so its error is float's relative 7 digits of k·depth·Δ
+    // (the force times the move), against the double-precision energies written out.
+    for (const double k : {50.0, -30.0, 5.0, 2000.0}) {
+        const SpringPort spring{std::fabs(k)};
+        for (const double from : {-40.0, 0.0, 3.0, 150.0, 199.5, 1999.0, 9000.0, 15000.0}) {
+            for (const double move : {-300.0, -7.0, -0.25, 0.0, 0.125, 1.0, 5.0, 250.0}) {
+                const double to = from + move;
+                const double truth = (k > 0 ? 1 : -1) * (spring.energy(to) - spring.energy(from));
+                const double force_times_move = std::min(std::fabs(k) * std::fabs(from) + std::fabs(k) * std::fabs(move),
+                                                         10000.0) * std::fabs(move);
+                const float change = saturated_spring_energy_change(static_cast<float>(k), static_cast<float>(from),
+                                                                    static_cast<float>(to));
+                EXPECT_NEAR(change, truth, 1e-6 * force_times_move + 1e-9)
+                    << "k=" << k << " from=" << from << " to=" << to;
+            }
+        }
+    }
 }
 
 TEST(PassivityObserver, BooksTheZeroOrderHoldEnergyOfEveryTickInContact) {
@@ -173,25 +203,27 @@ RC_GTEST_PROP(PassivityController, StaysWithinItsBounds, ()) {
 
     ContactState state;
     state.observing = true;
-    state.coordinate = previous;
-    state.force = -std::clamp(k * previous, -10000.0, 10000.0) * (previous > 0);
-    state.generated_energy = debt;
+    state.coordinate = static_cast<float>(previous);
+    state.force = static_cast<float>(-std::clamp(k * previous, -10000.0, 10000.0) * (previous > 0));
+    state.generated_energy = static_cast<int64_t>(debt * kLedgerScale);
     PortTick tick;
-    tick.coordinate = depth;
-    tick.ideal_energy_change = saturated_spring_energy(k, depth) - saturated_spring_energy(k, previous);
-    tick.force = saturated_spring_force(k, depth);
-    tick.stiffness = k;
-    tick.velocity = speed;
-    tick.dt_s = kT;
-    tick.resolution = kStep;
+    tick.coordinate = static_cast<float>(depth);
+    tick.ideal_energy_change =
+        saturated_spring_energy_change(static_cast<float>(k), static_cast<float>(previous), static_cast<float>(depth));
+    tick.force = saturated_spring_force(static_cast<float>(k), static_cast<float>(depth));
+    tick.stiffness = static_cast<float>(k);
+    tick.velocity = static_cast<float>(speed);
+    tick.dt_s = static_cast<float>(kT);
+    tick.resolution = static_cast<float>(kStep);
     const double out = passive_port_force(state, tick, true);
 
     RC_ASSERT(std::isfinite(out));
     RC_ASSERT(std::fabs(out) <= 10000.0);
     RC_ASSERT(out * tick.force >= 0.0);
     if (tick.force == 0.0) RC_ASSERT(out == 0.0);
-    RC_ASSERT(std::fabs(out - tick.force) <= k * std::fabs(speed) * kT * (1 + 1e-12) + 1e-9);
-    RC_ASSERT(state.generated_energy >= 0.0);
+    // Within float's rounding of the controller's arithmetic (a few ulps of the force).
+    RC_ASSERT(std::fabs(out - tick.force) <= k * std::fabs(speed) * kT * (1 + 1e-6) + 1e-3);
+    RC_ASSERT(generated_energy(state) >= 0.0);
 }
 
 }  // namespace
