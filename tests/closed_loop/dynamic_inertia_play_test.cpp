@@ -66,18 +66,6 @@ constexpr double kMaxTurnLag_s = 0.060;
 // it by at most 6%, allowed twice.
 constexpr double kFlightTolerance = 0.12;
 
-EffectParams dynamic_inertia_with_play(std::initializer_list<Axis> axes, int32_t inertia, int32_t play) {
-    EffectParams p;
-    p.type = EffectType::dynamic_inertia;
-    p.duration_us = kInfiniteUs;
-    p.axis_count = static_cast<int32_t>(axes.size());
-    int i = 0;
-    for (Axis a : axes) p.axes[i++] = a;
-    p.dynamic.inertia = inertia;
-    p.dynamic.play = play;
-    return p;
-}
-
 // ωτ of the free flight across a gap of `gap` units: the root of x − sin x = gap/A in
 // (0, π], by bisection (x − sin x increases).
 double free_flight_phase(double amplitude, double gap) {
@@ -286,7 +274,7 @@ TEST(DynamicInertiaPlayClosedLoop, OnSinesTheMassRestsOnASideAndCrossesWhenTheAc
             SCOPED_TRACE(std::to_string(rate) + " Hz, inertia " + std::to_string(c.inertia) + ", play " +
                          std::to_string(c.play) + ", " + motion_of(c));
             const auto rows = run_loop("joystick", sim::Grip::kinematic, motion_of(c),
-                                       {dynamic_inertia_with_play({Axis::x}, c.inertia, c.play)}, 2.0 / c.hz + 0.5,
+                                       {dynamic_inertia_on({Axis::x}, c.inertia, c.play)}, 2.0 / c.hz + 0.5,
                                        rate);
             expect_a_mass_in_a_gap(rows, gap_axis(config, c.inertia, c.play, c.amplitude, c.hz, 0.0), 0, rate, 0.5);
         }
@@ -300,7 +288,7 @@ TEST(DynamicInertiaPlayClosedLoop, OnACircleEachAxisIsAMassInItsGap) {
     for (double rate : {500.0, 1000.0, 10000.0}) {
         SCOPED_TRACE(std::to_string(rate) + " Hz");
         const auto rows = run_loop("joystick", sim::Grip::kinematic, "circle:2000:1",
-                                   {dynamic_inertia_with_play({Axis::x, Axis::y}, 10000, 100)}, 2.5, rate);
+                                   {dynamic_inertia_on({Axis::x, Axis::y}, 10000, 100)}, 2.5, rate);
         expect_a_mass_in_a_gap(rows, gap_axis(config, 10000, 100, 2000, 1, kPi / 2), 0, rate, 0.5);
         expect_a_mass_in_a_gap(rows, gap_axis(config, 10000, 100, 2000, 1, 0.0), 1, rate, 0.5);
     }
@@ -315,7 +303,7 @@ TEST(DynamicInertiaPlayClosedLoop, OnEveryProfileTheMassInTheGapIsTheSame) {
         for (double rate : {500.0, 1000.0, 10000.0}) {
             SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz");
             const auto rows = run_loop(profile_name, sim::Grip::kinematic, "sine:x:2000:1",
-                                       {dynamic_inertia_with_play({Axis::x}, 10000, 150)}, 2.5, rate);
+                                       {dynamic_inertia_on({Axis::x}, 10000, 150)}, 2.5, rate);
             expect_a_mass_in_a_gap(rows, gap_axis(config, 10000, 150, 2000, 1, 0.0), 0, rate, 0.5);
         }
     }
@@ -340,7 +328,7 @@ TEST(DynamicInertiaPlayClosedLoop, TheMassIsProportionalToTheInertiaAndTheSameFo
         {
             SCOPED_TRACE("inertia " + std::to_string(c.inertia) + ", " + motion_of(c));
             const auto rows = run_loop("joystick", sim::Grip::kinematic, motion_of(c),
-                                       {dynamic_inertia_with_play({Axis::x}, c.inertia, c.play)}, 2.0 / c.hz + 0.5);
+                                       {dynamic_inertia_on({Axis::x}, c.inertia, c.play)}, 2.0 / c.hz + 0.5);
             const GapAxis g = gap_axis(config, c.inertia, c.play, c.amplitude, c.hz, 0.0);
             const std::vector<Crossing> cs = crossings(rows, g, 0, 1e-3);
             const PlayFit f = fit(rows, g, cs, 0, 0.5);
