@@ -80,8 +80,7 @@ void detail::prepare_slot(Slot& s) noexcept {
     direction_factors(s.params, s.direction);
     s.cls = effect_class(s.params.type);
     if (is_periodic(s.params.type) || is_sweep(s.params.type)) s.waveform = waveform_of(s.params.type);
-    s.reads_acceleration = s.params.type == EffectType::inertia ||
-                           (s.params.type == EffectType::dynamic_inertia && s.params.dynamic.play == 0);
+    s.reads_acceleration = s.params.type == EffectType::inertia || s.params.type == EffectType::dynamic_inertia;
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
@@ -215,7 +214,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
     const double dt_s = static_cast<double>(dt_us) * 1e-6;
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
-    // without play (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
+    // (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
     bool inertia_plays = false;
     for (int32_t i = 0; i < m.slot_end; ++i) {
         const Slot& s = m.slots[i];

@@ -23,7 +23,7 @@ struct Slot {
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
     // What the tick needs of params every tick, worked out once per command (prepare_slot):
     EffectClass cls = EffectClass::wave;
-    bool reads_acceleration = false;  // inertia, or Dynamic Inertia without play
+    bool reads_acceleration = false;  // inertia, or Dynamic Inertia
     float gain_factor = 0.0f;         // params.gain / kFullScale
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
     bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)

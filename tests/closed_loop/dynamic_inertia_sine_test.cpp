@@ -27,18 +27,6 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-EffectParams dynamic_inertia_on(std::initializer_list<Axis> axes, int32_t inertia) {
-    EffectParams p;
-    p.type = EffectType::dynamic_inertia;
-    p.duration_us = kInfiniteUs;
-    p.axis_count = static_cast<int32_t>(axes.size());
-    int i = 0;
-    for (Axis a : axes) p.axes[i++] = a;
-    p.dynamic.inertia = inertia;
-    p.dynamic.play = 0;
-    return p;
-}
-
 struct InertiaFit {
     double peak = 0;        // the peak of M·|a|, force units
     double error = 0;       // the largest |F − (−M·a(t − lag))| at the best lag, force units

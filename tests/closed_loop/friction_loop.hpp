@@ -111,6 +111,19 @@ inline EffectParams constant_force_on_x(int32_t magnitude) {
     return p;
 }
 
+// Dynamic Inertia (§5.6) on `axes`, forever.
+inline EffectParams dynamic_inertia_on(std::initializer_list<Axis> axes, int32_t inertia, int32_t play = 0) {
+    EffectParams p;
+    p.type = EffectType::dynamic_inertia;
+    p.duration_us = kInfiniteUs;
+    p.axis_count = static_cast<int32_t>(axes.size());
+    int i = 0;
+    for (Axis a : axes) p.axes[i++] = a;
+    p.dynamic.inertia = inertia;
+    p.dynamic.play = play;
+    return p;
+}
+
 // A texture (§3.6) on x.
 inline EffectParams texture_on_x(int32_t pos_roughness, int32_t neg_roughness, int32_t spacing, int32_t density) {
     EffectParams p;

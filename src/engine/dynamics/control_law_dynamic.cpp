@@ -29,22 +29,30 @@
 // cancels the sampled spring's energy leak). On the engine's very first tick there is no
 // tick length to predict over; the force is then the tether's instantaneous reaction.
 //
-// Dynamic Inertia without play is simulated in the handle's frame instead (issue 16 §2).
-// There the handle's motion reaches the mass only as the frame's force −M·a, a the
-// engine's estimated acceleration, held over the tick; the same two steps then run with
-// the handle standing still at 0 (the law's gravity term carries −a, the exact step stays
-// exact). Why: the tension of a tether as stiff as Inertia's is k·stretch + b·rate, and
-// driven by the sensed handle it moves by k·(one count) whenever a count is crossed (110
-// force units on the joystick, a quarter of the inertial force of a brisk 1 Hz sine) and by
-// b times the velocity estimate's tick-to-tick wander; the review measured 83–97% error.
-// The acceleration estimate is a fit over many samples, and the tether filters it once
-// more, so the force is −M·a within 16% and jitters by under 4% of it (docs/dynamics.md
-// has the figures). With play the mass must know where the handle is to rattle within
-// it, which double-integrating an estimated acceleration cannot tell, so it keeps the
-// sensed-path drive above.
+// Dynamic Inertia is simulated in the handle's frame instead (issue 16 §2). There the
+// handle's motion reaches the mass only as the frame's force −M·a, a the engine's
+// estimated acceleration, held over the tick; the same two steps then run with the handle
+// standing still at 0 (the law's gravity term carries −a, the exact step stays exact).
+// Why: the tension of a tether as stiff as Inertia's is k·stretch + b·rate, and driven by
+// the sensed handle it moves by k·(one count) whenever a count is crossed (110 force units
+// on the joystick, a quarter of the inertial force of a brisk 1 Hz sine) and by b times
+// the velocity estimate's tick-to-tick wander; the review measured 83–97% error. The
+// acceleration estimate is a fit over many samples, and the tether filters it once more,
+// so the force is −M·a within 16% and jitters by under 4% of it (docs/dynamics.md has the
+// figures).
 //
-// State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
-// is read, nothing throws.
+// With play the frame is the same and so is the state: the stretch is the mass's offset
+// from the handle, free within ±Play, and the law's regions are the gap (slack: the mass
+// coasts under the frame's force −M·a alone) and its two sides (the tether's spring and damper). While
+// the handle accelerates one way the mass rests against one side and the handle feels −M·a
+// as without play; when the acceleration changes sign the mass leaves that side, crosses
+// the gap with no force at all and lands on the other side with the impact of its closing
+// speed. The mass does not need the handle's absolute position for this, only its offset,
+// which the pseudo-force moves exactly as the handle's motion does (s̈ = ẍ_mass − a). What
+// the estimate cannot give is an exact integral: a velocity step that the acceleration fit
+// rounds off leaves the mass a small relative drift, which the sides of the gap bound
+// (docs/dynamics.md, "Inertia with play").
+//
 // Per tick each axis costs a few float multiply-adds per piece (tether_tick.hpp): the law
 // and its propagators are worked out when a command sets the parameters or the tick length
 // changes, and only a piece in which the stretch may cross an edge of the law is redone in

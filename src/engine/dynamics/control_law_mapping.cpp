@@ -17,10 +17,12 @@
 //   * inertia: KPos = KNeg = 10000 (the stiffest tether the device holds stably, so the mass
 //     follows the handle closely) and B for a damping ratio of 0.7 against a held handle,
 //     so the mass does not ring on its tether: the handle feels weight, not a spring.
-//     Without play, the mass is simulated in the handle's frame, driven by the handle's
-//     estimated acceleration (control_law_dynamic.cpp): a tether this stiff driven by the
-//     sensed counts and the estimated velocity jitters by far more than the inertial force
-//     it carries (issue 16 §2). The mass and the tether are the table's.
+//     The mass is simulated in the handle's frame, driven by the handle's estimated
+//     acceleration (control_law_dynamic.cpp): a tether this stiff driven by the sensed
+//     counts and the estimated velocity jitters by far more than the inertial force it
+//     carries (issue 16 §2). With play the same frame holds the gap: the stretch is the
+//     mass's offset from the handle, free within ±Play. The mass, the tether and the play
+//     are the table's.
 //   * center drift: the origin is a mass of 1 (the lightest) held by the spring to the
 //     handle and by the drag to the world. A light mass under heavy drag creeps: with M → 0,
 //     d·ẋ = k·(p − x), the origin follows the handle with time constant d/k. A drag on
@@ -104,9 +106,7 @@ int32_t tether_laws(const EffectParams& p, const EngineConfig& c, TetherLaw laws
                 law = spring_law(dynamic_mass(c, d.inertia), dynamic_stiffness(c, kFullScale));
                 law.b = 2 * kInertiaDampingRatio * std::sqrt(law.k_pos * law.mass);
                 law.length = d.play;
-                // Without play the mass never leaves the tether: simulated in the handle's
-                // frame. With play it must know where the handle is to rattle in it.
-                law.handle_frame = d.play == 0;
+                law.handle_frame = true;  // driven by −M·a (control_law_dynamic.cpp says why)
                 break;
             case EffectType::dynamic_center_drift:
                 law = spring_law(dynamic_mass(c, 1), dynamic_stiffness(c, d.stiffness));

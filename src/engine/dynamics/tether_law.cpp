@@ -59,14 +59,16 @@ void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stret
 
 }  // namespace
 
-void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
+bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
                           const HandlePath& path, double h, double hysteresis) noexcept {
+    bool taut = false;
     const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
     const double rest_force = free_force(law, path);
     double remaining = h;
     int32_t switches = 0;
     while (remaining > 0) {
         const Region r = classify(law, s, rate, rest_force);
+        taut = taut || r != Region::slack;
         const SpringDamper seg = segment(law, r, path);
         const double origin = local_origin(law, r);
         const MassState start{s - origin, rate};
@@ -100,6 +102,7 @@ void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& 
         if (crossed) ++switches;
         count_half_cycle(law, state, s, hysteresis);
     }
+    return taut;
 }
 
 double rest_stretch(const TetherLaw& law) noexcept {

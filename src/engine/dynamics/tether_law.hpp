@@ -106,8 +106,9 @@ template <typename T>
 // switching regions at the edges it finds (tether_crossing) and counting half cycles:
 // each time the stretch goes from beyond +hysteresis of the rest stretch to beyond
 // −hysteresis, or back, checked at every edge crossing and at the piece's end. Double
-// precision; tether_tick.cpp calls it for the pieces in which an edge may lie.
-void advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
+// precision; tether_tick.cpp calls it for the pieces in which an edge may lie. Returns
+// whether any part of the piece was spent beyond the play (the tether taut).
+bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
                           const HandlePath& path, double h, double hysteresis) noexcept;
 
 // The §8.4 mapping: fills laws[i] for each axis i of the effect from its dynamic type and

@@ -114,6 +114,7 @@ float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxis
     const float rate0 = state.velocity - u;
     float s = s0;
     float rate = rate0;
+    bool taut = false;  // whether any piece met the tether (else its impulse is exactly 0)
     for (int32_t i = 0; i < t.pieces; ++i) {
         const Region r = tether_region(t.length, s, rate, taut_force);
         if (r == Region::slack && rate == 0 && slack_force == 0) {
@@ -137,17 +138,21 @@ float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxis
             double rate_exact = rate;
             const TetherLaw law = exact_law(t, gravity);
             const HandlePath path{0.0, u, line.damper_velocity};
-            advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis);
+            taut = advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis) || taut;
             s = static_cast<float>(s_exact);
             rate = static_cast<float>(rate_exact);
             continue;
         }
         s = y + origin;
         rate = v;
+        taut = taut || r != Region::slack;
         count_half_cycle(state, s, rest, hysteresis);
     }
     state.stretch = s;
     state.velocity = rate + u;
+    // A step spent wholly in the play gave the mass no tether impulse: exactly 0, not the
+    // rounding the balance below leaves when gravity (or the handle's frame) moves it.
+    if (!taut) return 0.0f;
     // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
     return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
 }

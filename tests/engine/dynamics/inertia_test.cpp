@@ -44,75 +44,68 @@ TEST(Inertia, Weight10000IsTheInertiaConditionsFullScale) {
     }
 }
 
-// The exact relative motion of a mass at rest picked up by a handle moving steadily at u
-// through the play L: slack until the handle has moved L (t_e = L/u), then the damped
-// oscillator of the tether from the edge with relative velocity −u.
-struct PickUp {
-    double m, k, b, L, u;
-    [[nodiscard]] double t_engage() const { return L / u; }
-    // The damped tether swings the mass back to the edge of the play half a damped period
-    // after taking it up; from there it is slack again (the rattle of the play).
-    [[nodiscard]] double t_release() const {
-        const double gamma = b / (2 * m);
-        return t_engage() + kPiD / std::sqrt(k / m - gamma * gamma);
-    }
-    [[nodiscard]] Oscillator tether() const { return {m, b, k, 0, -u}; }
-    [[nodiscard]] double stretch(double t) const {
-        if (t <= t_engage()) return -u * t;
-        return -L + tether().position(t - t_engage());
-    }
-    [[nodiscard]] double pull(double t) const {
-        if (t <= t_engage()) return 0.0;
-        const Oscillator o = tether();
-        return k * o.position(t - t_engage()) + b * o.velocity(t - t_engage());
-    }
-};
-
 TEST(Inertia, PlayThenATetherDampedAtZetaPointSeven) {
-    // From rest, the handle moves off at a steady u: for the first `play` units the tether
-    // is slack and there is no force at all; then the mass is taken up by a tether of
-    // stiffness 10000 damped at ζ = 0.7, whose overshoot (4.6%) then swings it back into
-    // the play. Every tick against the exact piecewise motion.
+    // From rest, the handle moves off at a steady u. The mass, free in the play, stays
+    // behind: relative to the handle it flies back across the play and is picked up by
+    // the tether (stiffness 10000, ζ = 0.7) when the handle has moved `play` (t_e = L/u).
+    // The pick-up's force starts at the damper's b·u (at ζ = 0.7 > 0.5 its largest value),
+    // gives the mass the handle's momentum and, through the tether's overshoot
+    // e^(−ζπ/sqrt(1−ζ²)) = 4.6%, swings it back into the play: the contact's impulse is
+    // M·u·(1 + 0.046). The mass is simulated in the handle's frame, driven by the
+    // acceleration estimate (control_law_dynamic.cpp), which sees the start as a pulse
+    // of acceleration spread over its fit window: the pick-up comes up to 30 ms late, its
+    // peak is allowed 20%, and its impulse 15%: the estimate's integral over a velocity
+    // step falls about 11% short of the step (the fit rounds the corner off), and the
+    // closing speed inherits that (docs/dynamics.md, "Inertia with play").
     const EngineConfig c;
     for (const int32_t play : {150, 450}) {
         const double m = per_10000(6000, c.dynamic_mass_ref), k = c.dynamic_stiffness_ref;
+        const double b = 2 * 0.7 * std::sqrt(k * m);
         const double u = 6000;
-        const PickUp pick{m, k, 2 * 0.7 * std::sqrt(k * m), static_cast<double>(play), u};
+        const double t_engage = play / u;
+        const double overshoot = std::exp(-0.7 * kPiD / std::sqrt(1 - 0.7 * 0.7));
         DynamicRig rig;
         for (int n = 0; n < 3; ++n) rig.tick({-5000});
         rig.play(inertia_params(6000, play));
         rig.tick({-5000});  // the effect's first tick: the handle still at rest
-        // While the tether is slack the engine's velocity estimate locks onto the handle's
-        // new motion (a few ticks); the pick-up then follows the exact solution.
+        double first_force = -1, impulse = 0, peak = 0;
         bool slack_again = false;
-        for (int n = 1; n < 400; ++n) {
+        for (int n = 1; n < 600; ++n) {
             const double t = n * rig.period_s();
             const TickOutput out = rig.tick({-5000 + u * t});
-            if (t > pick.t_release() + rig.period_s()) {
-                slack_again = slack_again || out.force[0] == 0.0f;
-                continue;
+            const double f = out.force[0];
+            if (first_force < 0) {
+                if (f == 0.0) continue;
+                first_force = t;
             }
-            if (t + rig.period_s() > pick.t_release()) continue;  // the tick of the release
-            ASSERT_NEAR(out.mass_position[0], pick.stretch(t), 1e-2) << "t=" << t;
-            const double pull = mean_over([&](double v) { return pick.pull(v); }, t, t + rig.period_s(), 2000);
-            // (1e-3: the damper reads the handle through the velocity estimator, whose fit
-            // windows still reach back to the start now and then.)
-            ASSERT_NEAR(out.force[0], pull, 0.05 + 1e-3 * std::fabs(pull)) << "t=" << t;
-            if (t + rig.period_s() < pick.t_engage()) {
-                ASSERT_EQ(out.force[0], 0.0f) << "t=" << t;
+            if (f == 0.0) {
+                slack_again = true;
+                break;
             }
+            impulse += f * rig.period_s();
+            peak = std::max(peak, std::fabs(f));
         }
+        SCOPED_TRACE("play " + std::to_string(play));
+        EXPECT_GE(first_force, t_engage - rig.period_s());
+        EXPECT_LE(first_force, t_engage + 0.030);
+        EXPECT_NEAR(peak, b * u, 0.2 * b * u);
+        // The handle pulls the mass along: the force on it points back (−x).
+        EXPECT_NEAR(-impulse, m * u * (1 + overshoot), 0.15 * m * u);
         EXPECT_TRUE(slack_again) << "the overshoot of ζ = 0.7 carries the mass back into the play";
     }
 }
 
 TEST(Inertia, PlayLetsTheMassRattle) {
-    // A quick reversal inside the play feels nothing; the mass keeps drifting.
+    // A quick reversal inside the play feels nothing: the mass, at rest, stays where it
+    // is while the handle shakes around it, within 1000 of it inside a play of ±2000. The
+    // shake starts from rest (a velocity that starts at 0: the mass is driven by the
+    // acceleration estimate, whose integral over a velocity step falls short, see
+    // PlayThenATetherDampedAtZetaPointSeven), and the force is exactly 0 throughout.
     DynamicRig rig;
     for (int n = 0; n < 3; ++n) rig.tick({0});
     rig.play(inertia_params(8000, 2000));
     for (int n = 0; n < 200; ++n) {
-        const double x = 500 * std::sin(2 * kPiD * 5 * n * rig.period_s());  // ±500 within ±2000
+        const double x = 500 * (1 - std::cos(2 * kPiD * 5 * n * rig.period_s()));
         ASSERT_EQ(rig.tick({x}).force[0], 0.0f) << n;
     }
 }
