@@ -433,6 +433,13 @@ json LiveSession::state_frame(bool* pointer_answered, bool* news) {
     // Without news the reports were all the newest one but for their time: the page needs
     // only that one (its plot draws a flat line through the rest).
     if (!changed && rows.size() > 1) rows.erase(rows.begin(), rows.end() - 1);
+    // The quiet's last report goes ahead of the news that ends it, so that the plot knows
+    // the quiet lasted until then (an onset lies after it), unless a keep-alive sent it.
+    if (!changed) {
+        if (!rows.empty()) quiet_row_ = rows.back();
+    } else if (!quiet_row_.is_null()) {
+        rows.insert(rows.begin(), std::exchange(quiet_row_, nullptr));
+    }
     const auto built = Clock::now();
     const double pointer_age_us = pointer_seq_ == 0 ? 0.0 : us_between(pointer_.read, built);
     json frame = {{"type", "state"},       {"t_us", t_us}, {"samples", rows},

@@ -136,6 +136,13 @@ private:
         std::string effects;  // each effect's state, start count and arming
     };
     Shown shown_;
+    // The newest report of the frames without news since the last frame with news; null
+    // when none, or when a keep-alive carried it (frame_sent_without_news()).
+    nlohmann::json quiet_row_;
+
+public:
+    // The server sent the last frame although it had no news (the keep-alive).
+    void frame_sent_without_news() { quiet_row_ = nullptr; }
 };
 
 }  // namespace feel::studio

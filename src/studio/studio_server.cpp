@@ -290,6 +290,7 @@ private:
             // keep-alive: at rest the browser has nothing to parse or redraw.
             if (news || now - last_sent_ >= kKeepAliveInterval) {
                 send(frame.dump(), answers_pointer ? session_->pointer_seq() : 0);
+                if (!news) session_->frame_sent_without_news();
                 last_sent_ = now;
             }
             last_frame_ = now;
