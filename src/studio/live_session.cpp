@@ -355,7 +355,7 @@ bool LiveSession::pointer_answer_ready() const {
     return s.seq > last_sample_ && s.host_us >= steady_us(pointer_.applied) && force_moved(s, pointer_.force);
 }
 
-json LiveSession::state_frame(bool* pointer_answered) {
+json LiveSession::state_frame(bool* pointer_answered, bool* news) {
     std::vector<DeviceSample> samples = device_->samples_after(last_sample_);
     if (samples.size() > kMaxFrameSamples) {  // a browser that fell behind gets the newest
         samples.erase(samples.begin(), samples.end() - static_cast<std::ptrdiff_t>(kMaxFrameSamples));
@@ -370,11 +370,26 @@ json LiveSession::state_frame(bool* pointer_answered) {
     int64_t force_seen_transit_us = 0;
     int64_t force_seen_device_us = 0;  // that report's tick, device time
     const int64_t applied_us = steady_us(pointer_.applied);
+    bool changed = false;
     for (const DeviceSample& s : samples) {
         json row = json::array({static_cast<double>(s.t_us) / 1000.0});
-        for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.force[a]));
-        for (int a = 0; a < s.axis_count; ++a) row.push_back(std::lround(s.position[a]));
-        rows.push_back(row);
+        bool row_changed = !shown_.any || s.buttons != shown_.buttons;
+        shown_.any = true;
+        shown_.buttons = s.buttons;
+        for (int a = 0; a < s.axis_count; ++a) {
+            const long f = std::lround(s.force[a]);
+            row_changed = row_changed || f != shown_.force[a];
+            shown_.force[a] = f;
+            row.push_back(f);
+        }
+        for (int a = 0; a < s.axis_count; ++a) {
+            const long x = std::lround(s.position[a]);
+            row_changed = row_changed || x != shown_.position[a];
+            shown_.position[a] = x;
+            row.push_back(x);
+        }
+        changed = changed || row_changed;
+        rows.push_back(std::move(row));
         last_sample_ = s.seq;
         const int64_t offset = s.host_us - s.t_us;
         if (!min_offset_us_ || offset < *min_offset_us_) min_offset_us_ = offset;
@@ -404,12 +419,33 @@ json LiveSession::state_frame(bool* pointer_answered) {
         last_effect_states_ = effect_states();
         effect_states_at_ = now;
     }
+    std::string effects_key;
+    for (const json& e : last_effect_states_) {
+        effects_key += e["state"].get<std::string>() + ':' + std::to_string(e["starts"].get<int64_t>()) +
+                       (e["armed"].get<bool>() ? "a;" : ";");
+    }
+    if (effects_key != shown_.effects) {
+        changed = true;
+        shown_.effects = std::move(effects_key);
+    }
+    std::vector<json> dynamics = inbox_->take();
+    changed = changed || !dynamics.empty() || !pointer_written_.is_null();
+    // Without news the reports were all the newest one but for their time: the page needs
+    // only that one (its plot draws a flat line through the rest).
+    if (!changed && rows.size() > 1) rows.erase(rows.begin(), rows.end() - 1);
+    // The quiet's last report goes ahead of the news that ends it, so that the plot knows
+    // the quiet lasted until then (an onset lies after it), unless a keep-alive sent it.
+    if (!changed) {
+        if (!rows.empty()) quiet_row_ = rows.back();
+    } else if (!quiet_row_.is_null()) {
+        rows.insert(rows.begin(), std::exchange(quiet_row_, nullptr));
+    }
     const auto built = Clock::now();
     const double pointer_age_us = pointer_seq_ == 0 ? 0.0 : us_between(pointer_.read, built);
     json frame = {{"type", "state"},       {"t_us", t_us}, {"samples", rows},
                   {"position", position},  {"force", force},     {"buttons", buttons},
                   {"pointer_seq", pointer_seq_}, {"pointer_age_us", pointer_age_us},
-                  {"effects", last_effect_states_}, {"dynamics", inbox_->take()},
+                  {"effects", last_effect_states_}, {"dynamics", std::move(dynamics)},
                   {"dropped_reports", device_->dropped_reports()}};
     if (force_seen_us) {
         pointer_.answered = true;
@@ -430,6 +466,7 @@ json LiveSession::state_frame(bool* pointer_answered) {
                                  {"frame_us", static_cast<double>(steady_us(built) - *force_seen_us)}};
     }
     if (pointer_answered) *pointer_answered = force_seen_us.has_value();
+    if (news) *news = changed || force_seen_us.has_value();
     if (!pointer_written_.is_null()) frame["pointer_written"] = std::exchange(pointer_written_, nullptr);
     return frame;
 }

@@ -61,7 +61,12 @@ public:
     void set_workspace(Workspace* workspace) noexcept { workspace_ = workspace; }
     // The next state frame: the device's reports since the last frame. `pointer_answered`
     // says whether it is the first to show the newest pointer message's force change.
-    nlohmann::json state_frame(bool* pointer_answered = nullptr);
+    // `news` says whether it shows the page anything new: a report whose force, position
+    // (in whole units, as the page draws them) or buttons differ from the last frame's, an
+    // effect whose state, start count or arming changed, a dynamic's reports, a pointer's
+    // hops. A frame without news carries only its newest report (the others were the same
+    // but for their time), and the server need not send it (studio_server.cpp).
+    nlohmann::json state_frame(bool* pointer_answered = nullptr, bool* news = nullptr);
     // The frame that answered pointer message `seq` was written to the socket `write_us`
     // after it was queued, behind `ahead` frames: the next frame says so.
     void note_pointer_written(int64_t seq, size_t ahead, double write_us);
@@ -122,6 +127,22 @@ private:
     nlohmann::json pointer_written_;  // the answering frame's write, for the next frame
     std::chrono::steady_clock::time_point effect_states_at_{};  // when last_effect_states_ was read
     nlohmann::json last_effect_states_ = nlohmann::json::array();
+    // What the last frame showed, to tell a frame with news from one without.
+    struct Shown {
+        bool any = false;  // a frame with a report was built
+        long force[kMaxAxes] = {};
+        long position[kMaxAxes] = {};
+        uint32_t buttons = 0;
+        std::string effects;  // each effect's state, start count and arming
+    };
+    Shown shown_;
+    // The newest report of the frames without news since the last frame with news; null
+    // when none, or when a keep-alive carried it (frame_sent_without_news()).
+    nlohmann::json quiet_row_;
+
+public:
+    // The server sent the last frame although it had no news (the keep-alive).
+    void frame_sent_without_news() { quiet_row_ = nullptr; }
 };
 
 }  // namespace feel::studio

@@ -10,7 +10,10 @@
 // pointer message it polls the device every millisecond until a report shows that
 // message's force change and sends that frame at once (at most kLiveFrameHz): a pointer
 // move then shows its force a tick and a report later, not a frame period later, and the
-// browser gets no more frames than it needs (each one costs its processes CPU). When the socket
+// browser gets no more frames than it needs (each one costs its processes CPU). A frame
+// with nothing new for the page (the handle, the force, the buttons and the effects' states
+// as they were) is not sent, but for a keep-alive at kKeepAliveFrameHz that carries the
+// device's clock on: at rest the browser parses and redraws nothing. When the socket
 // closes for any reason, the connection and its session are destroyed, which stops the
 // browser's effects.
 #include "studio_server.hpp"
@@ -253,6 +256,7 @@ private:
 
     static constexpr auto kRestInterval = std::chrono::microseconds(1'000'000 / kStateFrameHz);
     static constexpr auto kLiveInterval = std::chrono::microseconds(1'000'000 / kLiveFrameHz);
+    static constexpr auto kKeepAliveInterval = std::chrono::microseconds(1'000'000 / kKeepAliveFrameHz);
 
     [[nodiscard]] bool interacting(Clock::time_point now) const { return now - last_message_ < kInteractiveWindow; }
 
@@ -280,8 +284,15 @@ private:
         const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->pointer_answer_ready());
         if (due && queue_.size() < 4) {
             bool answers_pointer = false;
-            std::string frame = session_->state_frame(&answers_pointer).dump();
-            send(std::move(frame), answers_pointer ? session_->pointer_seq() : 0);
+            bool news = false;
+            json frame = session_->state_frame(&answers_pointer, &news);
+            // A frame without news (nothing the page draws moved) goes out only as the
+            // keep-alive: at rest the browser has nothing to parse or redraw.
+            if (news || now - last_sent_ >= kKeepAliveInterval) {
+                send(frame.dump(), answers_pointer ? session_->pointer_seq() : 0);
+                if (!news) session_->frame_sent_without_news();
+                last_sent_ = now;
+            }
             last_frame_ = now;
         }
         const auto rest = last_frame_ + kRestInterval - now;
@@ -344,7 +355,8 @@ private:
     std::optional<LiveSession> session_;
     bool closed_ = false;
     bool waiting_ = false;                  // a wait on timer_ is outstanding
-    Clock::time_point last_frame_{};        // when the last state frame was queued
+    Clock::time_point last_frame_{};        // when the last state frame was built
+    Clock::time_point last_sent_{};         // when the last state frame was queued
     Clock::time_point last_message_{};      // when the browser last sent a message
 };
 

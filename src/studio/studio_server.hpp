@@ -35,6 +35,8 @@ inline constexpr size_t kMaxQueuedFrames = 64;             // per browser; state
 // a machine they share with the device (docs/studio.md, "Latency").
 inline constexpr int kStateFrameHz = 60;
 inline constexpr int kLiveFrameHz = 250;
+// At rest (no frame has news for the page: live_session.hpp) a frame goes out this often.
+inline constexpr int kKeepAliveFrameHz = 10;
 inline constexpr std::chrono::milliseconds kInteractiveWindow{500};
 inline constexpr std::chrono::milliseconds kLivePoll{1};  // the device reports every 2 ms (500 Hz)
 

@@ -307,6 +307,71 @@ TEST(SafetyClosedLoop, AFirmHandNeverTrips) {
     }
 }
 
+// --- a hand that yanks the handle -------------------------------------------------------
+
+// The Studio's pointer: a stiff hand whose target jumps between two points, back and forth,
+// the handle snapping after it at several times velocity_ref. With an effect pushing the
+// handle one way, half of each yank goes with the force, but far faster than the force
+// could speed up the bare handle (the hand's spring pulls ~20 times harder than the motor
+// can); the other half goes against it. Neither is a free handle: no trip, no fade.
+struct Yank {
+    const char* what;
+    EffectParams load;
+    double from;  // the two targets on x
+    double to;
+};
+
+std::vector<Yank> yanks() {
+    std::vector<Yank> out;
+    EffectParams spring;
+    spring.type = EffectType::spring;
+    spring.conditions[0].pos_coefficient = 5000;
+    spring.conditions[0].neg_coefficient = 5000;
+    out.push_back({"spring 5000, -6000 <-> +6000", spring, -6000, 6000});
+    spring.conditions[0].pos_coefficient = 10000;
+    spring.conditions[0].neg_coefficient = 10000;
+    out.push_back({"spring 10000, -9000 <-> +9000", spring, -9000, 9000});
+    EffectParams wall;
+    wall.type = EffectType::axis_wall;
+    wall.axis_count = 1;
+    wall.axes[0] = Axis::x;
+    wall.wall = {8000, WallSense::positive, 5000, OffsetMode::absolute, 0, 0, 0, true};
+    out.push_back({"wall at +5000, 0 <-> +9500", wall, 0, 9500});
+    out.push_back({"wall at +5000, -6000 <-> +9500", wall, -6000, 9500});
+    return out;
+}
+
+TEST(SafetyClosedLoop, AStiffHandYankingTheHandleAcrossASpringOrAWallNeverTrips) {
+    for (const char* name : {"iforce2", "3axis", "wheel"}) {
+        const sim::DeviceProfile& profile = *sim::find_device_profile(name);
+        for (const Yank& yank : yanks()) {
+            for (int64_t every_us : {30'000, 60'000, 120'000, 400'000}) {
+                Rig rig(profile, sim::Grip::stiff, no_watchdog(profile, 100'000));
+                rig.play(yank.load);
+                double target[kMaxAxes] = {yank.from};
+                ASSERT_TRUE(rig.device().set_live_target(target, profile.axis_count));
+                rig.run_until(500'000);  // faded in, at rest at the first point
+                double fastest = 0;
+                float lowest_fade = 1;
+                for (int i = 0; i < 40; ++i) {
+                    target[0] = i % 2 ? yank.from : yank.to;
+                    ASSERT_TRUE(rig.device().set_live_target(target, profile.axis_count));
+                    for (const Tick& t : rig.run_until(500'000 + (i + 1) * every_us)) {
+                        fastest = std::max(fastest, std::fabs(t.velocity));
+                        lowest_fade = std::min(lowest_fade, t.safety.fade_level);
+                    }
+                }
+                const std::string what = std::string(name) + ", " + yank.what + ", every " +
+                                         std::to_string(every_us / 1000) + " ms";
+                // A yank, not a nudge: the handle runs past the runaway speed.
+                EXPECT_GT(fastest, rig.safety().config().hands_off.runaway_speed) << what;
+                EXPECT_EQ(rig.safety().state().hands_off_trips, 0u) << what;
+                EXPECT_EQ(lowest_fade, 1.0f) << what;
+            }
+        }
+    }
+}
+
 // --- the host-link watchdog ----------------------------------------------------------------
 
 TEST(SafetyClosedLoop, ASilentHostStopsEveryEffect) {

@@ -576,6 +576,67 @@ TEST(SafetyHandsOff, ARunawayWithASustainedPushAlongItLatches) {
     EXPECT_LT(feed(weak, 0, 200'000, running(1, 2000), [](int64_t) { return 2000.0; }).trip_us, 0);
 }
 
+// A hand that throws the handle along a sustained push, faster than the push could speed up
+// the bare handle, is a hand: a free handle gains what its motor gives it (within the
+// model's tolerance), not three times that. Here the speed grows as v' = 3·(k·F − f_c − c·v)
+// from past the runaway speed.
+TEST(SafetyHandsOff, AHandThrowingTheHandleAlongThePushIsNoRunaway) {
+    const SafetyConfig c = safety_config_for(joystick());
+    const FreeHandleModel& h = c.hands_off.axes[0];
+    const double fast = c.hands_off.runaway_speed * 1.01;
+    const double force = 8000;
+    const double a = h.accel_per_force * force - h.friction_accel;
+    const auto thrown = [&](double t) {
+        return Motion{0, a / h.damping_rate + (fast - a / h.damping_rate) * std::exp(-3 * h.damping_rate * t)};
+    };
+    SafetyMonitor m = configured(c);
+    EXPECT_LT(feed(m, 0, 200'000, thrown, [&](int64_t) { return force; }).trip_us, 0);
+}
+
+// Let go while moving against a sustained push (a hand was dragging it the other way), the
+// bare handle first slows down, turns, and only then does the push drive it toward a stop.
+// It is judged from the turn on, as a handle let go at rest would be: hands-off latches
+// after the turn, within a window and the confirm time of it. Until the turn it moves away
+// from where the push throws it. The free motion, with A± = k·F ± f_c (friction opposes
+// the motion): v = A+/c + (v0 − A+/c)·e^(−c·s) until v = 0 at
+// s_turn = ln((A+/c − v0)/(A+/c))/c, then from rest v = A−/c·(1 − e^(−c·s')).
+TEST(SafetyHandsOff, AHandleLetGoMovingAgainstThePushIsJudgedFromItsTurn) {
+    const SafetyConfig c = safety_config_for(joystick());
+    const FreeHandleModel& h = c.hands_off.axes[0];
+    const double k = h.accel_per_force, damping = h.damping_rate, fc = h.friction_accel;
+    for (double force : {10000.0, 6000.0}) {
+        const double v0 = -100000;  // dragged against the push at velocity_ref, 0.5 m/s
+        const double let_go = 0.3;
+        const double up = (k * force + fc) / damping, down = (k * force - fc) / damping;
+        const double s_turn = std::log((up - v0) / up) / damping;
+        // held still at +4000 under the push, then dragged against it from 250 ms
+        const double drag = 0.25;
+        const double x_let_go = 4000 + v0 * (let_go - drag);
+        const double x_turn = x_let_go + up * s_turn + (v0 - up) * (1 - std::exp(-damping * s_turn)) / damping;
+        const auto motion = [&](double t) {
+            if (t < drag) return Motion{4000, 0};
+            if (t < let_go) return Motion{4000 + v0 * (t - drag), v0};
+            const double s = t - let_go;
+            if (s < s_turn) {
+                const double e = std::exp(-damping * s);
+                return Motion{x_let_go + up * s + (v0 - up) * (1 - e) / damping, up + (v0 - up) * e};
+            }
+            const double r = s - s_turn;
+            const double e = std::exp(-damping * r);
+            return Motion{x_turn + down * (r - (1 - e) / damping), down * (1 - e)};
+        };
+        SafetyMonitor m = configured(c);
+        const Episode run = feed(m, 0, 400'000, motion, [&](int64_t) { return force; });
+        ASSERT_GE(run.trip_us, 0) << force;
+        const double trip = static_cast<double>(run.trip_us) * 1e-6;
+        const double turn = let_go + s_turn;
+        const double w = 1e-6 * static_cast<double>(c.hands_off.window_us);
+        const double confirm = 1e-6 * static_cast<double>(c.hands_off.confirm_us);
+        EXPECT_GT(trip, turn) << force;
+        EXPECT_LE(trip, turn + w + confirm + 0.002) << force;
+    }
+}
+
 // The bare handle of a FreeHandleModel axis, integrated finely (100 Euler substeps per
 // tick), with a stop at ±10000 that bounces it back at half its speed: an impact the
 // monitor's model knows nothing of. Optionally a hand pushes it with hand_accel.
