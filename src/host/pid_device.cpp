@@ -727,9 +727,21 @@ std::vector<uint16_t> PidDevice::effects() const {
 Result<EffectStatusInfo> PidDevice::status(uint16_t handle) {
     const std::string what = "status of effect " + std::to_string(handle);
     if (!emulated(handle)) {
+        std::lock_guard lock(core_->mu);
+        const auto it = core_->effects.find(handle);
+        if (it != core_->effects.end() && core_->host_triggers.armed(handle)) {
+            // The device plays it, and the host runs its reflex (starts it on each press the
+            // Input report shows): "emulated", which is what the host does for it.
+            EffectStatusInfo info;
+            info.state = runtime::ReportedEffectState::emulated;
+            info.emulated = true;
+            info.iterations = it->second.params.iterations;
+            return info;
+        }
         return Status::failure(ErrorKind::not_supported,
                                what + ": a standard PID device reports no per-effect status to this host "
-                                      "(only host-rendered effects have one)");
+                                      "(only host-rendered effects and device effects whose trigger the host runs "
+                                      "have one)");
     }
     Result<HostEffect> h = host_effect(handle, what);
     if (!h) return h.status();

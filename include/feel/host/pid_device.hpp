@@ -161,8 +161,10 @@ public:
     [[nodiscard]] std::vector<uint16_t> effects() const;
     // Whether `handle` is a host-rendered effect.
     [[nodiscard]] bool emulated(uint16_t handle) const noexcept { return handle >= kHostHandleBase; }
-    // A host-rendered effect's status ("emulated" while it plays). A standard PID device
-    // tells a host nothing per effect: not_supported for a device block.
+    // A host-rendered effect's status ("emulated" while it plays). A device block whose
+    // trigger the host runs (trigger_emulated()) says "emulated" with its iterations: the
+    // host starts it on each press; the device tells no more. A standard PID device tells a
+    // host nothing per effect: not_supported for any other device block.
     [[nodiscard]] Result<EffectStatusInfo> status(uint16_t handle);
     [[nodiscard]] PidEmulationStats emulation_stats() const;
     // Sets (or, empty, removes) the observer of host emulation's renders.
