@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
         check(play.updates > 0 && play.levels > 0 && !play.renders.empty(),
               play.name + ": the host rendered and streamed (" + std::to_string(play.updates) + " updates, " +
                   std::to_string(play.levels) + " levels sent, " + std::to_string(play.renders.size()) + " renders logged)");
-        if (stop_tick <= start_tick || start_tick < 2 * kLoopHz) {
+        if (stop_tick <= start_tick || start_tick < 2 * kSlopeWindow) {
             check(false, play.name + ": its device ticks make no sense");
             continue;
         }
@@ -350,6 +350,7 @@ int main(int argc, char** argv) {
                 any = true;
             }
             if (!any) host_start = host_start_latest = start_tick;
+            host_start = std::max<int64_t>(host_start, 2);  // the rendering creates the effect 2 ticks before
         }
         const int64_t start_spread = std::max<int64_t>(0, host_start_latest - host_start);
         const Render dev = render(test::vm::sensation(play.name), host_start, stop_tick);
