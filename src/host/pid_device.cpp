@@ -21,6 +21,7 @@
 
 #include "descriptor_check.hpp"
 #include "emulation/pid_emulation.hpp"
+#include "emulation/sense_clock.hpp"
 #include "emulation/trigger_watch.hpp"
 #include "feel/effect_validation.hpp"
 #include "feel/peripheral/peripheral.hpp"
@@ -81,6 +82,12 @@ struct PidDeviceCore {
     std::thread io;
     std::atomic<bool> stopping{false};
     std::vector<uint16_t> fired;  // the I/O thread's: blocks whose host-run trigger fired
+    // The I/O thread's: the Input reports of one drain (read back to back), their read
+    // times and their sense times (emulation/sense_clock.hpp).
+    std::vector<protocol::pid::JoystickReading> drain;
+    std::vector<int64_t> drain_arrivals, drain_sense;
+    emulation::SenseClock sense_clock;
+    PidDevice::EmulationObserver emulation_observer;  // guarded by mu
 
     void start() {
         io = std::thread([this] { run(); });
@@ -91,9 +98,9 @@ struct PidDeviceCore {
         return emulation;
     }
 
-    // Files a reply, or renders an Input report. False when the connection is lost to
-    // another host.
-    bool handle(Frame& f, emulation::PidEmulation* em, bool& rendered) {
+    // Files a reply, or keeps an Input report for the drain's render (render_drain). False
+    // when the connection is lost to another host.
+    bool handle(Frame& f) {
         if (f.kind == FrameKind::busy) {
             mark_gone("the device " + address + " is in use by another host");
             return false;
@@ -102,18 +109,8 @@ struct PidDeviceCore {
             protocol::pid::JoystickReading reading;
             if (!layout_known.load(std::memory_order_acquire)) return true;  // before attach() read it
             if (!protocol::pid::read_joystick(layout, f.payload, reading)) return true;
-            const int64_t now = clock();
-            {
-                std::lock_guard lock(mu);
-                buttons = reading.buttons;
-                hats = reading.hats;
-                host_triggers.update(now, reading.buttons, reading.hats, fired);
-            }
-            if (em != nullptr) {
-                std::lock_guard lock(em->mu);
-                em->render(now, reading);
-                rendered = true;
-            }
+            drain.push_back(reading);
+            drain_arrivals.push_back(clock());
             return true;
         }
         if (f.kind != FrameKind::feature_reply && f.kind != FrameKind::descriptor_reply) return true;
@@ -126,8 +123,53 @@ struct PidDeviceCore {
         return true;
     }
 
-    // The force's Set Constant Force reports, fire and forget.
-    void send_due(emulation::PidEmulation& em) {
+    // The Input reports read back to back: each gets its sense time from the report sequence
+    // (emulation/sense_clock.hpp), then, in order, runs the host's reflexes and, while host
+    // emulation runs, a render of the host's engine at that time. Returns whether it rendered.
+    bool render_drain(emulation::PidEmulation* em) {
+        if (drain.empty()) return false;
+        drain_sense.resize(drain.size());
+        sense_clock.place(drain_arrivals, drain_sense);
+        for (std::size_t i = 0; i < drain.size(); ++i) {
+            std::lock_guard lock(mu);
+            buttons = drain[i].buttons;
+            hats = drain[i].hats;
+            host_triggers.update(drain_sense[i], drain[i].buttons, drain[i].hats, fired);
+        }
+        if (em != nullptr) {
+            std::lock_guard lock(em->mu);
+            for (std::size_t i = 0; i < drain.size(); ++i) em->render(drain_sense[i], drain[i]);
+        }
+        return em != nullptr;
+    }
+
+    // The observer's record of the drain's renders (the levels sent go with the last).
+    void observe(const std::vector<std::pair<uint16_t, int32_t>>& sent, bool stalled, int64_t stall_us) {
+        PidDevice::EmulationObserver observer;
+        {
+            std::lock_guard lock(mu);
+            observer = emulation_observer;
+        }
+        if (!observer) return;
+        PidEmulationUpdate u;
+        if (stalled) {
+            u.stalled = true;
+            u.arrival_us = u.sense_us = stall_us;
+            u.sent = sent;
+            observer(u);
+            return;
+        }
+        for (std::size_t i = 0; i < drain.size(); ++i) {
+            u.arrival_us = drain_arrivals[i];
+            u.sense_us = drain_sense[i];
+            for (int a = 0; a < kMaxAxes; ++a) u.position[a] = drain[i].position[a];
+            if (i + 1 == drain.size()) u.sent = sent;
+            observer(u);
+        }
+    }
+
+    // The force's Set Constant Force reports, fire and forget; returns what went.
+    std::vector<std::pair<uint16_t, int32_t>> send_due(emulation::PidEmulation& em) {
         std::vector<std::pair<uint16_t, int32_t>> due;
         {
             std::lock_guard lock(em.mu);
@@ -138,12 +180,13 @@ struct PidDeviceCore {
             std::optional<std::vector<uint8_t>> bytes = protocol::pid::set_constant_force(layout, block, level, error);
             if (bytes) (void)send(FrameKind::output_report, std::move(*bytes), "host emulation: Set Constant Force");
         }
+        return due;
     }
 
     void run() noexcept {
-        // When the last frame came (steady clock): the host's clock is read for renders only
-        // (one per Input report, or a stall's), never to find out whether one is due, so a
-        // caller's clock (a test's, a probe's) sees one reading per render.
+        // When the last frame came (steady clock): the host's clock is read once per Input
+        // report (its arrival) and once per stall render, never to find out whether one is
+        // due, so a caller's clock (a test's, a probe's) sees one reading per report.
         auto last_frame = std::chrono::steady_clock::now();
         while (!stopping) {
             try {
@@ -151,28 +194,39 @@ struct PidDeviceCore {
                 // While emulating, wake often enough to notice a device that went quiet.
                 std::optional<Frame> f = connection->receive(std::chrono::milliseconds(em ? 1 : 50));
                 if (!f) {
-                    bool stalled = false;
-                    const bool quiet =
-                        std::chrono::steady_clock::now() - last_frame >= std::chrono::microseconds(emulation::kStallUs);
-                    if (em && quiet) {
-                        last_frame = std::chrono::steady_clock::now();  // the next look in kStallUs
-                        std::lock_guard lock(em->mu);
-                        stalled = em->render_if_stalled(clock());
+                    // A silent device: once it has a report period, only a silence longer
+                    // than a loaded link's gaps (whose reports come later, in a burst) gets
+                    // a render on the last positions; a stand-in render there would feed
+                    // the velocity estimate a handle standing still.
+                    const auto stall = std::chrono::microseconds(sense_clock.learned() ? emulation::kPeriodicStallUs
+                                                                                       : emulation::kStallUs);
+                    if (em && std::chrono::steady_clock::now() - last_frame >= stall) {
+                        last_frame = std::chrono::steady_clock::now();  // the next look a stall later
+                        int64_t t = 0;
+                        bool stalled = false;
+                        {
+                            std::lock_guard lock(em->mu);
+                            if (em->has_reading()) {
+                                t = sense_clock.place_silence(clock());
+                                stalled = em->render_if_stalled(t);
+                            }
+                        }
+                        if (stalled) observe(send_due(*em), true, t);
                     }
-                    if (stalled) send_due(*em);
                     continue;
                 }
                 last_frame = std::chrono::steady_clock::now();
-                bool rendered = false;
-                if (!handle(*f, em.get(), rendered)) return;
+                drain.clear();
+                drain_arrivals.clear();
+                if (!handle(*f)) return;
                 // Everything already queued is read before the force goes: the newest force,
                 // never a backlog.
-                while (rendered) {
+                while (!drain.empty()) {
                     std::optional<Frame> more = connection->receive(std::chrono::milliseconds(0));
                     if (!more) break;
-                    if (!handle(*more, em.get(), rendered)) return;
+                    if (!handle(*more)) return;
                 }
-                if (rendered) send_due(*em);
+                if (render_drain(em.get())) observe(send_due(*em), false, 0);
                 start_fired();
             } catch (const std::exception& e) {
                 mark_gone(std::string("the device is gone: ") + e.what());
@@ -679,9 +733,21 @@ std::vector<uint16_t> PidDevice::effects() const {
 Result<EffectStatusInfo> PidDevice::status(uint16_t handle) {
     const std::string what = "status of effect " + std::to_string(handle);
     if (!emulated(handle)) {
+        std::lock_guard lock(core_->mu);
+        const auto it = core_->effects.find(handle);
+        if (it != core_->effects.end() && core_->host_triggers.armed(handle)) {
+            // The device plays it, and the host runs its reflex (starts it on each press the
+            // Input report shows): "emulated", which is what the host does for it.
+            EffectStatusInfo info;
+            info.state = runtime::ReportedEffectState::emulated;
+            info.emulated = true;
+            info.iterations = it->second.params.iterations;
+            return info;
+        }
         return Status::failure(ErrorKind::not_supported,
                                what + ": a standard PID device reports no per-effect status to this host "
-                                      "(only host-rendered effects have one)");
+                                      "(only host-rendered effects and device effects whose trigger the host runs "
+                                      "have one)");
     }
     Result<HostEffect> h = host_effect(handle, what);
     if (!h) return h.status();
@@ -710,6 +776,11 @@ PidEmulationStats PidDevice::emulation_stats() const {
     out.levels_sent = em->levels_sent;
     for (const emulation::PidEmulation::LinkAxis& l : em->link()) out.link_blocks.push_back(l.block);
     return out;
+}
+
+void PidDevice::observe_emulation(EmulationObserver observer) {
+    std::lock_guard lock(core_->mu);
+    core_->emulation_observer = std::move(observer);
 }
 
 Result<PidDevice::HostEffect> PidDevice::host_effect(uint16_t handle, const std::string& what) const {

@@ -133,8 +133,13 @@ TEST(PidReflex, TheHostRunsAHatReflexWithinAReportPeriod) {
             return rig.dev->create_effect(jolt({TriggerKind::hat, 1}, kRepeatTicks * kTickUs));
         });
         ASSERT_TRUE(block) << block.status().message;
-        // PID's Trigger Button names buttons only: the host runs a hat trigger.
+        // PID's Trigger Button names buttons only: the host runs a hat trigger, and the
+        // block's status says so (the device plays it; the host starts it).
         EXPECT_TRUE(rig.dev->trigger_emulated(*block));
+        Result<EffectStatusInfo> status = rig.dev->status(*block);
+        ASSERT_TRUE(status) << status.status().message;
+        EXPECT_EQ(status->state, runtime::ReportedEffectState::emulated);
+        EXPECT_TRUE(status->emulated);
         const int64_t press = rig.lockstep.tick() + 50;
         const std::vector<float> force = press_and_hold(rig, true, press, 70);
         const std::vector<int64_t> s = starts(force, 0);

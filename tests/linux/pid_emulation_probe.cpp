@@ -11,10 +11,14 @@
 // Prints, for the checker:
 //   emu descriptor bytes=N reports=R vendor_usages=0     (read from sysfs, parsed here)
 //   emu caps feel_device=0 types=11 emulated=WALL,TEXTURE,RECOIL problem=""
-//   emu play NAME start=MONO stop=MONO blocks=X,Y updates=U levels=L
-//   emu reads NAME MONO MONO ...       (the host's clock readings: one per update)
+//   emu play NAME start=MONO stop=MONO blocks=X,Y updates=U levels=L updates_before=B updates_started=S
+//   emu update NAME arrival=MONO sense=MONO x=X y=Y stalled=0   (each render: what it read)
+//   emu level NAME sent=MONO arrival=MONO sense=MONO block=B magnitude=M x=X y=Y
+//                                      (each Set Constant Force, with the report it came from)
 //   emu done sensations=3 errors=0
-// MONO: CLOCK_MONOTONIC in seconds (the clock the device's log is stamped with).
+// MONO: CLOCK_MONOTONIC in seconds (the clock the device's log is stamped with). A sense
+// time is the host's reconstruction (src/host/emulation/sense_clock.hpp) on that clock: the
+// report's sensing plus the link's least delay.
 #include <time.h>
 
 #include <chrono>
@@ -59,59 +63,12 @@ void describe_descriptor(const std::string& node) {
                 parse.descriptor.reports.size(), vendor);
 }
 
-// The host's clock: the steady clock, each reading also kept as CLOCK_MONOTONIC.
-struct ClockLog {
+// What the host rendered from, per render (PidDevice::observe_emulation), while `on`.
+struct RenderLog {
     std::mutex mu;
-    std::vector<double> readings;
     bool on = false;
-};
-
-// The host's end of the link, recording what PidDevice reads and sends while `on`: each
-// Set Constant Force with the send time and the Input report received last before it (the
-// report the level was computed from: PidDevice renders every report it reads and sends
-// once it has read all that is queued).
-class RecordingLink final : public transport::Connection {
-public:
-    explicit RecordingLink(std::unique_ptr<transport::Connection> inner) : inner_(std::move(inner)) {}
-    struct Sent {
-        double sent, read;
-        std::vector<uint8_t> level_report, input_report;
-    };
-    void send(const transport::Frame& f) override {
-        if (f.kind == transport::FrameKind::output_report) {
-            std::lock_guard lock(mu_);
-            if (on_) sent_.push_back({monotonic_s(), last_read_, f.payload, last_input_});
-        }
-        inner_->send(f);
-    }
-    std::optional<transport::Frame> receive(std::chrono::milliseconds timeout) override {
-        std::optional<transport::Frame> f = inner_->receive(timeout);
-        if (f && f->kind == transport::FrameKind::input_report) {
-            std::lock_guard lock(mu_);
-            last_read_ = monotonic_s();
-            last_input_ = f->payload;
-        }
-        return f;
-    }
-    void close() noexcept override { inner_->close(); }
-    [[nodiscard]] std::string peer() const override { return inner_->peer(); }
-    void record(bool on) {
-        std::lock_guard lock(mu_);
-        on_ = on;
-        if (on) sent_.clear();
-    }
-    std::vector<Sent> sent() {
-        std::lock_guard lock(mu_);
-        return sent_;
-    }
-
-private:
-    std::unique_ptr<transport::Connection> inner_;
-    std::mutex mu_;
-    bool on_ = false;
-    double last_read_ = 0;
-    std::vector<uint8_t> last_input_;
-    std::vector<Sent> sent_;
+    std::vector<host::PidEmulationUpdate> updates;
+    std::vector<double> sent_at;  // CLOCK_MONOTONIC after the render's levels went
 };
 
 struct Sensation {
@@ -124,7 +81,6 @@ struct Sensation {
 int main(int argc, char** argv) {
     const std::string node = argc > 1 ? argv[1] : "/dev/hidraw0";
     describe_descriptor(node);
-    auto clock_log = std::make_shared<ClockLog>();
     const auto epoch = std::chrono::steady_clock::now();
     std::unique_ptr<transport::Connection> connection;
     try {
@@ -133,23 +89,26 @@ int main(int argc, char** argv) {
         std::printf("emu error open: %s\n", e.what());
         return 1;
     }
-    auto recording = std::make_unique<RecordingLink>(std::move(connection));
-    RecordingLink* link = recording.get();
     host::OpenOptions options;
     options.emulation_profile = "iforce2";  // the gadget's profile: the host's engine assumes its mechanism
     host::Result<host::PidDevice> device = host::PidDevice::attach(
-        std::move(recording), "hidraw:" + node, options, [clock_log, epoch] {
+        std::move(connection), "hidraw:" + node, options, [epoch] {
             const auto now = std::chrono::steady_clock::now();
-            {
-                std::lock_guard lock(clock_log->mu);
-                if (clock_log->on) clock_log->readings.push_back(monotonic_s());
-            }
             return std::chrono::duration_cast<std::chrono::microseconds>(now - epoch).count();
         });
     if (!device) {
         std::printf("emu error open: %s\n", device.status().message.c_str());
         return 1;
     }
+    // The host clock (µs since epoch, the steady clock) as CLOCK_MONOTONIC, seconds.
+    const double epoch_mono = std::chrono::duration<double>(epoch.time_since_epoch()).count();
+    auto render_log = std::make_shared<RenderLog>();
+    device->observe_emulation([render_log](const host::PidEmulationUpdate& u) {
+        std::lock_guard lock(render_log->mu);
+        if (!render_log->on) return;
+        render_log->updates.push_back(u);
+        render_log->sent_at.push_back(monotonic_s());
+    });
     const host::PidCaps& caps = device->capabilities();
     int types = 0;
     for (const auto& e : caps.effect_types) types += e.usable ? 1 : 0;
@@ -172,13 +131,14 @@ int main(int argc, char** argv) {
         }
         const host::PidEmulationStats before = device->emulation_stats();
         {
-            std::lock_guard lock(clock_log->mu);
-            clock_log->readings.clear();
-            clock_log->on = true;
+            std::lock_guard lock(render_log->mu);
+            render_log->updates.clear();
+            render_log->sent_at.clear();
+            render_log->on = true;
         }
-        link->record(true);
         const double start = monotonic_s();
         if (!device->start(*handle).ok()) ++errors;
+        const host::PidEmulationStats started = device->emulation_stats();
         host::Result<host::EffectStatusInfo> status = device->status(*handle);
         if (!status || status->state != runtime::ReportedEffectState::emulated) {
             std::printf("emu error status %s: not emulated while it plays\n", s.name);
@@ -186,36 +146,37 @@ int main(int argc, char** argv) {
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(1500));
         const double stop = monotonic_s();
-        link->record(false);
-        if (!device->stop(*handle).ok()) ++errors;
-        std::vector<double> readings;
         {
-            std::lock_guard lock(clock_log->mu);
-            clock_log->on = false;
-            readings.swap(clock_log->readings);
+            std::lock_guard lock(render_log->mu);
+            render_log->on = false;
         }
+        if (!device->stop(*handle).ok()) ++errors;
         const host::PidEmulationStats after = device->emulation_stats();
-        std::printf("emu play %s start=%.6f stop=%.6f blocks=%d,%d updates=%lld levels=%lld\n", s.name, start, stop,
-                    after.link_blocks.size() > 0 ? after.link_blocks[0] : 0,
+        // started: the renders before start() returned (the effect plays from the first
+        // render after `updates_before`, at the latest from the one after `updates_started`).
+        std::printf("emu play %s start=%.6f stop=%.6f blocks=%d,%d updates=%lld levels=%lld updates_before=%lld "
+                    "updates_started=%lld\n",
+                    s.name, start, stop, after.link_blocks.size() > 0 ? after.link_blocks[0] : 0,
                     after.link_blocks.size() > 1 ? after.link_blocks[1] : 0,
                     static_cast<long long>(after.updates - before.updates),
-                    static_cast<long long>(after.levels_sent - before.levels_sent));
-        // Each level sent, with the position the host rendered it from (the device's layout).
-        const protocol::pid::PidLayout& layout = device->layout();
-        for (const RecordingLink::Sent& sent : link->sent()) {
-            const auto block = protocol::pid::read_field(layout, protocol::pid::PidReport::set_constant_force,
-                                                         sent.level_report, 0x000F0022);  // Effect Block Index
-            const auto level = protocol::pid::read_field(layout, protocol::pid::PidReport::set_constant_force,
-                                                         sent.level_report, 0x000F0070);  // Magnitude
-            protocol::pid::JoystickReading reading;
-            if (!block || !level || !protocol::pid::read_joystick(layout, sent.input_report, reading)) continue;
-            std::printf("emu level %s sent=%.6f read=%.6f block=%lld magnitude=%lld x=%.0f y=%.0f\n", s.name, sent.sent,
-                        sent.read, static_cast<long long>(*block), static_cast<long long>(*level),
-                        static_cast<double>(reading.position[0]), static_cast<double>(reading.position[1]));
+                    static_cast<long long>(after.levels_sent - before.levels_sent),
+                    static_cast<long long>(before.updates), static_cast<long long>(started.updates));
+        // What the host rendered from: every render of the recording (its report's arrival
+        // and sense time, positions) and each level it sent after it.
+        std::lock_guard lock(render_log->mu);
+        for (std::size_t i = 0; i < render_log->updates.size(); ++i) {
+            const host::PidEmulationUpdate& u = render_log->updates[i];
+            std::printf("emu update %s arrival=%.6f sense=%.6f x=%.0f y=%.0f stalled=%d\n", s.name,
+                        epoch_mono + static_cast<double>(u.arrival_us) * 1e-6,
+                        epoch_mono + static_cast<double>(u.sense_us) * 1e-6, static_cast<double>(u.position[0]),
+                        static_cast<double>(u.position[1]), u.stalled ? 1 : 0);
+            for (const auto& [block, level] : u.sent) {
+                std::printf("emu level %s sent=%.6f arrival=%.6f sense=%.6f block=%d magnitude=%d x=%.0f y=%.0f\n",
+                            s.name, render_log->sent_at[i], epoch_mono + static_cast<double>(u.arrival_us) * 1e-6,
+                            epoch_mono + static_cast<double>(u.sense_us) * 1e-6, block, level,
+                            static_cast<double>(u.position[0]), static_cast<double>(u.position[1]));
+            }
         }
-        std::printf("emu reads %s", s.name);
-        for (double r : readings) std::printf(" %.6f", r);
-        std::printf("\n");
         if (!device->free_effect(*handle).ok()) ++errors;
         ++played;
         std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the force back to 0 between sensations

@@ -45,6 +45,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "feel/effect.hpp"
@@ -93,6 +94,20 @@ struct PidEmulationStats {
     std::vector<uint16_t> link_blocks;  // the device's Constant Force effect per force axis
 };
 
+// One render of host emulation, for an observer (PidDevice::observe_emulation): what the
+// host rendered from. The sense time is the report's, reconstructed from the report
+// sequence (src/host/emulation/sense_clock.hpp), on the host clock shifted by the link's
+// least delay; the arrival is when the host read it.
+struct PidEmulationUpdate {
+    int64_t arrival_us = 0;  // HostClock
+    int64_t sense_us = 0;    // HostClock frame
+    float position[kMaxAxes] = {};  // the report's positions, normalized
+    bool stalled = false;    // a render on the last positions: the device was silent
+    // The Set Constant Force levels sent after this render ((block, level); the last
+    // render of a drain carries them).
+    std::vector<std::pair<uint16_t, int32_t>> sent;
+};
+
 class PidDevice {
 public:
     // Handles of host-rendered effects start here (device blocks are below it).
@@ -100,6 +115,8 @@ public:
     // The clock host emulation stamps updates with, µs (default: the steady clock). Tests
     // give the simulated device's time.
     using HostClock = std::function<int64_t()>;
+    // Called on the I/O thread after each render of host emulation (keep it short).
+    using EmulationObserver = std::function<void(const PidEmulationUpdate&)>;
 
     // Opens "hidraw:/dev/hidrawN", "usb:VID:PID[:SERIAL]", or any of Device::open's
     // addresses (sim:, unix:, tcp: — a feel device driven as a standard PID one). Reads the
@@ -144,10 +161,14 @@ public:
     [[nodiscard]] std::vector<uint16_t> effects() const;
     // Whether `handle` is a host-rendered effect.
     [[nodiscard]] bool emulated(uint16_t handle) const noexcept { return handle >= kHostHandleBase; }
-    // A host-rendered effect's status ("emulated" while it plays). A standard PID device
-    // tells a host nothing per effect: not_supported for a device block.
+    // A host-rendered effect's status ("emulated" while it plays). A device block whose
+    // trigger the host runs (trigger_emulated()) says "emulated" with its iterations: the
+    // host starts it on each press; the device tells no more. A standard PID device tells a
+    // host nothing per effect: not_supported for any other device block.
     [[nodiscard]] Result<EffectStatusInfo> status(uint16_t handle);
     [[nodiscard]] PidEmulationStats emulation_stats() const;
+    // Sets (or, empty, removes) the observer of host emulation's renders.
+    void observe_emulation(EmulationObserver observer);
     // Whether the host runs `handle`'s trigger (its state is "emulated"): a host-rendered
     // effect's, a hat trigger, or a button on a device whose Set Effect has no Trigger Button.
     [[nodiscard]] bool trigger_emulated(uint16_t handle) const;

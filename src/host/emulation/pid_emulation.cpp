@@ -18,7 +18,6 @@ bool PidEmulation::links(Axis axis) const noexcept {
 void PidEmulation::render(int64_t t_us, const protocol::pid::JoystickReading& reading) {
     last_ = reading;
     has_reading_ = true;
-    last_t_us_ = t_us;
     fired_.clear();
     triggers.update(t_us, reading.buttons, reading.hats, fired_);
     for (const EffectId id : fired_) (void)renderer.start(id, HostRenderer::kOwnIterations, false);
@@ -37,7 +36,7 @@ void PidEmulation::arm_trigger(uint16_t handle, EffectId id, const EffectParams&
 }
 
 bool PidEmulation::render_if_stalled(int64_t t_us) {
-    if (!has_reading_ || t_us - last_t_us_ < kStallUs) return false;
+    if (!has_reading_) return false;
     render(t_us, last_);
     return true;
 }

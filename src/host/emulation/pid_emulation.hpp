@@ -12,13 +12,17 @@
 //
 // Updates. Each Input report the device sends is one update: the positions in it (read by
 // the descriptor's own layout, pid_layout.hpp) go through the host's engine (HostRenderer:
-// the same configuration as the device's own engine would have), stamped with the host's
-// clock, since a standard report carries no time. The I/O thread renders every report it
-// reads but sends only once it has read everything queued, so a link slower than the
-// report rate carries the newest force and never a backlog: the update rate is the highest
-// the link sustains. A device that reports only when something changes would leave
-// time-based effects standing with the handle, so when no report came for kStallUs the host
-// renders on the last positions.
+// the same configuration as the device's own engine would have), at the report's sense
+// time. A standard report carries no time, and its arrival is no measure of it on a link
+// that delivers in bursts, so the sense time is reconstructed from the report sequence
+// (sense_clock.hpp: the device's report grid, anchored to the least-delayed arrivals). The
+// I/O thread reads everything queued, places the drain's reports on the grid, renders each
+// in order and sends once: a link slower than the report rate carries the newest force and
+// never a backlog, so the update rate is the highest the link sustains. A device that
+// reports only when something changes would leave time-based effects standing with the
+// handle, so after a silence (kStallUs before the clock knows a report period,
+// kPeriodicStallUs after: longer than a loaded link's gaps, whose reports arrive later in a
+// burst) the host renders on the last positions.
 //
 // This class is the host's side of it without I/O: PidDevice (pid_device.cpp) owns the
 // link's blocks, reads the reports and sends what due() returns. Locks: mu guards all of
@@ -40,8 +44,10 @@
 
 namespace feel::host::emulation {
 
-// A device that reports no Input for this long gets a render on its last positions.
+// A device that reports no Input for this long gets a render on its last positions: before
+// its report period is known, and once it is (sense_clock.hpp).
 inline constexpr int64_t kStallUs = 10'000;
+inline constexpr int64_t kPeriodicStallUs = 125'000;
 
 class PidEmulation {
 public:
@@ -59,7 +65,8 @@ public:
     // Arms (or disarms, without a trigger) the reflex of host effect `handle` (renderer id
     // `id`) on the buttons and hats of the last reading. Caller holds mu.
     void arm_trigger(uint16_t handle, EffectId id, const EffectParams& params);
-    // A render on the last reading when none came for kStallUs (false: not due).
+    // A render on the last reading at sense time t_us, for a silent device (false: no
+    // reading yet).
     bool render_if_stalled(int64_t t_us);
     // The Set Constant Force levels due: (block, level) of each axis whose level changed
     // since it was last sent; they count as sent.
@@ -80,7 +87,6 @@ private:
     std::vector<LinkAxis> link_;
     protocol::pid::JoystickReading last_{};
     bool has_reading_ = false;
-    int64_t last_t_us_ = 0;
     int32_t level_[kMaxAxes] = {};  // the last render's force per axis index, rounded
     std::vector<EffectId> fired_;   // render()'s reflexes to start
 };
