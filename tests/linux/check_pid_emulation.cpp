@@ -368,7 +368,8 @@ int main(int argc, char** argv) {
             for (const Arrival& arr : arrivals) {
                 if (arr.block != play.block[a] || arr.mono > play.stop + 1.0) continue;
                 if (arr.mono < play.start) {
-                    paired[a].clear();  // only the last one before the start counts
+                    // The force from before the start: kept whole, since a tick in a catch-up
+                    // burst may still carry an earlier one than the last (see `before` below).
                     paired[a].push_back({&arr, std::nullopt});
                     continue;
                 }
@@ -396,14 +397,21 @@ int main(int argc, char** argv) {
         }
         double worst = 0, worst_bound = 0, worst_excess = -1e9, peak = 0, gadget_peak = 0;
         int64_t longest_lag = 0;
-        int within = 0, compared = 0, unknown = 0;
+        int within = 0, compared = 0, unknown = 0, carried_over = 0;
         char worst_at[240] = "";
         for (std::size_t si = 1; si < states.size(); ++si) {
             const State& s = states[si];
             const int64_t m = s.t_us / kTickUs;
             if (m < std::min(start_tick, host_start) || m >= stop_tick || m >= static_cast<int64_t>(dev.position.size()))
                 continue;
-            const std::size_t seq_before = states[si - 1].seq;
+            // The tick before: the state logged before this one, or, when this state came in a
+            // burst (the gadget's loop catching up on overdue ticks back to back, under 1 ms
+            // apart, as TCG starves it), the state before the burst: the level on the motors
+            // may be any that came since (seen: a level that arrived 0.6 ms before a three-tick
+            // burst reached the motors at its third tick).
+            std::size_t before = si - 1;
+            while (before > 0 && states[before + 1].mono - states[before].mono < 1e-3) --before;
+            const std::size_t seq_before = states[before].seq;
             for (int a = 0; a < 2; ++a) {
                 const std::vector<float>& F = dev.force[a];
                 // The level on the motors at tick m: the last to arrive before the tick before
@@ -415,6 +423,20 @@ int main(int argc, char** argv) {
                     else if (p.arrival->seq < s.seq) candidates.push_back(&p);
                 }
                 if (last_before) candidates.push_back(last_before);
+                // A level from before the start that is not 0 is the previous sensation's last
+                // force, whose stop has not reached the gadget yet: nothing of this sensation is
+                // on the motors, so there is nothing of its rendering to compare (the link's
+                // lag, which the earlier sensation's samples already bound).
+                // So is a sample logged before even the last level sent before the start arrived
+                // (no candidate at all): a render from a stale report can set the host's start
+                // ticks before start() ran, while the previous sensation still played.
+                bool carried = candidates.empty();
+                for (const Paired* p : candidates)
+                    carried = carried || (!p->source && p->arrival->mono < play.start && p->arrival->level != 0);
+                if (carried) {
+                    ++carried_over;
+                    continue;
+                }
                 double lag_term = 0;
                 bool known = true;
                 for (const Paired* p : candidates) {
@@ -464,6 +486,9 @@ int main(int argc, char** argv) {
                 ++compared;
             }
         }
+        std::printf("measure %s: %d samples still under the previous sensation's last force (its stop not yet "
+                    "arrived), not compared\n",
+                    play.name.c_str(), carried_over);
         std::printf("measure %s: sense clock: %zu reports calibrated, each within %.1f ms of its tick (after the "
                     "offset %.1f ms)\n",
                     play.name.c_str(), cal.size(), sense_spread * 1e3, c * 1e3);
