@@ -133,6 +133,9 @@ test('code export: C++, C and the SensationLibrary snippet of the current sensat
   const input = page.locator('#editor .field[data-path="conditions[0].pos_coefficient"] input[type=number]');
   await input.fill('4321');
   await input.press('Enter');
+  // the edit is in the document before its answer is awaited: synced() alone is already
+  // true for the previous edit if the page has not sent this one yet (seen in a loaded run)
+  await page.waitForFunction(() => JSON.stringify(window.__studio.store.state.doc).includes('4321'));
   await synced(page);
   // saved, so that the library snippet has a file to load and the CLI the same input
   page.nextAnswer = 'exported.feel.json';
