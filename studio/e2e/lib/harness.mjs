@@ -30,6 +30,12 @@ export const effects = (page) => page.evaluate(() => window.__studio.store.effec
 export async function freshEffect(page, type) {
   await page.evaluate(() => window.__studio.store.update((d) => (d.sensations[d.current].effects = []), -1));
   await page.click(`#palette li[data-type="${type}"]`);
+  // the new effect is in the document before its answer is awaited: synced() is still true
+  // for the previous change until the page has sent this one
+  await page.waitForFunction((t) => {
+    const list = window.__studio.store.effects();
+    return list.length === 1 && list[0].type === t;
+  }, type);
   await synced(page);
 }
 
@@ -93,6 +99,7 @@ export async function playThrough(page, durationMs) {
 
 // The centre of an SVG element, in page pixels.
 export async function centreOf(locator) {
+  await locator.waitFor({ state: 'visible' }); // drawn once the editor has the new state
   const b = await locator.boundingBox();
   return [b.x + b.width / 2, b.y + b.height / 2];
 }
