@@ -61,6 +61,7 @@
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
 #include <cmath>
+#include <limits>
 
 #include "dynamics/dynamic.hpp"
 #include "dynamics/tether_law.hpp"
@@ -81,6 +82,18 @@ TetherAxisState initial_state(const PreparedTether& law, float handle_velocity, 
 }
 
 bool finite(const TetherAxisState& s) noexcept { return std::isfinite(s.stretch) && std::isfinite(s.velocity); }
+
+// A stretch or velocity below float's normal range (FLT_MIN, 1.2e-38 position units or
+// units/s) becomes exactly 0, as on an FPU in flush-to-zero mode. A mass settling against
+// a still handle decays exponentially: without this it spends seconds in subnormal numbers,
+// each operation on which takes a microcode assist of about a hundred cycles on x86 (the
+// 64-effect tick at rest took twice as long), and a mass coasting in its play never
+// reaches the exact rest that tether_tick skips.
+void flush_subnormal(TetherAxisState& s) noexcept {
+    constexpr float kSmallest = std::numeric_limits<float>::min();
+    if (std::fabs(s.stretch) < kSmallest) s.stretch = 0;
+    if (std::fabs(s.velocity) < kSmallest) s.velocity = 0;
+}
 
 // The gravity of the law as seen in the frame of a handle accelerating at `acceleration`:
 // the frame adds the force −M·a on the mass, which the law's gravity term carries.
@@ -131,6 +144,7 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
                                                                     st.handle_velocity[i]};
             advance_prepared_tether(law, gravity_in_frame(law, st.handle_acceleration[i]), now, sensed, hysteresis);
         }
+        flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
 

@@ -162,7 +162,6 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
             if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
     }
-    flush_subnormal(s, rate);
     state.stretch = s;
     state.velocity = rate + u;
     // A step spent wholly in the play gave the mass no tether impulse: exactly 0, not the

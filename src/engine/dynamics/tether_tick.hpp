@@ -19,9 +19,6 @@
 // Real-time safe: no allocation, no exceptions.
 #pragma once
 
-#include <cmath>
-#include <limits>
-
 #include "dynamics/control_law_state.hpp"
 #include "dynamics/tether_law.hpp"
 #include "dynamics/tether_propagator.hpp"
@@ -35,17 +32,6 @@ struct HandleLine {
     float velocity = 0;         // position units/s
     float damper_velocity = 0;  // position units/s
 };
-
-// A stretch or rate below float's normal range (FLT_MIN, 1.2e-38 position units or units/s)
-// becomes exactly 0, as on an FPU in flush-to-zero mode. A mass settling on its tether or
-// coasting to a stop in its play decays exponentially: without this it spends seconds in
-// subnormal numbers, each operation on which takes a microcode assist of about a hundred
-// cycles on x86, and never reaches the exact rest that the steps skip.
-inline void flush_subnormal(float& stretch, float& rate) noexcept {
-    constexpr float kSmallest = std::numeric_limits<float>::min();
-    if (std::fabs(stretch) < kSmallest) stretch = 0;
-    if (std::fabs(rate) < kSmallest) rate = 0;
-}
 
 // The law of one axis in its per-tick form; pieces not yet prepared (step_s = 0).
 [[nodiscard]] PreparedTether prepare_tether(const TetherLaw& law) noexcept;
@@ -74,17 +60,14 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
                                                              HandleLine line, float hysteresis) noexcept {
     if (t.piecewise || t.half_cycles > 0) return advance_watched_tether(t, gravity, state, line, hysteresis);
     const float u = line.velocity;
-    const float s0 = state.stretch;
-    const float rate0 = state.velocity - u;
-    // At rest with a still handle and no force: every piece maps (0, 0) to itself, exactly.
-    if (s0 == 0 && rate0 == 0 && u == 0 && line.damper_velocity == 0 && gravity == 0) return 0.0f;
     // The force on a mass moving with the handle, apart from the spring (tether_law.cpp's
     // segment); the tether is always taut, its damper reading against damper_velocity.
     const float taut_force = t.mass * gravity - t.drag * u - t.b * (u - line.damper_velocity);
+    const float s0 = state.stretch;
+    const float rate0 = state.velocity - u;
     float s = s0;
     float rate = rate0;
     for (int32_t i = 0; i < t.pieces; ++i) propagate(t.above, taut_force, s, rate);
-    flush_subnormal(s, rate);
     state.stretch = s;
     state.velocity = rate + u;
     // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
