@@ -43,7 +43,9 @@ float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
     return 0.0f;
 }
 
-void count_half_cycle(TetherAxisState& state, float stretch, float rest, float hysteresis) noexcept {
+// Out of line: only a law that ends after some half cycles counts them, and inlined the
+// compiler worked the side out on every piece of every law before testing whether to count.
+[[gnu::noinline]] void count_half_cycle(TetherAxisState& state, float stretch, float rest, float hysteresis) noexcept {
     const float e = stretch - rest;
     const int8_t side = e > hysteresis ? 1 : (e < -hysteresis ? -1 : 0);
     if (side == 0 || side == state.side) return;
