@@ -59,6 +59,9 @@ Propagator propagator(double gamma, double w2, double h) noexcept {
 
 // A free mass with damping and a constant force a_f = f/m: ÿ = −a·ẏ + a_f.
 MassState free_step(double a, double a_f, MassState x, double h) noexcept {
+    // Without damping the series below is exactly φ1 = h, φ2 = h·h·0.5 and e = 1: the same
+    // numbers without the exponential (Dynamic Inertia's mass coasting in its play).
+    if (a == 0) return {x.position + x.velocity * h + a_f * (h * h * 0.5), x.velocity + a_f * h};
     const double ah = a * h;
     double phi1, phi2, e;  // φ1 = ∫₀ʰ e^{−at} dt, φ2 = ∫₀ʰ φ1(t) dt, e = e^{−ah}
     if (ah < kFreeSeriesLimit) {
