@@ -137,14 +137,18 @@ struct Sling {
     // Velocity Verlet with the air applied exactly around it (Strang splitting). Two axes
     // (the joystick's plane) are most slings: with the count a constant the loops unroll
     // and the ball's state stays in registers (the same operations in the same order as
-    // for any count, so the same bits).
+    // for any count, so the same bits). Not in a build for size (-Os: the Cortex-M4F
+    // image, whose double arithmetic is library calls either way), where the second copy
+    // of the steps would cost 1.2 KB of flash.
     void advance(BallMotion& ball, const BallHandlePath& handle, double h_total,
                  double impulse[kMaxAxes]) const noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
         if (count == 2) {
             advance_axes(std::integral_constant<int, 2>{}, ball, handle, h_total, impulse);
-        } else {
-            advance_axes(count, ball, handle, h_total, impulse);
+            return;
         }
+#endif
+        advance_axes(count, ball, handle, h_total, impulse);
     }
 
     template <typename Count>
