@@ -29,13 +29,14 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
     t.gain_external = t.mass * one * one * one * t.inverse_dt * t.inverse_dt;
     t.count = config.sensor_step;
     t.min_speed = t.gain_velocity * t.count * t.inverse_dt;
+    t.fast_speed = 2.0f * t.count / kStopGuardTime;
     t.hold_off = static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1;
     t.settle = static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1;
     return t;
 }
 
 float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float others,
-                 float force, float f, float pos_coefficient, float neg_coefficient) noexcept {
+                 float force, float f, float pos_coefficient, float neg_coefficient, bool recently_fast) noexcept {
     if (!t.on || !std::isfinite(position) || !std::isfinite(applied) || !std::isfinite(others)) return force;
     if (!g.primed) {
         g = StopGuard{};
@@ -81,6 +82,12 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
         g.sliding = true;
         g.direction = v > 0 ? 1.0f : -1.0f;
     }
+    if (std::fabs(v) >= t.fast_speed) {
+        g.decelerated = 0.0f;
+    } else {
+        g.decelerated += std::fabs(force) * t.dt / t.mass;
+    }
+    if (recently_fast && !(g.decelerated <= 2.0f * t.fast_speed)) return force;
     if (!g.sliding || g.hold_off > 0 || g.agreed < t.settle || std::fabs(g.external) > kStopGuardFreeFraction * f ||
         pos_coefficient < 0 || neg_coefficient < 0) {
         return force;

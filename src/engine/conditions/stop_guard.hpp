@@ -75,6 +75,8 @@ struct StopGuard {
     float own = 0.0f;       // this friction's share of the engine's last force, force units
     float stop_at = 0.0f;   // where the handle was to come to rest
     float direction = 0.0f; // +1 or -1: the way it slides
+    float decelerated = 0.0f; // what the friction's force alone could have taken off the velocity
+                              // since the handle last slid faster than StopGuardTick::fast_speed, units/s
     int32_t hold_off = 0;   // ticks the guard stands aside (it was wrong)
     int32_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction
     bool primed = false;
@@ -88,6 +90,7 @@ struct StopGuardTick {
     float gain_position = 0.0f, gain_velocity = 0.0f, gain_external = 0.0f;
     float min_speed = 0.0f;  // the observer's velocity noise: h·count/T
     float count = 0.0f;
+    float fast_speed = 0.0f; // 2 counts over the observer's time constant: its prediction has bite
     int32_t hold_off = 0;
     int32_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
     bool on = false;         // device_mass known and a tick to observe over
@@ -101,9 +104,12 @@ struct StopGuardTick {
 // friction about to be applied (after its saturation), `f` its magnitude. Returns `force`, or
 // the force that brings the handle to rest. May set the bristle's deflection (after a stop).
 // Call remember_output with what was finally applied.
+// With `recently_fast` (texture), the stop is guarded only while the force could not yet have
+// stopped the handle since it last slid faster than fast_speed (a free stop), not on a handle
+// that a hand drags slower than that (texture_condition.cpp).
 [[nodiscard]] float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position,
                                float applied, float others, float force, float f, float pos_coefficient,
-                               float neg_coefficient) noexcept;
+                               float neg_coefficient, bool recently_fast = false) noexcept;
 
 // The friction's share of the engine's force this tick: its force times the effect's and
 // the device's gain.
