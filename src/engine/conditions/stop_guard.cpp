@@ -36,7 +36,7 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
 }
 
 float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float others,
-                 float force, float f, float pos_coefficient, float neg_coefficient, bool recently_fast) noexcept {
+                 float force, float f, float pos_coefficient, float neg_coefficient) noexcept {
     if (!t.on || !std::isfinite(position) || !std::isfinite(applied) || !std::isfinite(others)) return force;
     if (!g.primed) {
         g = StopGuard{};
@@ -82,14 +82,18 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
         g.sliding = true;
         g.direction = v > 0 ? 1.0f : -1.0f;
     }
-    if (std::fabs(v) >= t.fast_speed) {
-        g.decelerated = 0.0f;
-    } else {
-        g.decelerated += std::fabs(force) * t.dt / t.mass;
-    }
-    if (recently_fast && !(g.decelerated <= 2.0f * t.fast_speed)) return force;
+    // A free stop is quick: the handle slid faster than fast_speed (2 counts over τ, where
+    // the observer's prediction can be refuted by the sensor) no longer ago than the
+    // friction's force alone could have stopped it. A hand dragging the handle slower than
+    // that, whose travel the sensor cannot tell from the observer's prediction of a stop,
+    // is left to the bristle.
+    g.decelerated = std::fabs(v) >= t.fast_speed ? 0.0f : g.decelerated + std::fabs(force) * t.dt / t.mass;
+    if (!(g.decelerated <= 2.0f * t.fast_speed)) return force;
+    // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
+    // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
+    // against it (the mechanism's dry friction is below that).
     if (!g.sliding || g.hold_off > 0 || g.agreed < t.settle || std::fabs(g.external) > kStopGuardFreeFraction * f ||
-        pos_coefficient < 0 || neg_coefficient < 0) {
+        g.external * g.direction > kStopGuardAlongFraction * f || pos_coefficient < 0 || neg_coefficient < 0) {
         return force;
     }
     if (force * g.direction > 0 && (force + others) * g.direction > kStopGuardFreeFraction * f) {
@@ -104,6 +108,9 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
     // It comes to rest within the tick (or already has): apply what stops it there.
     float stop = -t.mass * v * t.inverse_dt - others - g.external + t.damping * v;
     stop = stop > f ? f : (stop < -f ? -f : stop);
+    // Friction only resists: where the force on the handle besides the engine's (the
+    // mechanism's dry friction) stops it by itself, it gets no push along its motion.
+    if (stop * g.direction > 0) stop = 0.0f;
     g.stopping = true;
     g.stop_at = position + 0.5f * v * t.dt;
     return stop;

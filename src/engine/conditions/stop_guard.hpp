@@ -33,12 +33,18 @@
 //
 // The rule. While the handle slides (|v| above the observer's noise, h·count/T), the
 // observer has predicted the sensed position within a count for the last τ (its model
-// holds: no sudden push, no hand yanking the handle), and the force on it besides the
-// engine's is small (|d| <= f/4: nobody holds it), if the friction
+// holds: no sudden push, no hand yanking the handle), the force on it besides the engine's
+// is small (|d| <= f/4: nobody holds it) and does not push it along its motion (d·sign(v)
+// <= f/16: a hand pushing lightly is not free; the guard would let go of its push at every
+// stop and the handle would ratchet after the hand), and the handle slid faster than 2
+// counts per τ no longer ago than the friction's force could have stopped it (a free stop
+// is quick; a hand dragging the handle under a count a tick is not one, but its slow travel
+// agrees with the observer's prediction of a stop within a count), if the friction
 // force about to be applied would bring the velocity to zero or past it within the tick,
 // the guard applies instead exactly what brings it to rest at the tick's end:
 //
-//   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude)
+//   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude,
+//                                                  and 0 if it would push along the motion)
 //
 // F_others the other effects' force of this tick (friction renders after them). The next
 // tick, if the handle did come to rest (within a count of where the guard expected), the
@@ -66,6 +72,9 @@ inline constexpr float kStopGuardTime = 0.003f;
 // The guard acts only while the force on the handle besides the engine's is at most this
 // fraction of the friction's magnitude.
 inline constexpr float kStopGuardFreeFraction = 0.25f;
+// ... and pushes it along its motion by at most this fraction (a hand pushing lightly is not
+// free: the guard would release its push at every stop, and the handle ratchets).
+inline constexpr float kStopGuardAlongFraction = 0.0625f;
 
 // Per block: the observer of the handle along the friction's line, and the guard's memory.
 struct StopGuard {
@@ -104,12 +113,9 @@ struct StopGuardTick {
 // friction about to be applied (after its saturation), `f` its magnitude. Returns `force`, or
 // the force that brings the handle to rest. May set the bristle's deflection (after a stop).
 // Call remember_output with what was finally applied.
-// With `recently_fast` (texture), the stop is guarded only while the force could not yet have
-// stopped the handle since it last slid faster than fast_speed (a free stop), not on a handle
-// that a hand drags slower than that (texture_condition.cpp).
 [[nodiscard]] float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position,
                                float applied, float others, float force, float f, float pos_coefficient,
-                               float neg_coefficient, bool recently_fast = false) noexcept;
+                               float neg_coefficient) noexcept;
 
 // The friction's share of the engine's force this tick: its force times the effect's and
 // the device's gain.

@@ -95,7 +95,7 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
                                                             : along(u, c.applied_force) - state.guard[0].own;
             StopGuard& g = state.guard[0];
             f = guard_stop(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit, pos * bump,
-                           neg * bump, true);
+                           neg * bump);
             f = f > limit ? limit : (f < -limit ? -limit : f);
             remember_output(g, f, output_gain);
         }
