@@ -122,8 +122,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         if (guard.on && c.applied_force != nullptr && b.offset == 0 && b.deadband == 0) {
             // A free handle coming to rest gets only what stops it (stop_guard.hpp).
             StopGuard& g = state.guard[i];
-            const float guarded = guard_stop(g, bristle, guard, position, c.applied_force[a], others, f, magnitude,
-                                             pos, neg);
+            // The engine's observer of the axis, shared by every friction on it (issue 14).
+            const float guarded = c.observers != nullptr
+                                      ? guard_stop(g, c.observers->axis[a], c.observers->observed[a], bristle, guard,
+                                                   position, others, f, magnitude, pos, neg)
+                                      : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others,
+                                                           f, magnitude, pos, neg);
             const float side = guarded >= 0 ? static_cast<float>(b.neg_saturation) : pos_limit;
             f = guarded > side ? side : (guarded < -side ? -side : guarded);
             remember_output(g, f, output_gain);

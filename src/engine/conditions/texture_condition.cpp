@@ -94,8 +94,8 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
             const float others = c.others_force != nullptr ? along(u, c.others_force)
                                                             : along(u, c.applied_force) - state.guard[0].own;
             StopGuard& g = state.guard[0];
-            f = guard_stop(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit, pos * bump,
-                           neg * bump);
+            f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit,
+                                   pos * bump, neg * bump);
             f = f > limit ? limit : (f < -limit ? -limit : f);
             remember_output(g, f, output_gain);
         }
