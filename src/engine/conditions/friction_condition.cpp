@@ -113,7 +113,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
         float f = -(toward_positive ? pos : neg) * z;
-        if (inverse_presliding > 0 && dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        if (inverse_presliding > 0 && dt_s > 0) {
+            // The fade depends on the axis' velocity alone: the engine's, once per axis (issue 14).
+            f += c.observers != nullptr && b.offset == 0
+                     ? bristle_damping_faded(stiffness, z, relative_velocity, c.observers->fade[a])
+                     : bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        }
         if (b.deadband > 0) {
             f *= deadband_gate(relative_velocity * c.velocity_scale, static_cast<float>(b.deadband));
         }

@@ -201,6 +201,22 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     return -stiffness * static_cast<float>(kBristleDampingTime) * rate * std::exp(-r2);
 }
 
+// The fade exp(-(v/v_d)²) of the microdamping alone, 0 beyond the cutoff: it depends on the
+// velocity only, so the engine works it out once per axis for every friction on it (issue 14).
+[[nodiscard]] inline float bristle_damping_fade(float velocity, float inverse_fade_speed) noexcept {
+    const float r = velocity * inverse_fade_speed;
+    const float r2 = r * r;
+    return r2 > static_cast<float>(kDampingFadeCutoff) || !std::isfinite(r2) ? 0.0f : std::exp(-r2);
+}
+
+// bristle_damping with the fade given: the same value, bit for bit.
+[[nodiscard]] inline float bristle_damping_faded(float stiffness, float z, float velocity, float fade) noexcept {
+    if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0f;
+    const float rate = velocity * (1.0f - z * (velocity > 0 ? 1.0f : -1.0f));
+    if (rate == 0 || fade == 0) return 0.0f;
+    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * fade;
+}
+
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every
 // multiple of `spacing` (s = 0 is a bump's top) and `width` wide, a raised cosine
 //

@@ -64,10 +64,15 @@ bool observe(HandleObserver& o, const StopGuardTick& t, float position, float ap
 }
 
 void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
-                  int64_t previous_t_us, const float* position, const float* applied, int axes) noexcept {
+                  int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
+                  int axes) noexcept {
     if (observers.tick_dt_s != dt_s) {
         observers.tick = stop_guard_tick(config, dt_s);
+        observers.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
         observers.tick_dt_s = dt_s;
+    }
+    for (int a = 0; a < kMaxAxes; ++a) {
+        observers.fade[a] = a < axes ? bristle_damping_fade(velocity[a], observers.inverse_fade_speed) : 0.0f;
     }
     const bool continuing = observers.last_t_us == previous_t_us && previous_t_us != t_us;
     observers.last_t_us = t_us;

@@ -126,14 +126,20 @@ struct StopGuardTick {
 struct AxisObservers {
     HandleObserver axis[kMaxAxes] = {};
     bool observed[kMaxAxes] = {};  // observe()'s answer at this tick
+    // The bristles' microdamping fade exp(-(v/v_d)²) at the axis' estimated velocity, shared
+    // by every friction without a velocity offset (friction_model.hpp, bristle_damping).
+    float fade[kMaxAxes] = {};
+    float inverse_fade_speed = 0.0f;
     StopGuardTick tick{};
     double tick_dt_s = -1.0;
     int64_t last_t_us = -1;        // the tick last observed
 };
 
-// `t_us` this tick's time, `previous_t_us` the previous tick's (equal at the first tick).
+// `t_us` this tick's time, `previous_t_us` the previous tick's (equal at the first tick),
+// `velocity` the engine's estimate.
 void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
-                  int64_t previous_t_us, const float* position, const float* applied, int axes) noexcept;
+                  int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
+                  int axes) noexcept;
 
 // One block's friction along its line, with `o` the observer of that line after this tick's
 // observe() (`observed` its answer): `position` sensed, `others` the other effects' force
