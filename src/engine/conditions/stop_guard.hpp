@@ -57,7 +57,8 @@
 // a friction pushing along the motion (negative coefficients) or with an offset or a
 // deadband (those move the surface or free a band of speed: they are not a stop). There
 // the bristle renders friction exactly as before. Real-time: a few float operations per
-// block, no allocation; deterministic. With device_mass 0 (unknown) it is off.
+// block, no allocation; deterministic. With device_mass 0 (unknown) it is off. The observer
+// of a device axis is the engine's, shared by every friction on it (AxisObservers).
 #pragma once
 
 #include <cstdint>

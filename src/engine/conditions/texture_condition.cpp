@@ -14,13 +14,12 @@
 // that the other effects push while it stands on a bump is held with their push, within
 // the bump's roughness, and let go with it (hold_with_others, friction_model.hpp). A free
 // handle coasting to rest on a bump is let go as friction lets it go, by friction's stop
-// guard (stop_guard.hpp) on the texture's line with the bump's local strength R·bump(s),
-// with one more condition: the handle slid faster than 2 counts per 3 ms (the observer's
-// time constant) no longer ago than the bump's force alone could have stopped it (twice
-// that speed's worth of m·Δv). A free stop meets that; a hand dragging the handle under a
-// count a tick, whose slow travel the observer's prediction cannot refute within a count,
-// does not (without it the guard cut the force on bump tops near a slow turn:
-// docs/conditions.md, "Texture").
+// guard (stop_guard.hpp) on the texture's line with the bump's local strength R·bump(s) and
+// its own observer of that line. What makes the guard safe here is its quick-stop test (the
+// handle slid faster than 2 counts per 3 ms no longer ago than the force alone could have
+// stopped it): a free stop meets it; a hand dragging the handle under a count a tick, whose
+// slow travel the observer's prediction cannot refute within a count, does not (without it
+// the guard cut the force on bump tops near a slow turn: docs/conditions.md, "Limits").
 //
 // The primer calls a texture "a spatially varying resistance" (§3.1) whose intensity can
 // differ with the direction of travel (§3.6): here every bump is a patch of friction of
