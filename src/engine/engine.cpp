@@ -365,6 +365,11 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         float others[kMaxAxes] = {};
         for (int a = 0; a < axes; ++a) others[a] = (sum[a] - vibration[a]) * device_gain;
         condition.others_force = others;
+        // Friction's stop guard watches the handle through one observer per axis, shared by
+        // every friction (stop_guard.hpp, AxisObservers).
+        detail::observe_axes(m.observers, m.config, dt_s, in.t_us, in.t_us - dt_us, in.position, velocity,
+                             m.applied_force, axes);
+        condition.observers = &m.observers;
         for (int32_t k = 0; k < last_count; ++k) {
             Slot& s = m.slots[m.last_slots[k].index];
             condition.params = &s.params;

@@ -214,6 +214,7 @@ struct Engine::Impl {
     uint64_t reports_dropped = 0;
     bool have_previous = false;
     float applied_force[kMaxAxes] = {};  // the force commanded at the previous tick
+    detail::AxisObservers observers;     // friction's stop guard: the handle on each axis
     int64_t previous_t_us = 0;
 
     // Device control and the parameter memory (engine_commands.cpp).

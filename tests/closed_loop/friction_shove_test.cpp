@@ -145,5 +145,33 @@ TEST(FrictionShove, AReleasedPushOnATextureDoesNotSpringBack) {
     }
 }
 
+TEST(FrictionShove, AShovedHandleStopsOnATextureWithoutSpringingBack) {
+    // Issue 16 §1: "textures ... built on the same model get the same guarantee". A free
+    // handle resting on a bump's top (bumps 10000 apart and as wide: a long washboard, so
+    // that it stops on a bump's flank rather than in a gap) is shoved by 10000 for 10 ms (within the travel) and
+    // let go. The texture is friction of strength R·bump(s) (§3.6, "a spatially varying
+    // resistance", §3.1), so the handle must coast to rest and stay, as on friction:
+    // back travel at most max(2 sensor counts, 1% of the forward travel).
+    for (const char* profile_name : {"joystick", "wheel", "3axis"}) {
+        const sim::DeviceProfile& profile = *sim::find_device_profile(profile_name);
+        const double count = 2.0 * 10000 / profile.axes[0].sensor_counts;
+        for (double rate : {500.0, 1000.0, 10000.0}) {
+            for (int32_t roughness : {3000, 8000}) {
+                SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz R=" +
+                             std::to_string(roughness));
+                const EffectParams texture = texture_on_x(roughness, roughness, 10000, 10000);
+                const ShoveResult r = push_and_release(profile_name, texture, rate, 10000, 0.01, true);
+                EXPECT_GT(r.forward, 10 * count);  // it really was shoved
+                EXPECT_LE(r.back, std::max(2 * count, 0.01 * r.forward));
+                EXPECT_EQ(r.along_fast_ticks, 0);
+                EXPECT_LE(r.along_work, roughness * count);
+                std::printf("texture shove %s %5.0f Hz R %d: forward %.1f back %.2f (bound %.2f) step %.0f\n",
+                            profile_name, rate, roughness, r.forward, r.back, std::max(2 * count, 0.01 * r.forward),
+                            r.largest_step);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace feel::test

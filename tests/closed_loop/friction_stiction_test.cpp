@@ -10,6 +10,7 @@
 // the zone is judged in physical travel: it must stay within one sensor count.
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <numbers>
 
 #include "friction_loop.hpp"
@@ -99,6 +100,41 @@ TEST(FrictionStiction, APushJustLargerThanTheFrictionSlides) {
         const auto rows = run_loop(profile_name, sim::Grip::none, "hold:0",
                                    {friction_on({Axis::x}, 6000), constant_force_on_x(6500)}, 0.5);
         EXPECT_GT(rows.back().x[0] - rows[0].x[0], 10 * count_of(profile_name));
+    }
+}
+
+TEST(FrictionStiction, ALightHandsSteadyPushNeitherCreepsNorChatters) {
+    // A loose hand moves its target from 0 to X in 0.3 s and holds it there: its push on the
+    // free handle (the grip's spring, k·(X − x)) settles below the friction. §3.5 and issue
+    // 16 §1: "no creep under a constant sub-threshold force" and no chatter. Pushes below
+    // f/4 once counted as a free handle for the stop guard, which let go of the push at every
+    // stop: the handle ratcheted after the hand (before this test: up to 156 units over the
+    // last second and 22–68 force sign changes on every profile at 1 and 10 kHz).
+    const int32_t f = 6000;
+    for (int32_t X : {200, 1000, 2000}) {
+        const std::string path = ::testing::TempDir() + "feel_friction_hand_push_" + std::to_string(X) + ".csv";
+        {
+            std::ofstream csv(path);
+            csv << "0,0\n300000," << X << "\n";
+        }
+        for (const char* profile_name : {"joystick", "wheel", "3axis"}) {
+            const double count = count_of(profile_name);
+            for (double rate : {500.0, 1000.0, 10000.0}) {
+                SCOPED_TRACE(std::string(profile_name) + " " + std::to_string(rate) + " Hz X=" + std::to_string(X));
+                const auto rows =
+                    run_loop(profile_name, sim::Grip::loose, "csv:" + path, {friction_on({Axis::x}, f)}, 2.0, rate);
+                double peak = 0;
+                for (const LoopRow& row : rows) peak = std::max(peak, std::fabs(row.force[0]));
+                if (peak > 0.95 * f) continue;  // the hand's pull on its way slid the handle: not a hold
+                double lo = rows.back().x[0], hi = lo;
+                for (size_t i = rows.size() / 2; i < rows.size(); ++i) {
+                    lo = std::min(lo, rows[i].x[0]);
+                    hi = std::max(hi, rows[i].x[0]);
+                }
+                EXPECT_LE(hi - lo, count);                              // no creep over the last second
+                EXPECT_EQ(force_sign_changes(rows, 0, 0, 0.05 * f), 0);  // no chatter
+            }
+        }
     }
 }
 

@@ -56,6 +56,10 @@ struct ConditionContext {
     // when unknown.
     const float* others_force = nullptr;
     float device_gain = 1.0f;               // the device gain as a fraction (0..1)
+    // The engine's observers of the handle, one per device axis, advanced this tick (friction's
+    // stop guard, stop_guard.hpp); null off the device's axes (a condition with a direction)
+    // or when the engine keeps none.
+    const AxisObservers* observers = nullptr;
 };
 
 // The curve of a block: the single-precision constants condition_response needs.

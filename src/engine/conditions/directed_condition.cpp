@@ -52,6 +52,7 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
     on_line.start_position = start_position;
     on_line.applied_force = applied;
     on_line.others_force = c.others_force != nullptr ? others : nullptr;
+    on_line.observers = nullptr;  // the line is not a device axis: friction observes it itself
 
     float per_axis[kMaxAxes] = {};
     law(on_line, per_axis);

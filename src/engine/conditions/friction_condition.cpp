@@ -113,7 +113,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
         float f = -(toward_positive ? pos : neg) * z;
-        if (inverse_presliding > 0 && dt_s > 0) f += bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        if (inverse_presliding > 0 && dt_s > 0) {
+            // The fade depends on the axis' velocity alone: the engine's, once per axis (issue 14).
+            f += c.observers != nullptr && b.offset == 0
+                     ? bristle_damping_faded(stiffness, z, relative_velocity, c.observers->fade[a])
+                     : bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+        }
         if (b.deadband > 0) {
             f *= deadband_gate(relative_velocity * c.velocity_scale, static_cast<float>(b.deadband));
         }
@@ -122,8 +127,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         if (guard.on && c.applied_force != nullptr && b.offset == 0 && b.deadband == 0) {
             // A free handle coming to rest gets only what stops it (stop_guard.hpp).
             StopGuard& g = state.guard[i];
-            const float guarded = guard_stop(g, bristle, guard, position, c.applied_force[a], others, f, magnitude,
-                                             pos, neg);
+            // The engine's observer of the axis, shared by every friction on it (issue 14).
+            const float guarded = c.observers != nullptr
+                                      ? guard_stop(g, c.observers->axis[a], c.observers->observed[a], bristle, guard,
+                                                   position, others, f, magnitude, pos, neg)
+                                      : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others,
+                                                           f, magnitude, pos, neg);
             const float side = guarded >= 0 ? static_cast<float>(b.neg_saturation) : pos_limit;
             f = guarded > side ? side : (guarded < -side ? -side : guarded);
             remember_output(g, f, output_gain);

@@ -105,6 +105,20 @@ struct PreslidingRule {
 // only (no tick to judge passivity by).
 [[nodiscard]] double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept;
 
+// e^-u for the travel u >= 0 of one tick in presliding distances. A tick's travel is a few
+// counts and the zone tens to hundreds (docs/stability.md), so u is mostly below 1/8: there
+// the Taylor polynomial to u⁶ is within u⁷/5040 < 1e-10 of e^-u, far below float's
+// resolution (6e-8), and costs seven multiply-adds where std::exp is a library call (issue
+// 14: friction's cost per effect).
+[[nodiscard]] inline float exp_of_travel(float u) noexcept {
+    if (u < 0.125f) {
+        return 1.0f - u * (1.0f - u * (1.0f / 2) * (1.0f - u * (1.0f / 3) *
+                                                    (1.0f - u * (1.0f / 4) * (1.0f - u * (1.0f / 5) *
+                                                                               (1.0f - u * (1.0f / 6))))));
+    }
+    return std::exp(-u);
+}
+
 // Moves the bristle with the handle now at `position` (along the bristle's line, position
 // units), less `slip` (how far the surface itself moved since the last tick, for a
 // friction with a velocity offset), over a presliding distance 1/inverse_presliding
@@ -129,9 +143,9 @@ struct PreslidingRule {
         if (dx > 0) z = 1.0f;
         if (dx < 0) z = -1.0f;
     } else if (dx > 0) {
-        z = 1.0f + (z - 1.0f) * std::exp(-dx * inverse_presliding);
+        z = 1.0f + (z - 1.0f) * exp_of_travel(dx * inverse_presliding);
     } else if (dx < 0) {
-        z = -1.0f + (z + 1.0f) * std::exp(dx * inverse_presliding);
+        z = -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding);
     }
     if (!std::isfinite(z)) z = 0.0f;  // a non-finite slip: forget rather than output NaN
     b.deflection = z;
@@ -199,6 +213,22 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
     if (r2 > static_cast<float>(kDampingFadeCutoff)) return 0.0f;
     return -stiffness * static_cast<float>(kBristleDampingTime) * rate * std::exp(-r2);
+}
+
+// The fade exp(-(v/v_d)²) of the microdamping alone, 0 beyond the cutoff: it depends on the
+// velocity only, so the engine works it out once per axis for every friction on it (issue 14).
+[[nodiscard]] inline float bristle_damping_fade(float velocity, float inverse_fade_speed) noexcept {
+    const float r = velocity * inverse_fade_speed;
+    const float r2 = r * r;
+    return r2 > static_cast<float>(kDampingFadeCutoff) || !std::isfinite(r2) ? 0.0f : std::exp(-r2);
+}
+
+// bristle_damping with the fade given: the same value, bit for bit.
+[[nodiscard]] inline float bristle_damping_faded(float stiffness, float z, float velocity, float fade) noexcept {
+    if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0f;
+    const float rate = velocity * (1.0f - z * (velocity > 0 ? 1.0f : -1.0f));
+    if (rate == 0 || fade == 0) return 0.0f;
+    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * fade;
 }
 
 // The bump of a texture (§3.6) at coordinate s along its line: bumps are centered on every

@@ -22,6 +22,7 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
     t.damping = config.device_damping;
     t.dt = static_cast<float>(dt_s);
     t.inverse_dt = 1.0f / t.dt;
+    t.dt_per_mass = t.dt / t.mass;
     const float theta = std::exp(-t.dt / kStopGuardTime);
     const float one = 1.0f - theta;
     t.gain_position = 1.0f - theta * theta * theta;
@@ -29,37 +30,63 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
     t.gain_external = t.mass * one * one * one * t.inverse_dt * t.inverse_dt;
     t.count = config.sensor_step;
     t.min_speed = t.gain_velocity * t.count * t.inverse_dt;
+    t.fast_speed = 2.0f * t.count / kStopGuardTime;
     t.hold_off = static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1;
     t.settle = static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1;
     return t;
 }
 
-float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position, float applied, float others,
-                 float force, float f, float pos_coefficient, float neg_coefficient) noexcept {
-    if (!t.on || !std::isfinite(position) || !std::isfinite(applied) || !std::isfinite(others)) return force;
-    if (!g.primed) {
-        g = StopGuard{};
-        g.position = position;
-        g.primed = true;
-        return force;
+bool observe(HandleObserver& o, const StopGuardTick& t, float position, float applied) noexcept {
+    if (!std::isfinite(position) || !std::isfinite(applied)) return false;
+    if (!o.primed) {
+        o = HandleObserver{};
+        o.position = position;
+        o.primed = true;
+        return false;
     }
     // Predict with the force the motors applied, then correct with the sensed position.
-    const float acceleration = (applied + g.external - t.damping * g.velocity) / t.mass;
-    const float predicted = g.position + g.velocity * t.dt + 0.5f * acceleration * t.dt * t.dt;
+    const float acceleration = (applied + o.external - t.damping * o.velocity) / t.mass;
+    const float predicted = o.position + o.velocity * t.dt + 0.5f * acceleration * t.dt * t.dt;
     const float e = position - predicted;
-    g.position = predicted + t.gain_position * e;
-    g.velocity += acceleration * t.dt + t.gain_velocity * e * t.inverse_dt;
-    g.external += t.gain_external * e;
-    if (!std::isfinite(g.position) || !std::isfinite(g.velocity) || !std::isfinite(g.external)) {
-        g = StopGuard{};  // start observing afresh rather than act on a non-finite state
-        return force;
+    o.position = predicted + t.gain_position * e;
+    o.velocity += acceleration * t.dt + t.gain_velocity * e * t.inverse_dt;
+    o.external += t.gain_external * e;
+    if (!std::isfinite(o.position) || !std::isfinite(o.velocity) || !std::isfinite(o.external)) {
+        o = HandleObserver{};  // start observing afresh rather than act on a non-finite state
+        return false;
     }
-    if (g.hold_off > 0) --g.hold_off;
     if (std::fabs(e) < t.count) {
-        if (g.agreed < t.settle) ++g.agreed;
+        if (o.agreed < t.settle) ++o.agreed;
     } else {
-        g.agreed = 0;
+        o.agreed = 0;
     }
+    return true;
+}
+
+void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
+                  int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
+                  int axes) noexcept {
+    if (observers.tick_dt_s != dt_s) {
+        observers.tick = stop_guard_tick(config, dt_s);
+        observers.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
+        observers.tick_dt_s = dt_s;
+    }
+    for (int a = 0; a < kMaxAxes; ++a) {
+        observers.fade[a] = a < axes ? bristle_damping_fade(velocity[a], observers.inverse_fade_speed) : 0.0f;
+    }
+    const bool continuing = observers.last_t_us == previous_t_us && previous_t_us != t_us;
+    observers.last_t_us = t_us;
+    for (int a = 0; a < kMaxAxes; ++a) {
+        if (!continuing) observers.axis[a] = HandleObserver{};
+        observers.observed[a] = observers.tick.on && a < axes && observe(observers.axis[a], observers.tick, position[a], applied[a]);
+    }
+}
+
+float guard_stop(StopGuard& g, const HandleObserver& o, bool observed, Bristle& bristle, const StopGuardTick& t,
+                 float position, float others, float force, float f, float pos_coefficient,
+                 float neg_coefficient) noexcept {
+    if (!t.on || !observed || !std::isfinite(others)) return force;
+    if (g.hold_off > 0) --g.hold_off;
     if (g.stopping) {
         g.stopping = false;
         g.sliding = false;
@@ -76,13 +103,23 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
         }
         g.hold_off = t.hold_off;  // it went on: a push the observer has not learned yet
     }
-    const float v = g.velocity;
+    const float v = o.velocity;
     if (std::fabs(v) >= t.min_speed) {
         g.sliding = true;
         g.direction = v > 0 ? 1.0f : -1.0f;
     }
-    if (!g.sliding || g.hold_off > 0 || g.agreed < t.settle || std::fabs(g.external) > kStopGuardFreeFraction * f ||
-        pos_coefficient < 0 || neg_coefficient < 0) {
+    // A free stop is quick: the handle slid faster than fast_speed (2 counts over τ, where
+    // the observer's prediction can be refuted by the sensor) no longer ago than the
+    // friction's force alone could have stopped it. A hand dragging the handle slower than
+    // that, whose travel the sensor cannot tell from the observer's prediction of a stop,
+    // is left to the bristle.
+    g.decelerated = std::fabs(v) >= t.fast_speed ? 0.0f : g.decelerated + std::fabs(force) * t.dt_per_mass;
+    if (!(g.decelerated <= 2.0f * t.fast_speed)) return force;
+    // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
+    // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
+    // against it (the mechanism's dry friction is below that).
+    if (!g.sliding || g.hold_off > 0 || o.agreed < t.settle || std::fabs(o.external) > kStopGuardFreeFraction * f ||
+        o.external * g.direction > kStopGuardAlongFraction * f || pos_coefficient < 0 || neg_coefficient < 0) {
         return force;
     }
     if (force * g.direction > 0 && (force + others) * g.direction > kStopGuardFreeFraction * f) {
@@ -92,11 +129,14 @@ float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float p
         return hold_against(bristle, others, pos_coefficient, neg_coefficient);
     }
     if (!(force * g.direction < 0)) return force;
-    const float v_next = v + (force + others + g.external - t.damping * v) * t.dt / t.mass;
+    const float v_next = v + (force + others + o.external - t.damping * v) * t.dt_per_mass;
     if (v_next * g.direction > 0) return force;  // still sliding at the tick's end
     // It comes to rest within the tick (or already has): apply what stops it there.
-    float stop = -t.mass * v * t.inverse_dt - others - g.external + t.damping * v;
+    float stop = -t.mass * v * t.inverse_dt - others - o.external + t.damping * v;
     stop = stop > f ? f : (stop < -f ? -f : stop);
+    // Friction only resists: where the force on the handle besides the engine's (the
+    // mechanism's dry friction) stops it by itself, it gets no push along its motion.
+    if (stop * g.direction > 0) stop = 0.0f;
     g.stopping = true;
     g.stop_at = position + 0.5f * v * t.dt;
     return stop;

@@ -33,12 +33,18 @@
 //
 // The rule. While the handle slides (|v| above the observer's noise, h·count/T), the
 // observer has predicted the sensed position within a count for the last τ (its model
-// holds: no sudden push, no hand yanking the handle), and the force on it besides the
-// engine's is small (|d| <= f/4: nobody holds it), if the friction
+// holds: no sudden push, no hand yanking the handle), the force on it besides the engine's
+// is small (|d| <= f/4: nobody holds it) and does not push it along its motion (d·sign(v)
+// <= f/16: a hand pushing lightly is not free; the guard would let go of its push at every
+// stop and the handle would ratchet after the hand), and the handle slid faster than 2
+// counts per τ no longer ago than the friction's force could have stopped it (a free stop
+// is quick; a hand dragging the handle under a count a tick is not one, but its slow travel
+// agrees with the observer's prediction of a stop within a count), if the friction
 // force about to be applied would bring the velocity to zero or past it within the tick,
 // the guard applies instead exactly what brings it to rest at the tick's end:
 //
-//   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude)
+//   F_stop = −m·v/T − F_others − d + b·v          (capped at the friction's magnitude,
+//                                                  and 0 if it would push along the motion)
 //
 // F_others the other effects' force of this tick (friction renders after them). The next
 // tick, if the handle did come to rest (within a count of where the guard expected), the
@@ -51,7 +57,8 @@
 // a friction pushing along the motion (negative coefficients) or with an offset or a
 // deadband (those move the surface or free a band of speed: they are not a stop). There
 // the bristle renders friction exactly as before. Real-time: a few float operations per
-// block, no allocation; deterministic. With device_mass 0 (unknown) it is off.
+// block, no allocation; deterministic. With device_mass 0 (unknown) it is off. The observer
+// of a device axis is the engine's, shared by every friction on it (AxisObservers).
 #pragma once
 
 #include <cstdint>
@@ -66,28 +73,41 @@ inline constexpr float kStopGuardTime = 0.003f;
 // The guard acts only while the force on the handle besides the engine's is at most this
 // fraction of the friction's magnitude.
 inline constexpr float kStopGuardFreeFraction = 0.25f;
+// ... and pushes it along its motion by at most this fraction (a hand pushing lightly is not
+// free: the guard would release its push at every stop, and the handle ratchets).
+inline constexpr float kStopGuardAlongFraction = 0.0625f;
 
-// Per block: the observer of the handle along the friction's line, and the guard's memory.
-struct StopGuard {
+// The observer of the handle along one line: a device axis (the engine keeps one per axis,
+// shared by every friction on it: AxisObservers) or the line of a texture or of a friction
+// with a direction (each keeps its own in its StopGuard).
+struct HandleObserver {
     float position = 0.0f;  // observed position, position units
     float velocity = 0.0f;  // observed velocity, units/s
     float external = 0.0f;  // d: the force on the handle the engine did not command, force units
+    int32_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction
+    bool primed = false;
+};
+
+// Per block: the guard's memory (and its own observer where the line is not a device axis).
+struct StopGuard {
+    HandleObserver observer{};  // used only off the device's axes (guard_stop_on_line)
     float own = 0.0f;       // this friction's share of the engine's last force, force units
     float stop_at = 0.0f;   // where the handle was to come to rest
     float direction = 0.0f; // +1 or -1: the way it slides
+    float decelerated = 0.0f; // what the friction's force alone could have taken off the velocity
+                              // since the handle last slid faster than StopGuardTick::fast_speed, units/s
     int32_t hold_off = 0;   // ticks the guard stands aside (it was wrong)
-    int32_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction
-    bool primed = false;
     bool sliding = false;   // it moved faster than the observer's noise since it last stopped
     bool stopping = false;  // the last force was the one that brings it to rest
 };
 
 // What every guard of a tick shares: the observer's gains for this tick period.
 struct StopGuardTick {
-    float mass = 0.0f, damping = 0.0f, dt = 0.0f, inverse_dt = 0.0f;
+    float mass = 0.0f, damping = 0.0f, dt = 0.0f, inverse_dt = 0.0f, dt_per_mass = 0.0f;
     float gain_position = 0.0f, gain_velocity = 0.0f, gain_external = 0.0f;
     float min_speed = 0.0f;  // the observer's velocity noise: h·count/T
     float count = 0.0f;
+    float fast_speed = 0.0f; // 2 counts over the observer's time constant: its prediction has bite
     int32_t hold_off = 0;
     int32_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
     bool on = false;         // device_mass known and a tick to observe over
@@ -95,15 +115,51 @@ struct StopGuardTick {
 
 [[nodiscard]] StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept;
 
-// One block's friction along its line: `position` sensed, `applied` the engine's force of the
-// last tick along the line, `others` the other effects' force this tick (ConditionContext::
-// others_force; without it, the last tick's: applied less this friction's share), `force` the
-// friction about to be applied (after its saturation), `f` its magnitude. Returns `force`, or
-// the force that brings the handle to rest. May set the bristle's deflection (after a stop).
-// Call remember_output with what was finally applied.
-[[nodiscard]] float guard_stop(StopGuard& g, Bristle& bristle, const StopGuardTick& t, float position,
-                               float applied, float others, float force, float f, float pos_coefficient,
-                               float neg_coefficient) noexcept;
+// Advances the observer by one tick: `position` sensed, `applied` the engine's force of the
+// last tick along the line. Returns whether it has a state to judge by (false at its first
+// tick and after a non-finite input or state, when it starts afresh).
+[[nodiscard]] bool observe(HandleObserver& o, const StopGuardTick& t, float position, float applied) noexcept;
+
+// The engine's observers, one per device axis, shared by every friction on the axis (issue
+// 14: the observer is most of the guard's cost, and every friction on an axis sees the same
+// handle and the same engine force). Advanced once a tick before the frictions render;
+// observe_axes restarts them when the previous tick was not observed (no friction played).
+struct AxisObservers {
+    HandleObserver axis[kMaxAxes] = {};
+    bool observed[kMaxAxes] = {};  // observe()'s answer at this tick
+    // The bristles' microdamping fade exp(-(v/v_d)²) at the axis' estimated velocity, shared
+    // by every friction without a velocity offset (friction_model.hpp, bristle_damping).
+    float fade[kMaxAxes] = {};
+    float inverse_fade_speed = 0.0f;
+    StopGuardTick tick{};
+    double tick_dt_s = -1.0;
+    int64_t last_t_us = -1;        // the tick last observed
+};
+
+// `t_us` this tick's time, `previous_t_us` the previous tick's (equal at the first tick),
+// `velocity` the engine's estimate.
+void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
+                  int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
+                  int axes) noexcept;
+
+// One block's friction along its line, with `o` the observer of that line after this tick's
+// observe() (`observed` its answer): `position` sensed, `others` the other effects' force
+// this tick (ConditionContext::others_force; without it, the last tick's: applied less this
+// friction's share), `force` the friction about to be applied (after its saturation), `f`
+// its magnitude. Returns `force`, or the force that brings the handle to rest. May set the
+// bristle's deflection (after a stop). Call remember_output with what was finally applied.
+[[nodiscard]] float guard_stop(StopGuard& g, const HandleObserver& o, bool observed, Bristle& bristle,
+                               const StopGuardTick& t, float position, float others, float force, float f,
+                               float pos_coefficient, float neg_coefficient) noexcept;
+
+// The same on a line that is not a device axis, with the block's own observer.
+[[nodiscard]] inline float guard_stop_on_line(StopGuard& g, Bristle& bristle, const StopGuardTick& t,
+                                              float position, float applied, float others, float force, float f,
+                                              float pos_coefficient, float neg_coefficient) noexcept {
+    const bool observed = t.on && observe(g.observer, t, position, applied);
+    return guard_stop(g, g.observer, observed, bristle, t, position, others, force, f, pos_coefficient,
+                      neg_coefficient);
+}
 
 // The friction's share of the engine's force this tick: its force times the effect's and
 // the device's gain.

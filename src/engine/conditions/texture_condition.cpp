@@ -12,11 +12,14 @@
 //
 // A texture is friction, so it holds and lets go as friction does (issue 16 §1): a handle
 // that the other effects push while it stands on a bump is held with their push, within
-// the bump's roughness, and let go with it (hold_with_others, friction_model.hpp). The
-// stop guard of friction (stop_guard.hpp) is not applied: its test of a free handle (the
-// force on it besides the engine's, learned by an observer with a 3 ms lag) mistook a hand
-// dragging the handle onto a bump's rising force for a free stop (docs/conditions.md,
-// "Limits").
+// the bump's roughness, and let go with it (hold_with_others, friction_model.hpp). A free
+// handle coasting to rest on a bump is let go as friction lets it go, by friction's stop
+// guard (stop_guard.hpp) on the texture's line with the bump's local strength R·bump(s) and
+// its own observer of that line. What makes the guard safe here is its quick-stop test (the
+// handle slid faster than 2 counts per 3 ms no longer ago than the force alone could have
+// stopped it): a free stop meets it; a hand dragging the handle under a count a tick, whose
+// slow travel the observer's prediction cannot refute within a count, does not (without it
+// the guard cut the force on bump tops near a slow turn: docs/conditions.md, "Limits").
 //
 // The primer calls a texture "a spatially varying resistance" (§3.1) whose intensity can
 // differ with the direction of travel (§3.6): here every bump is a patch of friction of
@@ -79,6 +82,22 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     if (presliding > 0 && c.dt_s > 0) {
         const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * c.config->velocity_ref);
         f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), inverse_fade_speed);
+    }
+    const float limit = roughness * bump;
+    if (c.applied_force != nullptr && limit > 0) {
+        if (state.tick_dt_s != c.dt_s) {
+            state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
+            state.tick_dt_s = c.dt_s;
+        }
+        if (state.guard_tick.on) {
+            const float others = c.others_force != nullptr ? along(u, c.others_force)
+                                                            : along(u, c.applied_force) - state.guard[0].own;
+            StopGuard& g = state.guard[0];
+            f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit,
+                                   pos * bump, neg * bump);
+            f = f > limit ? limit : (f < -limit ? -limit : f);
+            remember_output(g, f, output_gain);
+        }
     }
     for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
 }
