@@ -323,7 +323,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             // Dynamics integrate their masses in double (docs/stability.md, "Where double
             // remains"); their force is converted once here.
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
-                                                 s.start_position, dt_s,      clock.tau_us, &m.dynamics[s.memory].state};
+                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
             double dynamic_force[kMaxAxes] = {};
             detail::render_dynamic(dynamic, dynamic_force, result);
@@ -344,7 +344,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.start_position = s.start_position;
             condition.direction = s.direction;
             condition.tau_us = clock.tau_us;
-            condition.state = m.condition_state(s);
+            condition.state = s.condition_memory;
             condition.curves = s.curves;
             s.render_condition(condition, force);
         } else {
@@ -376,7 +376,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.start_position = s.start_position;
             condition.direction = s.direction;
             condition.tau_us = m.last_slots[k].tau_us;
-            condition.state = m.condition_state(s);
+            condition.state = s.condition_memory;
             condition.curves = s.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);

@@ -200,10 +200,10 @@ PoolInfo Engine::pool() const noexcept {
     for (int32_t i = 0; i < m.slot_count; ++i) {
         if (m.slots[i].state == EffectState::free) ++p.free_effects;
     }
-    p.max_dynamics = m.dynamics.capacity();
-    p.free_dynamics = m.dynamics.free_count();
-    p.max_stateful_conditions = m.condition_memory.capacity();
-    p.free_stateful_conditions = m.condition_memory.free_count();
+    p.max_dynamics = m.dynamic_pool.capacity();
+    p.free_dynamics = m.dynamic_pool.free_count();
+    p.max_stateful_conditions = m.condition_pool.capacity();
+    p.free_stateful_conditions = m.condition_pool.free_count();
     p.total_samples = m.samples.capacity();
     p.free_samples = m.samples.free_samples();
     return p;

@@ -17,6 +17,12 @@
 namespace feel {
 namespace detail {
 
+// A dynamic's memory between ticks: its simulated mass and its interim reports' schedule.
+struct DynamicRecord {
+    DynamicState state{};
+    int64_t next_interim_us = 0;  // when the next interim report is due
+};
+
 struct Slot {
     EffectParams params{};
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
@@ -38,10 +44,13 @@ struct Slot {
     bool renders_last = false;
     EffectState state = EffectState::free;
     uint16_t generation = 0;
-    // The effect's memory between ticks, if its type keeps any (keeps_memory): its record in
-    // the engine's pool of its class (Engine::Impl::dynamics, ::condition_memory), held from
-    // create to destroy; kNoRecord for the others.
-    uint16_t memory = kNoRecord;
+    // The effect's memory between ticks, if its type keeps any (memory_kind): its record in
+    // the engine's pool of its kind (Engine::Impl::dynamic_pool, ::condition_pool), held
+    // from create to destroy; null for the others. The live member follows cls.
+    union {
+        detail::ConditionState* condition_memory = nullptr;
+        detail::DynamicRecord* dynamic_memory;
+    };
     int64_t start_t_us = 0;
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
 
@@ -57,12 +66,6 @@ struct Slot {
     [[nodiscard]] int32_t play_iterations() const noexcept {
         return iterations_override != 0 ? iterations_override : params.iterations;
     }
-};
-
-// A dynamic's memory between ticks: its simulated mass and its interim reports' schedule.
-struct DynamicRecord {
-    DynamicState state{};
-    int64_t next_interim_us = 0;  // when the next interim report is due
 };
 
 // Whether an effect of this type keeps memory between ticks, in which pool: dynamics their
@@ -114,10 +117,10 @@ struct Engine::Impl {
           config_error(detail::check_engine_config(c)),
           slot_count(config_error ? 0 : c.max_effects),
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
-          dynamics(config_error ? 0 : detail::dynamics_capacity(c)),
-          condition_memory(config_error ? 0 : detail::stateful_conditions_capacity(c)),
+          dynamic_pool(config_error ? 0 : detail::dynamics_capacity(c)),
+          condition_pool(config_error ? 0 : detail::stateful_conditions_capacity(c)),
           // Only friction and texture render last, and each holds a condition's memory.
-          last_slots(new LastSlot[static_cast<size_t>(condition_memory.capacity() > 0 ? condition_memory.capacity() : 1)]),
+          last_slots(new LastSlot[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_error ? 0 : c.max_samples, slot_count),
           report_capacity(config_error ? 1 : c.report_capacity),
           reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
@@ -142,8 +145,8 @@ struct Engine::Impl {
 
     // Free records in the pool of a kind of memory (1 for none: there is nothing to take).
     [[nodiscard]] int32_t free_records(detail::MemoryKind kind) const noexcept {
-        return kind == detail::MemoryKind::dynamic     ? dynamics.free_count()
-               : kind == detail::MemoryKind::condition ? condition_memory.free_count()
+        return kind == detail::MemoryKind::dynamic     ? dynamic_pool.free_count()
+               : kind == detail::MemoryKind::condition ? condition_pool.free_count()
                                                        : 1;
     }
 
@@ -153,51 +156,45 @@ struct Engine::Impl {
         const bool dynamic = kind == detail::MemoryKind::dynamic;
         Error e = Error::out_of_range(
             dynamic ? "resident dynamics (EngineConfig::max_dynamics)" : "stateful conditions (max_stateful_conditions)",
-            int64_t{dynamic ? dynamics.capacity() : condition_memory.capacity()} + 1,
-            Range{0, dynamic ? dynamics.capacity() : condition_memory.capacity()});
+            int64_t{dynamic ? dynamic_pool.capacity() : condition_pool.capacity()} + 1,
+            Range{0, dynamic ? dynamic_pool.capacity() : condition_pool.capacity()});
         e.code = ErrorCode::device_full;
         return e;
     }
 
     // Takes a record of the slot's kind for a slot being created (free_records said there is one).
     void acquire_memory(detail::Slot& s, detail::MemoryKind kind) noexcept {
-        s.memory = kind == detail::MemoryKind::dynamic     ? dynamics.acquire()
-                   : kind == detail::MemoryKind::condition ? condition_memory.acquire()
-                                                           : detail::kNoRecord;
-    }
-
-    // The slot's memory, or nullptr if it keeps none (the slot's class says which pool).
-    detail::DynamicRecord* dynamic_memory(const detail::Slot& s) noexcept {
-        return s.cls == EffectClass::dynamic && s.memory != detail::kNoRecord ? &dynamics[s.memory] : nullptr;
-    }
-    detail::ConditionState* condition_state(const detail::Slot& s) noexcept {
-        return s.cls == EffectClass::condition && s.memory != detail::kNoRecord ? &condition_memory[s.memory]
-                                                                                : nullptr;
+        if (kind == detail::MemoryKind::dynamic) {
+            s.dynamic_memory = dynamic_pool.acquire();
+        } else {
+            s.condition_memory = kind == detail::MemoryKind::condition ? condition_pool.acquire() : nullptr;
+        }
     }
 
     // Starts the slot's memory afresh (cls must be set: prepare_slot).
-    void reset_memory(const detail::Slot& s) noexcept {
-        if (detail::DynamicRecord* d = dynamic_memory(s)) *d = detail::DynamicRecord{};
-        if (detail::ConditionState* c = condition_state(s)) *c = detail::ConditionState{};
+    static void reset_memory(const detail::Slot& s) noexcept {
+        if (s.cls == EffectClass::dynamic) {
+            *s.dynamic_memory = detail::DynamicRecord{};
+        } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
+            *s.condition_memory = detail::ConditionState{};
+        }
     }
 
     // prepare_slot, and a dynamic's per-tick form of its parameters marked stale.
-    void prepare(detail::Slot& s) noexcept {
+    static void prepare(detail::Slot& s) noexcept {
         detail::prepare_slot(s);
-        if (detail::DynamicRecord* d = dynamic_memory(s)) d->state.prepared = false;
+        if (s.cls == EffectClass::dynamic) s.dynamic_memory->state.prepared = false;
     }
 
     // Frees a slot: its samples, bytes and memory return to their pools, its handles go stale.
     void free_slot(detail::Slot& s, int32_t index) noexcept {
         samples.release(index);
-        if (s.memory != detail::kNoRecord) {
-            if (s.cls == EffectClass::dynamic) {
-                dynamics.release(s.memory);
-            } else {
-                condition_memory.release(s.memory);
-            }
-            s.memory = detail::kNoRecord;
+        if (s.cls == EffectClass::dynamic) {
+            dynamic_pool.release(s.dynamic_memory);
+        } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
+            condition_pool.release(s.condition_memory);
         }
+        s.condition_memory = nullptr;
         pool_used_bytes -= s.pool_bytes;
         s.pool_bytes = 0;
         s.state = EffectState::free;
@@ -236,7 +233,7 @@ struct Engine::Impl {
                 out.mass_velocity[a] = r.mass_velocity[a];
             }
         }
-        int64_t& next_interim_us = dynamics[s.memory].next_interim_us;
+        int64_t& next_interim_us = s.dynamic_memory->next_interim_us;
         const bool interim_due = s.params.dynamic.interim_reporting && t_us >= next_interim_us;
         if (!interim_due && !r.finished) return;
         DynamicReport report;
@@ -270,9 +267,10 @@ struct Engine::Impl {
     Error config_error;
     int32_t slot_count;
     std::unique_ptr<detail::Slot[]> slots;
-    // The effects' memory between ticks, by kind (record_pool.hpp; Slot::memory).
-    detail::RecordPool<detail::DynamicRecord> dynamics;
-    detail::RecordPool<detail::ConditionState> condition_memory;
+    // The effects' memory between ticks, by kind (record_pool.hpp; Slot::condition_memory,
+    // Slot::dynamic_memory).
+    detail::RecordPool<detail::DynamicRecord> dynamic_pool;
+    detail::RecordPool<detail::ConditionState> condition_pool;
     // The tick's slots that render last (Slot::renders_last), gathered during its first pass.
     struct LastSlot {
         int32_t index = 0;

@@ -1,9 +1,10 @@
-// A fixed number of records of one kind, handed out by index.
+// A fixed number of records of one kind, handed out one at a time.
 //
 // The engine keeps an effect's memory between ticks (a dynamic's simulated mass, a
 // friction's bristles, a wall's contact ledger) in pools like this one, not in every effect
 // slot: most effects (waves, springs, dampers) keep none, and the largest memory, a
-// dynamic's, is twice a condition's. Each pool's capacity is an EngineConfig field
+// dynamic's, is twice a condition's. A slot points at its record, so the tick reaches it in
+// one load. Each pool's capacity is an EngineConfig field
 // (max_dynamics, max_stateful_conditions), fixed when the engine is made; a create that
 // finds its pool full is refused with device_full (issue 14: RAM on a Cortex-M4F).
 //
@@ -16,12 +17,10 @@
 
 namespace feel::detail {
 
-inline constexpr uint16_t kNoRecord = 0xFFFF;
-
 template <class Record>
 class RecordPool {
 public:
-    // capacity: 0..65535 records (kNoRecord is never an index).
+    // capacity: 0..65535 records.
     explicit RecordPool(int32_t capacity)
         : capacity_(capacity > 0 ? capacity : 0),
           records_(new Record[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]),
@@ -34,12 +33,12 @@ public:
     [[nodiscard]] int32_t capacity() const noexcept { return capacity_; }
     [[nodiscard]] int32_t free_count() const noexcept { return free_count_; }
 
-    // A free record's index (its contents as the last user left them), or kNoRecord.
-    [[nodiscard]] uint16_t acquire() noexcept { return free_count_ > 0 ? free_[--free_count_] : kNoRecord; }
-    void release(uint16_t index) noexcept { free_[free_count_++] = index; }
-
-    Record& operator[](uint16_t index) noexcept { return records_[index]; }
-    const Record& operator[](uint16_t index) const noexcept { return records_[index]; }
+    // A free record (its contents as the last user left them), or nullptr if none is free.
+    [[nodiscard]] Record* acquire() noexcept { return free_count_ > 0 ? &records_[free_[--free_count_]] : nullptr; }
+    // Returns a record acquire() gave.
+    void release(Record* record) noexcept {
+        free_[free_count_++] = static_cast<uint16_t>(record - records_.get());
+    }
 
 private:
     int32_t capacity_;
