@@ -230,13 +230,20 @@ TEST(MotionEstimator, UnevenTicksAreFittedWithTheirOwnTimes) {
     }
 }
 
-TEST(MotionEstimator, RepeatedAndBackwardTimes) {
+// An estimator of the joystick's sensor fed position 0 at t = 0 and 10 at t = 1 ms.
+MotionEstimator after_ten_units_in_a_millisecond() {
     MotionEstimator m;
     m.configure(static_cast<float>(kJoystickStep));
     float p[kMaxAxes] = {0};
     m.update(0, p, 1);
     p[0] = 10;
     m.update(1000, p, 1);
+    return m;
+}
+
+TEST(MotionEstimator, RepeatedAndBackwardTimes) {
+    MotionEstimator m = after_ten_units_in_a_millisecond();
+    float p[kMaxAxes] = {10};
     EXPECT_NEAR(m.velocity(0), 10000, 1e-2);
     p[0] = 20;
     m.update(1000, p, 1);  // the same instant again: the fresher reading replaces it
@@ -270,13 +277,8 @@ TEST(MotionEstimator, TimesAcrossTheThirtyTwoBitBoundaryReadTheSame) {
 TEST(MotionEstimator, AGapOfHalfAnHourRestartsTheHistory) {
     constexpr auto kMaxGap = static_cast<int64_t>(MotionEstimator::kMaxGapUs);
     for (const int64_t gap : {kMaxGap - 1, kMaxGap}) {
-        MotionEstimator m;
-        m.configure(static_cast<float>(kJoystickStep));
-        float p[kMaxAxes] = {0};
-        m.update(0, p, 1);
-        p[0] = 10;
-        m.update(1000, p, 1);
-        p[0] = 20;
+        MotionEstimator m = after_ten_units_in_a_millisecond();
+        float p[kMaxAxes] = {20};
         m.update(1000 + gap, p, 1);
         if (gap < kMaxGap) {
             EXPECT_NEAR(m.velocity(0), 10.0 / (static_cast<double>(gap) * 1e-6), 1e-6) << gap;
