@@ -46,8 +46,6 @@ struct BallHandlePath {
     double from[kMaxAxes] = {};             // position units, at the start of the step
     double velocity[kMaxAxes] = {};         // position units/s, the path's
     double damper_velocity[kMaxAxes] = {};  // position units/s, what a damper to the handle reads
-
-    [[nodiscard]] double at(int axis, double t_s) const noexcept { return from[axis] + velocity[axis] * t_s; }
 };
 
 // One tick of a ball model. Model provides

@@ -61,6 +61,7 @@
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
 #include <cmath>
+#include <limits>
 
 #include "dynamics/dynamic.hpp"
 #include "dynamics/tether_law.hpp"
@@ -81,6 +82,18 @@ TetherAxisState initial_state(const PreparedTether& law, float handle_velocity, 
 }
 
 bool finite(const TetherAxisState& s) noexcept { return std::isfinite(s.stretch) && std::isfinite(s.velocity); }
+
+// A stretch or velocity below float's normal range (FLT_MIN, 1.2e-38 position units or
+// units/s) becomes exactly 0, as on an FPU in flush-to-zero mode. A mass settling against
+// a still handle decays exponentially: without this it spends seconds in subnormal numbers,
+// each operation on which takes a microcode assist of about a hundred cycles on x86 (the
+// 64-effect tick at rest took twice as long), and a mass coasting in its play never
+// reaches the exact rest that tether_tick skips.
+void flush_subnormal(TetherAxisState& s) noexcept {
+    constexpr float kSmallest = std::numeric_limits<float>::min();
+    if (std::fabs(s.stretch) < kSmallest) s.stretch = 0;
+    if (std::fabs(s.velocity) < kSmallest) s.velocity = 0;
+}
 
 // The gravity of the law as seen in the frame of a handle accelerating at `acceleration`:
 // the frame adds the force −M·a on the mass, which the law's gravity term carries.
@@ -111,25 +124,9 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
     }
 
     const bool fresh = !c.state->initialized || !(step > 0);
-    if (!c.state->initialized) {
-        for (int i = 0; i < n; ++i) {
-            const PreparedTether& law = st.laws[i];
-            st.now[i] = initial_state(law, law.handle_frame ? 0.0f : c.velocity[axis_index(p.axes[i])], hysteresis);
-        }
-        c.state->initialized = true;
-    } else if (step > 0) {
-        const float inverse_step = static_cast<float>(1.0 / step);
-        for (int i = 0; i < n; ++i) {
-            const PreparedTether& law = st.laws[i];
-            const int a = axis_index(p.axes[i]);
-            const float gravity = gravity_in_frame(law, st.handle_acceleration[i]);
-            const HandleLine sensed = law.handle_frame ? HandleLine{}
-                                                       : HandleLine{(c.position[a] - st.handle_position[i]) * inverse_step,
-                                                                    st.handle_velocity[i]};
-            advance_prepared_tether(law, gravity, st.now[i], sensed, hysteresis);
-        }
-    }
-
+    const bool catch_up = c.state->initialized && step > 0;
+    const float inverse_step = step > 0 ? static_cast<float>(1.0 / step) : 0.0f;
+    // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
     for (int i = 0; i < n; ++i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
@@ -139,6 +136,15 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
         // The velocity the mass's own is seen from: the handle's, unless simulated in its frame.
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         TetherAxisState& now = st.now[i];
+        if (!c.state->initialized) {
+            now = initial_state(law, frame_velocity, hysteresis);
+        } else if (catch_up) {
+            const HandleLine sensed = law.handle_frame ? HandleLine{}
+                                                       : HandleLine{(handle - st.handle_position[i]) * inverse_step,
+                                                                    st.handle_velocity[i]};
+            advance_prepared_tether(law, gravity_in_frame(law, st.handle_acceleration[i]), now, sensed, hysteresis);
+        }
+        flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
 
@@ -146,12 +152,12 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
         if (step > 0) {
             // The handle is expected to go on along the line through its last two sensed
             // positions; before there are two, at its estimated velocity.
-            const float heading =
-                fresh ? handle_velocity : (handle - st.handle_position[i]) * static_cast<float>(1.0 / step);
+            const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
             TetherAxisState ahead = now;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
-            const float gravity = gravity_in_frame(law, handle_acceleration);
-            pull = -advance_prepared_tether(law, gravity, ahead, expected, hysteresis) / static_cast<float>(step);
+            pull = -advance_prepared_tether(law, gravity_in_frame(law, handle_acceleration), ahead, expected,
+                                            hysteresis) *
+                   inverse_step;
         } else {
             pull = static_cast<float>(
                 tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity));
@@ -163,6 +169,7 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
         result.mass_position[a] = now.stretch;
         result.mass_velocity[a] = now.velocity - frame_velocity;
     }
+    c.state->initialized = true;
 }
 
 }  // namespace feel::detail

@@ -72,30 +72,36 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& 
         const SpringDamper seg = segment(law, r, path);
         const double origin = local_origin(law, r);
         const MassState start{s - origin, rate};
+        // The piece to its end in this region, and (below) the state where it leaves it.
+        MassState end = tether_step(seg, start, remaining);
         double t = remaining;
         double snap_to = 0;
         bool crossed = false;
         if (piecewise && switches < kMaxRegionSwitches) {
             double tc = 0;
+            MassState at = end;
             if (r == Region::slack) {
                 // Either edge of the play, whichever comes first.
-                if (tether_crossing(seg, start, law.length, remaining, tc) && tc < t) {
+                const MassState whole = end;
+                if (tether_crossing(seg, start, whole, law.length, remaining, tc, at) && tc < t) {
                     t = tc;
+                    end = at;
                     snap_to = law.length;
                     crossed = true;
                 }
-                if (tether_crossing(seg, start, -law.length, remaining, tc) && tc < t) {
+                if (tether_crossing(seg, start, whole, -law.length, remaining, tc, at) && tc < t) {
                     t = tc;
+                    end = at;
                     snap_to = -law.length;
                     crossed = true;
                 }
-            } else if (tether_crossing(seg, start, 0.0, remaining, tc) && tc < remaining) {
+            } else if (tether_crossing(seg, start, end, 0.0, remaining, tc, at) && tc < remaining) {
                 t = tc;
+                end = at;
                 snap_to = origin;  // back onto the edge the region starts at
                 crossed = true;
             }
         }
-        const MassState end = tether_step(seg, start, t);
         s = crossed ? snap_to : end.position + origin;
         rate = end.velocity;
         remaining = crossed ? remaining - t : 0.0;

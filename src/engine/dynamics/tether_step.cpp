@@ -59,6 +59,9 @@ Propagator propagator(double gamma, double w2, double h) noexcept {
 
 // A free mass with damping and a constant force a_f = f/m: ÿ = −a·ẏ + a_f.
 MassState free_step(double a, double a_f, MassState x, double h) noexcept {
+    // Without damping the series below is exactly φ1 = h, φ2 = h·h·0.5 and e = 1: the same
+    // numbers without the exponential (Dynamic Inertia's mass coasting in its play).
+    if (a == 0) return {x.position + x.velocity * h + a_f * (h * h * 0.5), x.velocity + a_f * h};
     const double ah = a * h;
     double phi1, phi2, e;  // φ1 = ∫₀ʰ e^{−at} dt, φ2 = ∫₀ʰ φ1(t) dt, e = e^{−ah}
     if (ah < kFreeSeriesLimit) {
@@ -80,20 +83,23 @@ double initial_acceleration(const SpringDamper& s, MassState x) noexcept {
 
 double sign_of(double v) noexcept { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
 
-// A function of t and its slope there.
+// A function of t and its slope there, and the motion's state at t it was read from.
 struct Sample {
     double value, slope;
+    MassState state;
 };
 
-// The earliest t in (lo, hi] with g(t) <= 0, given g(lo) > 0 >= g(hi) and a single sign
-// change between them, to within `tolerance`: Newton's method on the closed form (g
-// returns its slope too), kept inside the bracket and aimed half a tolerance past the
-// root so that the bracket closes from both sides; a step that leaves the bracket
-// bisects instead. Converges in a handful of evaluations where bisection takes 30; at
-// most 64.
+// The earliest t in (lo, hi] with g(t) <= 0, given g(lo) > 0 >= g(hi) (their samples
+// given: the caller has read both already) and a single sign change between them, to
+// within `tolerance`: Newton's method on the closed form (g returns its slope too), kept
+// inside the bracket and aimed half a tolerance past the root so that the bracket closes
+// from both sides; a step that leaves the bracket bisects instead. Converges in a handful
+// of evaluations where bisection takes 30; at most 64. at_hi comes back as the sample at
+// the t returned (the state there, which the caller needs: no evaluation is repeated).
 template <typename G>
-double first_nonpositive(const G& g, double lo, double hi, double tolerance) noexcept {
-    Sample at = g(lo);
+double first_nonpositive(const G& g, double lo, const Sample& at_lo, double hi, Sample& at_hi,
+                         double tolerance) noexcept {
+    Sample at = at_lo;
     double t = lo;
     for (int i = 0; i < 64 && hi - lo > tolerance; ++i) {
         double next = at.slope != 0 ? t - at.value / at.slope : lo + (hi - lo) / 2;
@@ -105,6 +111,7 @@ double first_nonpositive(const G& g, double lo, double hi, double tolerance) noe
             lo = t;
         } else {
             hi = t;
+            at_hi = at;
         }
     }
     return hi;
@@ -140,15 +147,22 @@ int32_t tether_substeps(const SpringDamper& s, double h, int32_t max_substeps) n
 bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
                      double& t_cross) noexcept {
     if (!(h > 0)) return false;
+    MassState at_cross;
+    return tether_crossing(s, x, tether_step(s, x, h), level, h, t_cross, at_cross);
+}
+
+bool tether_crossing(const SpringDamper& s, MassState x, MassState at_h, double level, double h, double& t_cross,
+                     MassState& at_cross) noexcept {
+    if (!(h > 0)) return false;
     // side: +1 when the motion starts (or, from the level, leaves) above the level.
     double side = sign_of(x.position - level);
     if (side == 0) side = sign_of(x.velocity);
     if (side == 0) side = sign_of(initial_acceleration(s, x));
     if (side == 0) return false;  // at rest at an equilibrium on the level: it stays there
-    auto above = [&](double t) {
-        const MassState m = tether_step(s, x, t);
-        return Sample{side * (m.position - level), side * m.velocity};
-    };
+    // The state at t; at h it is known already.
+    auto state_at = [&](double t) { return t == h ? at_h : tether_step(s, x, t); };
+    auto above_from = [&](MassState m) { return Sample{side * (m.position - level), side * m.velocity, m}; };
+    auto above = [&](double t) { return above_from(state_at(t)); };
     const double tolerance = 1e-9 * h;
 
     // Which way the motion starts, seen from its side: +1 away from the level, −1 toward it.
@@ -156,23 +170,30 @@ bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
     if (direction == 0) direction = sign_of(side * initial_acceleration(s, x));
     if (direction == 0) return false;  // at rest at an equilibrium: it stays on its side
     // The one extremum the step may hold: where the velocity turns from its starting sign.
-    auto onward = [&](double t) {
-        const MassState m = tether_step(s, x, t);
-        return Sample{direction * side * m.velocity, direction * side * initial_acceleration(s, m)};
+    auto onward_from = [&](MassState m) {
+        return Sample{direction * side * m.velocity, direction * side * initial_acceleration(s, m), m};
     };
-    const double t_extremum = onward(h).value <= 0 ? first_nonpositive(onward, 0.0, h, tolerance) : -1.0;
+    auto onward = [&](double t) { return onward_from(state_at(t)); };
+    Sample extremum = onward_from(at_h);
+    const double t_extremum =
+        extremum.value <= 0 ? first_nonpositive(onward, 0.0, onward_from(x), h, extremum, tolerance) : -1.0;
 
     if (direction > 0) {
         // Away first, then (after the extremum, if any) back: only the way back can cross.
-        if (t_extremum < 0 || above(h).value > 0) return false;
-        t_cross = first_nonpositive(above, t_extremum, h, tolerance);
+        if (t_extremum < 0) return false;
+        Sample end = above_from(at_h);
+        if (end.value > 0) return false;
+        t_cross = first_nonpositive(above, t_extremum, above_from(extremum.state), h, end, tolerance);
+        at_cross = end.state;
         return true;
     }
     // Toward the level, monotone until the extremum (or the end of the step): the crossing,
     // if any, is before it; after it the motion heads away again.
-    const double end = t_extremum < 0 ? h : t_extremum;
-    if (above(end).value > 0) return false;
-    t_cross = first_nonpositive(above, 0.0, end, tolerance);
+    const double stop = t_extremum < 0 ? h : t_extremum;
+    Sample end = above_from(t_extremum < 0 ? at_h : extremum.state);
+    if (end.value > 0) return false;
+    t_cross = first_nonpositive(above, 0.0, above_from(x), stop, end, tolerance);
+    at_cross = end.state;
     return true;
 }
 

@@ -43,7 +43,9 @@ float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
     return 0.0f;
 }
 
-void count_half_cycle(TetherAxisState& state, float stretch, float rest, float hysteresis) noexcept {
+// Out of line: only a law that ends after some half cycles counts them, and inlined the
+// compiler worked the side out on every piece of every law before testing whether to count.
+[[gnu::noinline]] void count_half_cycle(TetherAxisState& state, float stretch, float rest, float hysteresis) noexcept {
     const float e = stretch - rest;
     const int8_t side = e > hysteresis ? 1 : (e < -hysteresis ? -1 : 0);
     if (side == 0 || side == state.side) return;
@@ -101,52 +103,66 @@ void prepare_pieces(PreparedTether& t, double step_s) noexcept {
     t.step_s = step_s;
 }
 
-float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
-                              float hysteresis) noexcept {
+float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
+                             float hysteresis) noexcept {
     const float h = static_cast<float>(t.step_s);
     const float u = line.velocity;
     // The forces on a mass moving with the handle, apart from the spring (tether_law.cpp's
     // segment): taut, the tether damper reads against damper_velocity; slack, no tether.
     const float slack_force = t.mass * gravity - t.drag * u;
     const float taut_force = slack_force - t.b * (u - line.damper_velocity);
-    const float rest = rest_stretch_of(t, gravity);
+    // Half cycles are counted only for a law that ends after some (its count is what ends
+    // it): the rest stretch they are counted about takes two divisions.
+    const bool counting = t.half_cycles > 0;
+    const float rest = counting ? rest_stretch_of(t, gravity) : 0.0f;
     const float s0 = state.stretch;
     const float rate0 = state.velocity - u;
     float s = s0;
     float rate = rate0;
-    bool taut = false;  // whether any piece met the tether (else its impulse is exactly 0)
-    for (int32_t i = 0; i < t.pieces; ++i) {
-        const Region r = tether_region(t.length, s, rate, taut_force);
-        if (r == Region::slack && rate == 0 && slack_force == 0) {
-            // At rest in the play with nothing pushing it: no piece moves the mass (the
-            // free propagator maps (y, 0) to (y, 0) exactly), so neither do the rest. The
-            // exact piece would be asked every time (a piece that starts at rest may have
-            // turned), which is most of what a still handle costs.
+    bool taut = !t.piecewise;  // whether any piece met the tether (else its impulse is exactly 0)
+    if (!t.piecewise) {
+        // One region (no play, k_pos = k_neg), counting half cycles: the tether is always
+        // taut, both sides are the same propagator about the same origin (0).
+        for (int32_t i = 0; i < t.pieces; ++i) {
+            propagate(t.above, taut_force, s, rate);
             count_half_cycle(state, s, rest, hysteresis);
-            break;
         }
-        const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
-        const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
-        float y = s - origin;
-        float v = rate;
-        propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
-        if (t.piecewise && may_have_crossed(r, t.length, y + origin, rate, v) &&
-            !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f, r == Region::above ? t.k_pos : t.k_neg,
-                                                t.mass, taut_force, s - origin, rate))) {
-            // An edge may lie within the piece: the exact piece finds it (double, rare).
-            double s_exact = s;
-            double rate_exact = rate;
-            const TetherLaw law = exact_law(t, gravity);
-            const HandlePath path{0.0, u, line.damper_velocity};
-            taut = advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis) || taut;
-            s = static_cast<float>(s_exact);
-            rate = static_cast<float>(rate_exact);
-            continue;
+    } else {
+        for (int32_t i = 0; i < t.pieces; ++i) {
+            const Region r = tether_region(t.length, s, rate, taut_force);
+            if (r == Region::slack && rate == 0 && slack_force == 0) {
+                // At rest in the play with nothing pushing it: no piece moves the mass (the
+                // free propagator maps (y, 0) to (y, 0) exactly), so neither do the rest. The
+                // exact piece would be asked every time (a piece that starts at rest may have
+                // turned), which is most of what a still handle costs.
+                if (counting) count_half_cycle(state, s, rest, hysteresis);
+                break;
+            }
+            const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
+            const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
+            float y = s - origin;
+            float v = rate;
+            propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
+            if (may_have_crossed(r, t.length, y + origin, rate, v) &&
+                !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f,
+                                                    r == Region::above ? t.k_pos : t.k_neg, t.mass, taut_force,
+                                                    s - origin, rate))) {
+                // An edge may lie within the piece: the exact piece finds it (double, rare).
+                double s_exact = s;
+                double rate_exact = rate;
+                const TetherLaw law = exact_law(t, gravity);
+                const HandlePath path{0.0, u, line.damper_velocity};
+                taut = advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis) ||
+                       taut;
+                s = static_cast<float>(s_exact);
+                rate = static_cast<float>(rate_exact);
+                continue;
+            }
+            s = y + origin;
+            rate = v;
+            taut = taut || r != Region::slack;
+            if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
-        s = y + origin;
-        rate = v;
-        taut = taut || r != Region::slack;
-        count_half_cycle(state, s, rest, hysteresis);
     }
     state.stretch = s;
     state.velocity = rate + u;

@@ -21,6 +21,7 @@
 
 #include "dynamics/control_law_state.hpp"
 #include "dynamics/tether_law.hpp"
+#include "dynamics/tether_propagator.hpp"
 
 namespace feel::detail {
 
@@ -43,10 +44,35 @@ void prepare_pieces(PreparedTether& t, double step_s) noexcept;
 [[nodiscard]] TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept;
 
 // Advances one axis by h = t.step_s seconds (prepare_pieces first) under `gravity` against
-// the handle line, counting half cycles as advance_tether does. state.stretch is relative to
-// the handle at the start of the step and comes back relative to it at the end. Returns
-// the impulse the tether gave the mass, force units·s (the handle felt its opposite).
-float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
-                              float hysteresis) noexcept;
+// the handle line, counting half cycles as advance_tether_piece does when the law ends
+// after some (t.half_cycles > 0; else state.half_cycles and state.side are left as they
+// are). state.stretch is relative to the handle at the start of the step and comes back
+// relative to it at the end. Returns the impulse the tether gave the mass, force units·s
+// (the handle felt its opposite). The general case, out of line: a law with regions to
+// track or half cycles to count.
+float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
+                             float hysteresis) noexcept;
+
+// The same for any law. Most laws have one region and count nothing (recoil, impact,
+// liquid, center drift): their step is one propagator, inline, with none of the general
+// case's region bookkeeping (pieces is 1 for them: prepare_pieces).
+[[gnu::always_inline]] inline float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state,
+                                                             HandleLine line, float hysteresis) noexcept {
+    if (t.piecewise || t.half_cycles > 0) return advance_watched_tether(t, gravity, state, line, hysteresis);
+    const float u = line.velocity;
+    // The force on a mass moving with the handle, apart from the spring (tether_law.cpp's
+    // segment); the tether is always taut, its damper reading against damper_velocity.
+    const float taut_force = t.mass * gravity - t.drag * u - t.b * (u - line.damper_velocity);
+    const float s0 = state.stretch;
+    const float rate0 = state.velocity - u;
+    float s = s0;
+    float rate = rate0;
+    for (int32_t i = 0; i < t.pieces; ++i) propagate(t.above, taut_force, s, rate);
+    state.stretch = s;
+    state.velocity = rate + u;
+    // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
+    const float h = static_cast<float>(t.step_s);
+    return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+}
 
 }  // namespace feel::detail

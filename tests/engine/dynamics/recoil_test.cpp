@@ -131,6 +131,39 @@ TEST(Recoil, HighResonanceShakesFasterHighDecayDiesSooner) {
     }
 }
 
+TEST(Recoil, ASettledMassComesToAnExactRestOnceItsEnvelopeIsBelowFloatsRange) {
+    // The mass decays as the textbook oscillator; a stretch or velocity below float's
+    // smallest normal number (1.2e-38) is flushed to exactly 0 (control_law_dynamic.cpp:
+    // subnormal arithmetic is a hundred times slower on x86). Once the textbook envelope,
+    // e^(−γt)·|v0|/ωd for the position and (γ + ωd) times that for the velocity, is under
+    // 1e-39, the mass is exactly at rest and pulls exactly nothing: not the subnormal tail
+    // that would otherwise last until the envelope reaches float's last subnormal (1.4e-45,
+    // 0.14 s later here).
+    const EngineConfig c;
+    const Kick kick = recoil_kick(c, 9000, 5000, 2000, 7000, 3000);
+    const Oscillator o{kick.m, kick.b, kick.k, 0, kick.vx};
+    const double gamma = o.gamma();
+    const double wd = std::sqrt(o.omega0() * o.omega0() - gamma * gamma);
+    ASSERT_GT(wd, 0.0) << "underdamped, as the envelope assumes";
+    const double amplitude = std::fabs(kick.vx) / wd * (1 + gamma + wd);  // bounds both
+    DynamicRig rig;
+    rig.tick({0, 0});
+    rig.play(recoil_params(9000, 5000, 2000, 7000, 3000));
+    const double T = rig.period_s();
+    int at_rest = 0;
+    for (int n = 0; n < 2000 && at_rest < 50; ++n) {
+        const TickOutput out = rig.tick({0, 0});
+        if (amplitude * std::exp(-gamma * n * T) >= 1e-39) continue;
+        for (int a = 0; a < 2; ++a) {
+            ASSERT_EQ(out.mass_position[a], 0.0f) << "axis " << a << " tick " << n;
+            ASSERT_EQ(out.mass_velocity[a], 0.0f) << "axis " << a << " tick " << n;
+            ASSERT_EQ(out.force[a], 0.0f) << "axis " << a << " tick " << n;
+        }
+        ++at_rest;
+    }
+    EXPECT_EQ(at_rest, 50);
+}
+
 TEST(Recoil, IsExactlyTheControlLawWithTheMappedIntegers) {
     // §8.4 by construction: fired straight ahead, VelInit is −intensity on y and 0 on x,
     // and a control law with those integers renders the same forces bit for bit.
