@@ -5,7 +5,7 @@
 #            optimised at link time, the link's ltrans partitions (only the engine's
 #            objects are LTO objects: firmware/CMakeLists.txt)
 #   libgcc   soft-float double routines and 64-bit division the engine's code calls
-#   libm     the math library (exp, sin, cos, fmod, ...)
+#   libm     the math library (exp, expm1, sin, cos, expf, ...)
 #   runtime  newlib, libstdc++ and the semihosting syscalls: printf, malloc, exit
 #   program  the test or size program, start-up and the heap guard
 # Strings merged across files are counted once per file here, so the parts may exceed the

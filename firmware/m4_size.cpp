@@ -1,7 +1,9 @@
 // The engine's memory on the Cortex-M4F for 32 effect slots on 2 axes, itemised; run by
 // `make firmware` under qemu after the build (the flash figures come from the linked
-// image, see firmware/CMakeLists.txt). Sample memory and the report queue are sized as a
-// small device would: 1024 force-profile samples, 16 reports.
+// image, see firmware/CMakeLists.txt). Sample memory, the report queue and the pools of
+// effect memory are sized as a small device would: 1024 force-profile samples, 16 reports,
+// 4 dynamics and 8 conditions with memory (friction, texture, walls, barriers) resident at
+// once of the 32 effects.
 #include <cstdio>
 
 #include "engine_impl.hpp"  // detail::Slot
@@ -35,6 +37,8 @@ int main() {
     c.max_effects = 32;
     c.max_samples = 1024;
     c.report_capacity = 16;
+    c.max_dynamics = 4;
+    c.max_stateful_conditions = 8;
     std::printf("feel-m4-size\n");  // stdio takes its buffer now, before the count
     const size_t before = heap_guard_requested_bytes();
     Engine engine(c);
@@ -54,26 +58,31 @@ int main() {
     const unsigned stack = kPaint - untouched();
 
     // What a slot holds: the effect's parameters as the host gave them (EffectParams, every
-    // type's block for kMaxAxes axes), its memory between ticks (a condition's or a dynamic's,
-    // sharing the bytes), and the rest (per-tick constants, clock, command bookkeeping).
+    // type's block for kMaxAxes axes) and the rest (per-tick constants, clock, command
+    // bookkeeping, the index of its memory). The memory between ticks is in two pools.
     const unsigned slot = sizeof(detail::Slot);
     const unsigned slot_params = sizeof(EffectParams);
-    const unsigned slot_memory = sizeof(detail::ConditionState) > sizeof(detail::DynamicState)
-                                     ? sizeof(detail::ConditionState)
-                                     : sizeof(detail::DynamicState);
     const unsigned slots = 32 * slot;
+    const unsigned dynamic_record = sizeof(detail::DynamicRecord);
+    const unsigned condition_record = sizeof(detail::ConditionState);
+    // A record and its entry in the pool's stack of free indices.
+    const unsigned memory = static_cast<unsigned>(c.max_dynamics) * (dynamic_record + 2) +
+                            static_cast<unsigned>(c.max_stateful_conditions) * (condition_record + 2);
     const unsigned samples = 1024 * sizeof(int16_t);
     const unsigned estimator = sizeof(detail::MotionEstimator);
     const unsigned reports = 16 * sizeof(DynamicReport);
-    const unsigned rest = heap - slots - samples - reports - estimator;
+    const unsigned rest = heap - slots - memory - samples - reports - estimator;
     // The 16 KB goal split over the items: a budget each, so that each figure has a goal.
-    constexpr unsigned kSlotBudget = 9216, kSampleBudget = 2048, kEstimatorBudget = 4096, kReportBudget = 512,
-                       kRestBudget = 512;
-    static_assert(kSlotBudget + kSampleBudget + kEstimatorBudget + kReportBudget + kRestBudget == 16384);
+    constexpr unsigned kSlotBudget = 7168, kMemoryBudget = 2048, kSampleBudget = 2048, kEstimatorBudget = 4096,
+                       kReportBudget = 512, kRestBudget = 512;
+    static_assert(kSlotBudget + kMemoryBudget + kSampleBudget + kEstimatorBudget + kReportBudget + kRestBudget ==
+                  16384);
     std::printf("RAM for 32 slots on 2 axes (bytes; goal: the 16384-byte goal split over the items):\n");
-    std::printf("  slots            %6u  goal %5u  (32 x %u: parameters %u, condition or dynamic memory %u, "
-                "constants, clock and commands %u)\n",
-                slots, kSlotBudget, slot, slot_params, slot_memory, slot - slot_params - slot_memory);
+    std::printf("  slots            %6u  goal %5u  (32 x %u: parameters %u, constants, clock and commands %u)\n",
+                slots, kSlotBudget, slot, slot_params, slot - slot_params);
+    std::printf("  effect memory    %6u  goal %5u  (%d dynamics x %u, %d conditions with memory x %u, "
+                "2 bytes each to index them)\n",
+                memory, kMemoryBudget, c.max_dynamics, dynamic_record, c.max_stateful_conditions, condition_record);
     std::printf("  sample memory    %6u  goal %5u  (1024 force-profile samples)\n", samples, kSampleBudget);
     std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes: %d samples of time, "
                 "position and its fixed-point copy; the fits' time pattern and running sums)\n",

@@ -44,6 +44,14 @@ struct EngineConfig {
     // samples 2 each. 0 sizes it to hold max_effects of the largest effect plus max_samples
     // samples, so only the slots and the sample memory limit creation.
     int32_t pool_bytes = 0;
+    // The effects' memory between ticks, held from create to destroy (§2.2's "memory pool"
+    // as RAM): how many Dynamic Sensations (a simulated mass each) and how many conditions
+    // with memory (friction and texture: bristles; walls and barriers: a contact ledger) can
+    // be resident at once, 0..max_effects. 0 is one per effect slot (every host profile);
+    // a small device sets fewer (firmware/: 4 and 8 of 32 slots) and create() refuses the
+    // one over with ErrorCode::device_full naming the capacity (docs/firmware.md, "RAM").
+    int32_t max_dynamics = 0;
+    int32_t max_stateful_conditions = 0;
 
     // What the engine knows of the device, in normalized units (docs/conventions.md).
     // feel::sim::engine_config_for(profile) fills these from a device profile.
@@ -168,6 +176,12 @@ struct PoolInfo {
     int32_t free_bytes = 0;     // bytes no resident effect holds
     int32_t max_effects = 0;    // effect slots: the most effects resident (and playing) at once
     int32_t free_effects = 0;   // slots free
+    // Of those, how many dynamics and conditions with memory can be resident at once
+    // (EngineConfig::max_dynamics, max_stateful_conditions, 0 resolved) and are still free.
+    int32_t max_dynamics = 0;
+    int32_t free_dynamics = 0;
+    int32_t max_stateful_conditions = 0;
+    int32_t free_stateful_conditions = 0;
     int32_t total_samples = 0;  // force-profile sample storage, samples (EngineConfig::max_samples)
     int32_t free_samples = 0;
 };

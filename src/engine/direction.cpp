@@ -11,10 +11,13 @@ namespace {
 constexpr double kRadPerCentideg = std::numbers::pi / 18000.0;
 
 // sin and cos of an angle in hundredths of a degree, exact at the four cardinal points so
-// that a force from due east has no stray 1e-12 on the y axis.
-void sin_cos(double centideg, double& s, double& c) noexcept {
-    double a = std::fmod(centideg, 36000.0);
-    if (a < 0) a += 36000.0;
+// that a force from due east has no stray 1e-12 on the y axis. The angle is reduced in
+// integers: the same value fmod gives an integer (every angle is an int32 field), without
+// linking libm's fmod into the firmware (issue 14: flash).
+void sin_cos(int32_t centideg, double& s, double& c) noexcept {
+    int32_t whole_turns_off = centideg % 36000;
+    if (whole_turns_off < 0) whole_turns_off += 36000;
+    const double a = whole_turns_off;
     if (a == 0.0) { s = 0; c = 1; return; }
     if (a == 9000.0) { s = 1; c = 0; return; }
     if (a == 18000.0) { s = 0; c = -1; return; }
@@ -40,7 +43,7 @@ void from_vector(const EffectParams& params, const double* from, int n, float fa
 
 }  // namespace
 
-void polar_factors(double angle_centideg, float factors[kMaxAxes]) noexcept {
+void polar_factors(int32_t angle_centideg, float factors[kMaxAxes]) noexcept {
     clear(factors);
     double s = 0, c = 0;
     sin_cos(angle_centideg, s, c);

@@ -22,9 +22,9 @@ namespace feel::detail {
 // Assumes validate_effect() accepted the params. Axes the effect does not use get 0.
 void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noexcept;
 
-// The factors for a compass angle (hundredths of a degree, fractional allowed) on x, y.
+// The factors for a compass angle (whole hundredths of a degree, any int32) on x, y.
 // Double precision with libm, exact at the cardinal points: once per command.
-void polar_factors(double angle_centideg, float factors[kMaxAxes]) noexcept;
+void polar_factors(int32_t angle_centideg, float factors[kMaxAxes]) noexcept;
 // The same for an angle in turns, in single precision (turn_trig.hpp): a sweep's
 // direction, every tick. Exact at the cardinal points too.
 void polar_factors_turns(float turns, float factors[kMaxAxes]) noexcept;

@@ -50,6 +50,10 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
     if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
     if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
     if (!Range{0, 1 << 30}.contains(c.pool_bytes)) return Error::out_of_range("pool_bytes", c.pool_bytes, {0, 1 << 30});
+    if (!Range{0, c.max_effects}.contains(c.max_dynamics))
+        return Error::out_of_range("max_dynamics", c.max_dynamics, {0, c.max_effects});
+    if (!Range{0, c.max_effects}.contains(c.max_stateful_conditions))
+        return Error::out_of_range("max_stateful_conditions", c.max_stateful_conditions, {0, c.max_effects});
     if (!(c.velocity_ref > 0) || !std::isfinite(c.velocity_ref))
         return Error::invalid("velocity_ref", "must be a finite number > 0");
     if (!(c.acceleration_ref > 0) || !std::isfinite(c.acceleration_ref))
@@ -87,7 +91,6 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
-    s.dynamic.prepared = false;
     detail::element_direction(s.params, s.direction);  // walls and barriers: u across the surface
 }
 
@@ -142,6 +145,8 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     if (bytes > m.pool_total_bytes - m.pool_used_bytes) {
         return {{}, detail::pool_full_error(bytes, m.pool_total_bytes - m.pool_used_bytes)};
     }
+    const detail::MemoryKind memory = detail::memory_kind(params.type);
+    if (m.free_records(memory) == 0) return {{}, m.memory_full_error(memory)};
     const bool is_profile = params.type == EffectType::force_profile;
     if (is_profile && !m.samples.allocate(index, samples.data(), static_cast<int32_t>(samples.size()))) {
         return {{}, Error::of(ErrorCode::device_full, "custom.samples", "not enough free sample memory")};
@@ -152,7 +157,6 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.state = EffectState::stopped;
     s.start_t_us = 0;
     s.began_playing = false;
-    s.next_interim_us = 0;
     s.iterations_override = 0;
     s.completed_iterations = 0;
     s.elapsed_us = 0;
@@ -160,8 +164,9 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.last_end = PlayEnd::none;
     s.pool_bytes = bytes;
     m.pool_used_bytes += bytes;
+    m.acquire_memory(s, memory);
     detail::prepare_slot(s);
-    s.reset_memory();
+    m.reset_memory(s);
     if (index >= m.slot_end) m.slot_end = index + 1;
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
@@ -318,7 +323,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             // Dynamics integrate their masses in double (docs/stability.md, "Where double
             // remains"); their force is converted once here.
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
-                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic};
+                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
             double dynamic_force[kMaxAxes] = {};
             detail::render_dynamic(dynamic, dynamic_force, result);
@@ -339,7 +344,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.start_position = s.start_position;
             condition.direction = s.direction;
             condition.tau_us = clock.tau_us;
-            condition.state = &s.condition;
+            condition.state = s.condition_memory;
             condition.curves = s.curves;
             s.render_condition(condition, force);
         } else {
@@ -376,7 +381,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.start_position = s.start_position;
             condition.direction = s.direction;
             condition.tau_us = m.last_slots[k].tau_us;
-            condition.state = &s.condition;
+            condition.state = s.condition_memory;
             condition.curves = s.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);

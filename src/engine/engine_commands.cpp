@@ -164,7 +164,7 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
     s->params = merged;
     m.pool_used_bytes += bytes - s->pool_bytes;
     s->pool_bytes = bytes;
-    detail::prepare_slot(*s);
+    m.prepare(*s);
     if (restart) m.begin_play(*s, 0);
     return {};
 }
@@ -200,6 +200,10 @@ PoolInfo Engine::pool() const noexcept {
     for (int32_t i = 0; i < m.slot_count; ++i) {
         if (m.slots[i].state == EffectState::free) ++p.free_effects;
     }
+    p.max_dynamics = m.dynamic_pool.capacity();
+    p.free_dynamics = m.dynamic_pool.free_count();
+    p.max_stateful_conditions = m.condition_pool.capacity();
+    p.free_stateful_conditions = m.condition_pool.free_count();
     p.total_samples = m.samples.capacity();
     p.free_samples = m.samples.free_samples();
     return p;

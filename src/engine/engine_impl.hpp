@@ -11,14 +11,19 @@
 #include "dynamics/dynamic.hpp"
 #include "feel/engine.hpp"
 #include "motion_estimator.hpp"
+#include "record_pool.hpp"
 #include "sample_pool.hpp"
 
 namespace feel {
 namespace detail {
 
-struct Slot {
-    Slot() noexcept : condition{} {}  // the union's first state live; every other field as declared
+// A dynamic's memory between ticks: its simulated mass and its interim reports' schedule.
+struct DynamicRecord {
+    DynamicState state{};
+    int64_t next_interim_us = 0;  // when the next interim report is due
+};
 
+struct Slot {
     EffectParams params{};
     float direction[kMaxAxes] = {};  // force per unit value on each device axis
     // What the tick needs of params every tick, worked out once per command (prepare_slot):
@@ -39,16 +44,15 @@ struct Slot {
     bool renders_last = false;
     EffectState state = EffectState::free;
     uint16_t generation = 0;
+    // The effect's memory between ticks, if its type keeps any (memory_kind): its record in
+    // the engine's pool of its kind (Engine::Impl::dynamic_pool, ::condition_pool), held
+    // from create to destroy; null for the others. The live member follows cls.
+    union {
+        detail::ConditionState* condition_memory = nullptr;
+        detail::DynamicRecord* dynamic_memory;
+    };
     int64_t start_t_us = 0;
     float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
-    // The effect's memory between ticks: a condition's (bristles, contact ledger) or a
-    // dynamic's (its simulated mass), never both, so they share the bytes. Which one is
-    // live follows cls; reset_memory() starts the live one afresh.
-    union {
-        detail::ConditionState condition;
-        detail::DynamicState dynamic;
-    };
-    int64_t next_interim_us = 0;           // when the next interim report is due
 
     // Commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
     int32_t iterations_override = 0;       // this play's count from start(id, n, solo); 0 = the effect's
@@ -57,22 +61,37 @@ struct Slot {
     uint32_t starts = 0;                   // times started since created
     int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
 
-    // Starts the memory of the slot's class afresh (cls must be set: prepare_slot). Both
-    // states are trivially copyable, so assigning one makes it the union's live member.
-    void reset_memory() noexcept {
-        if (cls == EffectClass::dynamic) {
-            dynamic = detail::DynamicState{};
-        } else {
-            condition = detail::ConditionState{};
-        }
-    }
-
     // The iteration count of the current play: Engine::start's override, else the effect's.
     // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
     [[nodiscard]] int32_t play_iterations() const noexcept {
         return iterations_override != 0 ? iterations_override : params.iterations;
     }
 };
+
+// Whether an effect of this type keeps memory between ticks, in which pool: dynamics their
+// simulated mass (DynamicRecord), friction and texture their bristles and walls and barriers
+// their contact ledger (ConditionState). Waves, springs, dampers and inertia keep none.
+enum class MemoryKind : uint8_t { none, dynamic, condition };
+[[nodiscard]] constexpr MemoryKind memory_kind(EffectType t) noexcept {
+    switch (t) {
+        case EffectType::friction:
+        case EffectType::texture:
+        case EffectType::axis_wall:
+        case EffectType::angle_wall:
+        case EffectType::axis_barrier:
+        case EffectType::angle_barrier: return MemoryKind::condition;
+        default: return effect_class(t) == EffectClass::dynamic ? MemoryKind::dynamic : MemoryKind::none;
+    }
+}
+
+// The capacities an EngineConfig asks for, its 0s resolved (EngineConfig::max_dynamics,
+// max_stateful_conditions: 0 is one per effect slot).
+[[nodiscard]] constexpr int32_t dynamics_capacity(const EngineConfig& c) noexcept {
+    return c.max_dynamics == 0 ? c.max_effects : c.max_dynamics;
+}
+[[nodiscard]] constexpr int32_t stateful_conditions_capacity(const EngineConfig& c) noexcept {
+    return c.max_stateful_conditions == 0 ? c.max_effects : c.max_stateful_conditions;
+}
 
 // Works out a slot's per-tick constants (direction, class, gain) from its params: after
 // every command that sets them, never in the tick.
@@ -98,7 +117,10 @@ struct Engine::Impl {
           config_error(detail::check_engine_config(c)),
           slot_count(config_error ? 0 : c.max_effects),
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
-          last_slots(new LastSlot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
+          dynamic_pool(config_error ? 0 : detail::dynamics_capacity(c)),
+          condition_pool(config_error ? 0 : detail::stateful_conditions_capacity(c)),
+          // Only friction and texture render last, and each holds a condition's memory.
+          last_slots(new LastSlot[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_error ? 0 : c.max_samples, slot_count),
           report_capacity(config_error ? 1 : c.report_capacity),
           reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
@@ -113,8 +135,7 @@ struct Engine::Impl {
     void begin_play(detail::Slot& s, int32_t iterations_override) noexcept {
         s.state = EffectState::pending;
         s.began_playing = false;
-        s.reset_memory();
-        s.next_interim_us = 0;
+        reset_memory(s);
         s.iterations_override = iterations_override;
         s.completed_iterations = 0;
         s.elapsed_us = 0;
@@ -122,9 +143,58 @@ struct Engine::Impl {
         ++s.starts;
     }
 
-    // Frees a slot: its samples and bytes return to the pool, its handles go stale.
+    // Free records in the pool of a kind of memory (1 for none: there is nothing to take).
+    [[nodiscard]] int32_t free_records(detail::MemoryKind kind) const noexcept {
+        return kind == detail::MemoryKind::dynamic     ? dynamic_pool.free_count()
+               : kind == detail::MemoryKind::condition ? condition_pool.free_count()
+                                                       : 1;
+    }
+
+    // The device_full error of a create whose type's memory pool is full: the field names
+    // the capacity, value = the effects of that kind with this one, allowed.max = capacity.
+    [[nodiscard]] Error memory_full_error(detail::MemoryKind kind) const noexcept {
+        const bool dynamic = kind == detail::MemoryKind::dynamic;
+        Error e = Error::out_of_range(
+            dynamic ? "resident dynamics (EngineConfig::max_dynamics)" : "stateful conditions (max_stateful_conditions)",
+            int64_t{dynamic ? dynamic_pool.capacity() : condition_pool.capacity()} + 1,
+            Range{0, dynamic ? dynamic_pool.capacity() : condition_pool.capacity()});
+        e.code = ErrorCode::device_full;
+        return e;
+    }
+
+    // Takes a record of the slot's kind for a slot being created (free_records said there is one).
+    void acquire_memory(detail::Slot& s, detail::MemoryKind kind) noexcept {
+        if (kind == detail::MemoryKind::dynamic) {
+            s.dynamic_memory = dynamic_pool.acquire();
+        } else {
+            s.condition_memory = kind == detail::MemoryKind::condition ? condition_pool.acquire() : nullptr;
+        }
+    }
+
+    // Starts the slot's memory afresh (cls must be set: prepare_slot).
+    static void reset_memory(const detail::Slot& s) noexcept {
+        if (s.cls == EffectClass::dynamic) {
+            *s.dynamic_memory = detail::DynamicRecord{};
+        } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
+            *s.condition_memory = detail::ConditionState{};
+        }
+    }
+
+    // prepare_slot, and a dynamic's per-tick form of its parameters marked stale.
+    static void prepare(detail::Slot& s) noexcept {
+        detail::prepare_slot(s);
+        if (s.cls == EffectClass::dynamic) s.dynamic_memory->state.prepared = false;
+    }
+
+    // Frees a slot: its samples, bytes and memory return to their pools, its handles go stale.
     void free_slot(detail::Slot& s, int32_t index) noexcept {
         samples.release(index);
+        if (s.cls == EffectClass::dynamic) {
+            dynamic_pool.release(s.dynamic_memory);
+        } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
+            condition_pool.release(s.condition_memory);
+        }
+        s.condition_memory = nullptr;
         pool_used_bytes -= s.pool_bytes;
         s.pool_bytes = 0;
         s.state = EffectState::free;
@@ -163,7 +233,8 @@ struct Engine::Impl {
                 out.mass_velocity[a] = r.mass_velocity[a];
             }
         }
-        const bool interim_due = s.params.dynamic.interim_reporting && t_us >= s.next_interim_us;
+        int64_t& next_interim_us = s.dynamic_memory->next_interim_us;
+        const bool interim_due = s.params.dynamic.interim_reporting && t_us >= next_interim_us;
         if (!interim_due && !r.finished) return;
         DynamicReport report;
         report.effect = EffectId{index, s.generation};
@@ -181,8 +252,8 @@ struct Engine::Impl {
             // The next report is due one period after this one was due, so the rate holds on
             // average even when the period is not a whole number of ticks.
             const int64_t period_us = interim_period_us;
-            s.next_interim_us = (s.next_interim_us == 0 ? t_us : s.next_interim_us) + period_us;
-            if (s.next_interim_us <= t_us) s.next_interim_us = t_us + period_us;
+            next_interim_us = (next_interim_us == 0 ? t_us : next_interim_us) + period_us;
+            if (next_interim_us <= t_us) next_interim_us = t_us + period_us;
         }
     }
 
@@ -196,6 +267,10 @@ struct Engine::Impl {
     Error config_error;
     int32_t slot_count;
     std::unique_ptr<detail::Slot[]> slots;
+    // The effects' memory between ticks, by kind (record_pool.hpp; Slot::condition_memory,
+    // Slot::dynamic_memory).
+    detail::RecordPool<detail::DynamicRecord> dynamic_pool;
+    detail::RecordPool<detail::ConditionState> condition_pool;
     // The tick's slots that render last (Slot::renders_last), gathered during its first pass.
     struct LastSlot {
         int32_t index = 0;

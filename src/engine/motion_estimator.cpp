@@ -93,6 +93,15 @@ static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0
 constexpr int kMask = MotionEstimator::kHistory - 1;
 constexpr int kFirstSummed = MotionEstimator::kFirstSummed;
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
+
+// The ring keeps the low 32 bits of each sample's time (issue 14: 512 bytes less). The time
+// between two of them is exact while it is under 2^32 µs: update() restarts the history
+// after a gap of kMaxGapUs or more between ticks, so every interval in the ring is shorter,
+// and the ages the fits read (at most the window plus one interval) are too.
+constexpr uint32_t low_bits(int64_t t_us) noexcept { return static_cast<uint32_t>(static_cast<uint64_t>(t_us)); }
+constexpr int64_t elapsed_us(uint32_t later, uint32_t earlier) noexcept {
+    return static_cast<int64_t>(static_cast<uint32_t>(later - earlier));
+}
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
@@ -280,20 +289,25 @@ void MotionEstimator::push_interval(int64_t interval_us) noexcept {
 
 void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int axis_count,
                              bool with_acceleration) noexcept {
-    if (count_ > 0 && t_us < t_us_[head_]) reset();  // time went backwards: start over
+    // Time went backwards, or stood still for over half an hour (the ring's 32-bit times,
+    // above; a sample that old says nothing of the motion now): start over.
+    if (count_ > 0 && (t_us < newest_t_us_ ||
+                       static_cast<uint64_t>(t_us) - static_cast<uint64_t>(newest_t_us_) >= kMaxGapUs)) {
+        reset();
+    }
     // A new slot for this sample, unless it is the same instant as the newest one or would
     // crowd it: samples before the newest stay kMinSpacingUs apart, so that the history
     // spans kMaxWindowUs at any loop rate (at 10 kHz it keeps every 8th tick, plus the
     // newest). Otherwise the newest sample is replaced by this fresher reading.
     const int previous = (head_ + 1) & kMask;
-    const bool crowded = count_ >= 2 && t_us - t_us_[previous] < kMinSpacingUs;
-    const bool pushed = count_ == 0 || (t_us > t_us_[head_] && !crowded);
+    const bool crowded = count_ >= 2 && elapsed_us(low_bits(t_us), t_low_[previous]) < kMinSpacingUs;
+    const bool pushed = count_ == 0 || (t_us > newest_t_us_ && !crowded);
     if (pushed) {
-        if (count_ > 0) push_interval(t_us - t_us_[head_]);
+        if (count_ > 0) push_interval(t_us - newest_t_us_);
         // The newest sample becomes frozen: the interval between it and the one before
         // joins the frozen ones.
         if (count_ >= 2) {
-            const int64_t frozen = t_us_[head_] - t_us_[previous];
+            const int64_t frozen = elapsed_us(t_low_[head_], t_low_[previous]);
             if (frozen == frozen_interval_us_) {
                 if (frozen_run_ < kHistory) ++frozen_run_;
             } else {
@@ -305,13 +319,14 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         if (count_ < kHistory) ++count_;
     } else if (count_ >= 2) {
         // The newest interval changes: if it no longer matches, only it is known steady.
-        const int64_t interval = t_us - t_us_[previous];
+        const int64_t interval = elapsed_us(low_bits(t_us), t_low_[previous]);
         if (interval != steady_interval_us_) {
             steady_interval_us_ = interval;
             steady_run_ = 1;
         }
     }
-    t_us_[head_] = t_us;
+    t_low_[head_] = low_bits(t_us);
+    newest_t_us_ = t_us;
     const int axes = axis_count < kMaxAxes ? (axis_count > 0 ? axis_count : 0) : kMaxAxes;
     // Axes never written hold 0 throughout the ring, which is what they would read: they are
     // skipped (kMaxAxes is 6; a device has 2 or 3) until an update names them.
@@ -344,7 +359,7 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     sums_axes_ = axes;
 
     refresh_time_pattern();
-    newest_interval_u_ = count_ >= 2 ? static_cast<float>(t_us_[head_] - t_us_[(head_ + 1) & kMask]) * kUnitsPerUs : 0.0f;
+    newest_interval_u_ = count_ >= 2 ? static_cast<float>(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
     for (int a = 0; a < axes; ++a) estimate_axis(a, with_acceleration);
     for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
@@ -565,7 +580,7 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     }
     int max_n = 0;
     for (int i = 0; i < count_; ++i) {
-        const int64_t age_us = t_us_[head_] - t_us_[(head_ + i) & kMask];
+        const int64_t age_us = elapsed_us(t_low_[head_], t_low_[(head_ + i) & kMask]);
         if (i > 1 && age_us > kMaxWindowUs) break;  // the newest two samples are always usable
         p.u[i] = -static_cast<float>(age_us) * kUnitsPerUs;
         max_n = i;

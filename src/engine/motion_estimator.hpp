@@ -40,6 +40,9 @@ public:
     // history spans kMaxWindowUs whatever the loop rate (faster loops keep every few ticks;
     // the newest sample is always the latest tick).
     static constexpr int64_t kMinSpacingUs = kMaxWindowUs / (kHistory - 1);
+    // A tick this long after the previous one restarts the history (as time going backwards
+    // does): 2^31 µs, 36 minutes. It keeps every interval the ring's 32-bit times hold exact.
+    static constexpr uint64_t kMaxGapUs = uint64_t{1} << 31;
     // The acceleration is fitted over at least this many sample intervals (8 ms at 1 kHz).
     static constexpr int kMinAccelerationWindow = 8;
     // Window lengths tried (in sample intervals) below the whole history, shortest first;
@@ -76,7 +79,8 @@ public:
 
     // Feeds the sensed positions of one tick at t_us. Times must not decrease; a sample at
     // the same time as the newest one, or closer than kMinSpacingUs to the one before it,
-    // replaces the newest; an earlier time restarts the history.
+    // replaces the newest; an earlier time, or one kMaxGapUs or more later, restarts the
+    // history.
     // with_acceleration false leaves the acceleration to be fitted if acceleration() is
     // called (it then gathers the history again); the tick passes false when no inertia
     // plays.
@@ -156,7 +160,10 @@ private:
     // The newest steady_run_ intervals all equal steady_interval_us_ (µs).
     int64_t steady_interval_us_ = 0;
     int steady_run_ = 0;
-    int64_t t_us_[kHistory] = {};
+    int64_t newest_t_us_ = 0;  // the newest sample's time
+    // Every sample's time, its low 32 bits: the times between them follow exactly
+    // (kMaxGapUs; motion_estimator.cpp, elapsed_us).
+    uint32_t t_low_[kHistory] = {};
     // Axes update() has written samples of (the ring of the others holds only 0); never
     // lowered, not even by reset(), which leaves the ring's contents.
     int written_axes_ = 0;

@@ -315,6 +315,10 @@ Result<PoolInfo> Device::pool() {
     info.free_bytes = static_cast<int32_t>(p.ram_pool_available);
     info.max_effects = p.simultaneous_effects_max;
     info.free_effects = p.free_effects;
+    // The PID Pool Report has no count of dynamics or conditions with memory: feel's devices
+    // keep one of each per effect slot (EngineConfig's 0), so every free slot can take either.
+    info.max_dynamics = info.max_stateful_conditions = info.max_effects;
+    info.free_dynamics = info.free_stateful_conditions = info.free_effects;
     info.total_samples = static_cast<int32_t>(p.sample_memory);
     info.free_samples = static_cast<int32_t>(p.free_samples);
     return info;

@@ -137,6 +137,10 @@ struct DeviceSession::Impl {
         pool.free_bytes = c.pool_bytes;
         pool.max_effects = cfg.engine.max_effects;
         pool.free_effects = cfg.engine.max_effects;
+        pool.max_dynamics = pool.free_dynamics =
+            cfg.engine.max_dynamics == 0 ? cfg.engine.max_effects : cfg.engine.max_dynamics;
+        pool.max_stateful_conditions = pool.free_stateful_conditions =
+            cfg.engine.max_stateful_conditions == 0 ? cfg.engine.max_effects : cfg.engine.max_stateful_conditions;
         pool.total_samples = c.sample_memory;
         pool.free_samples = c.sample_memory;
         round_entries.reserve(static_cast<std::size_t>(cfg.engine.max_effects));

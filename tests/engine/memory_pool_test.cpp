@@ -113,6 +113,10 @@ TEST(MemoryPool, PoolReportsItsSizes) {
     EXPECT_EQ(p.free_bytes, 500);
     EXPECT_EQ(p.max_effects, 12);
     EXPECT_EQ(p.free_effects, 12);
+    EXPECT_EQ(p.max_dynamics, 12);  // EngineConfig's 0: one per slot
+    EXPECT_EQ(p.free_dynamics, 12);
+    EXPECT_EQ(p.max_stateful_conditions, 12);
+    EXPECT_EQ(p.free_stateful_conditions, 12);
     EXPECT_EQ(p.total_samples, 100);
     EXPECT_EQ(p.free_samples, 100);
     EffectParams profile = constant_on_x(0, kInfiniteUs);
@@ -245,6 +249,56 @@ TEST(MemoryPool, APoolOfZeroHoldsEverySlotOfTheLargestEffectAndAllSamples) {
     profile.custom = {1, 1000, 100};
     ASSERT_TRUE(engine.create(profile, std::vector<int16_t>(100, 1)).error.ok());
     EXPECT_EQ(engine.pool().free_effects, 0);
+}
+
+// A small device holds fewer dynamics and conditions with memory than it has slots
+// (EngineConfig::max_dynamics, max_stateful_conditions): the one over is refused with
+// device_full naming the capacity, changes nothing, and effects that keep no memory still fit.
+TEST(MemoryPool, DynamicsAndConditionsWithMemoryHaveCapacitiesOfTheirOwn) {
+    EngineConfig c;
+    c.max_effects = 8;
+    c.max_dynamics = 2;
+    c.max_stateful_conditions = 1;
+    Engine engine(c);
+    EffectParams law = on_xy(EffectType::dynamic_control_law);
+    const EffectId first = engine.create(law).id;
+    ASSERT_TRUE(first.valid());
+    ASSERT_TRUE(engine.create(law).error.ok());
+    const PoolInfo before = engine.pool();
+    EXPECT_EQ(before.max_dynamics, 2);
+    EXPECT_EQ(before.free_dynamics, 0);
+    const CreateResult third = engine.create(law);
+    EXPECT_EQ(third.error.code, ErrorCode::device_full);
+    EXPECT_STREQ(third.error.field, "resident dynamics (EngineConfig::max_dynamics)");
+    EXPECT_EQ(third.error.allowed.max, 2);
+    EXPECT_EQ(third.error.value, 3);
+    EXPECT_NE(third.error.message().find("allowed 0..2"), std::string::npos) << third.error.message();
+    EXPECT_EQ(engine.pool().free_bytes, before.free_bytes);
+    EXPECT_EQ(engine.pool().free_effects, before.free_effects);
+
+    ASSERT_TRUE(engine.create(on_xy(EffectType::friction)).error.ok());
+    const CreateResult second = engine.create(on_xy(EffectType::friction));
+    EXPECT_EQ(second.error.code, ErrorCode::device_full);
+    EXPECT_STREQ(second.error.field, "stateful conditions (max_stateful_conditions)");
+    EXPECT_EQ(second.error.allowed.max, 1);
+    EXPECT_TRUE(engine.create(on_xy(EffectType::spring)).error.ok());  // keeps no memory
+    EXPECT_TRUE(engine.create(constant_on_x(1000, kInfiniteUs)).error.ok());
+
+    ASSERT_TRUE(engine.destroy(first).ok());
+    EXPECT_EQ(engine.pool().free_dynamics, 1);
+    EXPECT_TRUE(engine.create(law).error.ok());
+}
+
+TEST(MemoryPool, MoreDynamicsOrConditionsWithMemoryThanSlotsIsAConfigError) {
+    EngineConfig c;
+    c.max_effects = 8;
+    c.max_dynamics = 9;
+    EXPECT_STREQ(Engine(c).create(constant_on_x(1000, kInfiniteUs)).error.field, "max_dynamics");
+    c.max_dynamics = 0;
+    c.max_stateful_conditions = -1;
+    const CreateResult r = Engine(c).create(constant_on_x(1000, kInfiniteUs));
+    EXPECT_STREQ(r.error.field, "max_stateful_conditions");
+    EXPECT_EQ(r.error.allowed.max, 8);
 }
 
 TEST(MemoryPool, ABadPoolSizeIsAConfigError) {

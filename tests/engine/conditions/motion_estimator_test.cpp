@@ -230,13 +230,20 @@ TEST(MotionEstimator, UnevenTicksAreFittedWithTheirOwnTimes) {
     }
 }
 
-TEST(MotionEstimator, RepeatedAndBackwardTimes) {
+// An estimator of the joystick's sensor fed position 0 at t = 0 and 10 at t = 1 ms.
+MotionEstimator after_ten_units_in_a_millisecond() {
     MotionEstimator m;
     m.configure(static_cast<float>(kJoystickStep));
     float p[kMaxAxes] = {0};
     m.update(0, p, 1);
     p[0] = 10;
     m.update(1000, p, 1);
+    return m;
+}
+
+TEST(MotionEstimator, RepeatedAndBackwardTimes) {
+    MotionEstimator m = after_ten_units_in_a_millisecond();
+    float p[kMaxAxes] = {10};
     EXPECT_NEAR(m.velocity(0), 10000, 1e-2);
     p[0] = 20;
     m.update(1000, p, 1);  // the same instant again: the fresher reading replaces it
@@ -245,6 +252,41 @@ TEST(MotionEstimator, RepeatedAndBackwardTimes) {
     m.update(500, p, 1);  // time went backwards: the history starts over
     EXPECT_EQ(m.velocity(0), 0.0f);
     EXPECT_EQ(m.velocity_window(0), 0);
+}
+
+// The ring keeps 32-bit times (issue 14: RAM). The fits see only times between samples, so
+// the same motion at times shifted across 2^32 µs reads the same, bit for bit.
+TEST(MotionEstimator, TimesAcrossTheThirtyTwoBitBoundaryReadTheSame) {
+    MotionEstimator near_zero;
+    MotionEstimator shifted;
+    near_zero.configure(static_cast<float>(kJoystickStep));
+    shifted.configure(static_cast<float>(kJoystickStep));
+    constexpr int64_t kShift = (int64_t{1} << 32) - 60'000;  // the boundary 60 ms in
+    for (int64_t t = 0; t <= 200'000; t += 1000) {
+        float p[kMaxAxes] = {};
+        p[0] = static_cast<float>(quantize(3000.0 * std::sin(static_cast<double>(t) * 2e-5), kJoystickStep));
+        near_zero.update(t, p, 1);
+        shifted.update(t + kShift, p, 1);
+        ASSERT_EQ(near_zero.velocity(0), shifted.velocity(0)) << t;
+        ASSERT_EQ(near_zero.acceleration(0), shifted.acceleration(0)) << t;
+    }
+}
+
+// A tick 2^31 µs (36 minutes) or more after the previous one restarts the history, as time
+// going backwards does; one a microsecond sooner is fitted across the gap.
+TEST(MotionEstimator, AGapOfHalfAnHourRestartsTheHistory) {
+    constexpr auto kMaxGap = static_cast<int64_t>(MotionEstimator::kMaxGapUs);
+    for (const int64_t gap : {kMaxGap - 1, kMaxGap}) {
+        MotionEstimator m = after_ten_units_in_a_millisecond();
+        float p[kMaxAxes] = {20};
+        m.update(1000 + gap, p, 1);
+        if (gap < kMaxGap) {
+            EXPECT_NEAR(m.velocity(0), 10.0 / (static_cast<double>(gap) * 1e-6), 1e-6) << gap;
+        } else {
+            EXPECT_EQ(m.velocity(0), 0.0f);
+            EXPECT_EQ(m.velocity_window(0), 0);
+        }
+    }
 }
 
 TEST(MotionEstimator, TheWindowIsLongWhenSlowAndShortWhenTheMotionBends) {
