@@ -154,6 +154,8 @@ std::vector<json> LiveSession::handle(std::string_view text, Clock::time_point r
         if (type == "pointer") {
             pointer_seq_ = m["seq"].get<int64_t>();
             const DeviceSample before = device_->newest();
+            pointer_.taken_before_us = device_->hand_target_taken_us();
+            pointer_.take_reported_us.reset();
             if (!device_->set_hand_target(m["x"].get<int32_t>(), m["y"].get<int32_t>())) {
                 return {error_reply("the hand of a device in another process is a person's: the pad only shows it",
                                     type)};
@@ -352,7 +354,17 @@ static bool force_moved(const DeviceSample& s, const float (&before)[kMaxAxes]) 
 bool LiveSession::pointer_answer_ready() const {
     if (pointer_.answered) return false;
     const DeviceSample s = device_->newest();
-    return s.seq > last_sample_ && s.host_us >= steady_us(pointer_.applied) && force_moved(s, pointer_.force);
+    return s.seq > last_sample_ && s.host_us >= steady_us(pointer_.applied) &&
+           after_take(s, device_->hand_target_taken_us()) && force_moved(s, pointer_.force);
+}
+
+// A report can answer the newest pointer message only if its tick came after the device's
+// loop took that message's target: a force still moving from the previous target (a hand
+// still settling) is not this message's answer. A device in another process cannot say
+// when it took a target (a person's hand holds it): any report after the message counts.
+bool LiveSession::after_take(const DeviceSample& s, int64_t taken_us) const {
+    if (!device_->simulated()) return true;
+    return taken_us >= 0 && taken_us != pointer_.taken_before_us && s.t_us >= taken_us;
 }
 
 json LiveSession::state_frame(bool* pointer_answered, bool* news) {
@@ -370,6 +382,8 @@ json LiveSession::state_frame(bool* pointer_answered, bool* news) {
     int64_t force_seen_transit_us = 0;
     int64_t force_seen_device_us = 0;  // that report's tick, device time
     const int64_t applied_us = steady_us(pointer_.applied);
+    // read before the reports: a report of the taking tick implies the take is stored
+    const int64_t taken_us = device_->hand_target_taken_us();
     bool changed = false;
     for (const DeviceSample& s : samples) {
         json row = json::array({static_cast<double>(s.t_us) / 1000.0});
@@ -394,8 +408,10 @@ json LiveSession::state_frame(bool* pointer_answered, bool* news) {
         const int64_t offset = s.host_us - s.t_us;
         if (!min_offset_us_ || offset < *min_offset_us_) min_offset_us_ = offset;
         if (!pointer_.answered && !force_seen_us && s.host_us >= applied_us) {
+            const bool answers = after_take(s, taken_us);
+            if (answers && !pointer_.take_reported_us) pointer_.take_reported_us = s.host_us;
             pointer_.min_fade = std::min(pointer_.min_fade, s.fade_level);
-            if (force_moved(s, pointer_.force)) {
+            if (answers && force_moved(s, pointer_.force)) {
                 force_seen_us = s.host_us;
                 force_seen_transit_us = offset - *min_offset_us_;
                 force_seen_device_us = s.t_us;
@@ -452,8 +468,12 @@ json LiveSession::state_frame(bool* pointer_answered, bool* news) {
         // Of the device hop, on the device's own clock (exact): the loop's tick that took
         // the target -> the tick whose report has the new force (the handle's motion). -1
         // when the device cannot say (a device in another process).
-        const int64_t taken_us = device_->hand_target_taken_us();
         const int64_t loop_us = taken_us < 0 ? -1 : force_seen_device_us - taken_us;
+        // The software path on the server's clock: the target set -> the report of the
+        // tick that took it in the sampler (the wait for the tick, the report's way out).
+        // -1 when the device cannot say.
+        const int64_t software_us =
+            pointer_.take_reported_us && device_->simulated() ? *pointer_.take_reported_us - applied_us : -1;
         frame["pointer_hops"] = {{"seq", pointer_seq_},
                                  {"read_wall_us", wall_us(pointer_.read)},
                                  {"built_wall_us", wall_us(built)},
@@ -461,6 +481,7 @@ json LiveSession::state_frame(bool* pointer_answered, bool* news) {
                                  {"device_us", static_cast<double>(*force_seen_us - applied_us)},
                                  {"transit_us", static_cast<double>(force_seen_transit_us)},
                                  {"loop_us", static_cast<double>(loop_us)},
+                                 {"software_us", static_cast<double>(software_us)},
                                  {"taken_t_us", static_cast<double>(taken_us)},
                                  {"min_fade", pointer_.min_fade},
                                  {"frame_us", static_cast<double>(steady_us(built) - *force_seen_us)}};

@@ -83,6 +83,9 @@ public:
     [[nodiscard]] const host::Effect* effect(size_t i) const noexcept;
 
 private:
+    // Whether report `s` came from a tick after the device took the newest pointer's target
+    // (`taken_us`: the newest take, device time), so that it can answer that pointer.
+    [[nodiscard]] bool after_take(const DeviceSample& s, int64_t taken_us) const;
     struct Slot {
         format::EffectSpec spec;  // as the browser last sent it (valid)
         std::optional<host::Effect> effect;
@@ -117,6 +120,11 @@ private:
         float force[kMaxAxes] = {};   // the newest report's force when it was applied
         bool answered = true;         // a frame showed its force change
         float min_fade = 1;           // the lowest safety fade in the reports since applied
+        // The device's software path, apart from the hand's physics: the take of the
+        // previous target (device time), and when the report of the tick that took this
+        // one reached the sampler (steady µs; unset until then).
+        int64_t taken_before_us = -1;
+        std::optional<int64_t> take_reported_us;
     };
     PointerTrace pointer_;
     // The smallest (sampler time - device time) seen: a report's transit from its tick to

@@ -1,6 +1,7 @@
 // The Studio's device (studio_device.hpp).
 #include "studio_device.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -59,7 +60,7 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
         throw std::invalid_argument("hand \"" + options.grip + "\" is not one of loose, firm, stiff");
     }
     host::OpenOptions open;
-    open.report_rate_hz = options.report_rate_hz;
+    open.report_rate_hz = options.report_rate_hz;  // 0: the device's own, until set below
     const std::string profile = simulated_profile(options.address);
     if (!profile.empty()) {
         peripheral::PeripheralOptions p;
@@ -76,6 +77,14 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
         auto dev = host::Device::open(options.address, open);
         if (!dev) throw std::runtime_error("device " + options.address + ": " + dev.status().message);
         device_.emplace(std::move(dev.value()));
+    }
+    if (options.report_rate_hz == 0) {
+        const int32_t every_tick = std::min(1000, device_->capabilities().loop_rate_hz);
+        if (every_tick >= 100 && every_tick != device_->capabilities().report_rate_hz) {
+            if (const host::Status s = device_->set_report_rate(every_tick); !s.ok()) {
+                throw std::runtime_error("device " + options.address + ": " + s.message);
+            }
+        }
     }
     sampler_ = std::thread([this] { sample_loop(); });
 }

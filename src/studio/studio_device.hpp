@@ -34,7 +34,10 @@ namespace feel::studio {
 struct StudioDeviceOptions {
     std::string address = "sim:iforce2";  // everything `feel play --device` takes
     std::string grip = "firm";            // loose, firm, stiff (simulated devices)
-    int32_t report_rate_hz = 500;         // state reports the plot gets, 100..1000
+    // State reports the plot and the pad get, 100..1000 Hz; 0: one per tick of the device's
+    // loop (up to 1000 Hz), so that a pointer move's force change is reported at the tick
+    // that makes it, not up to a report period later (docs/studio.md, "Latency").
+    int32_t report_rate_hz = 0;
 };
 
 // One state report: device time, force and position per axis (±10000).

@@ -247,8 +247,10 @@ private:
             }
             self->buffer_.consume(self->buffer_.size());
             const auto now = read_at;
-            // At rest the timer may be a frame period away: bring it forward.
-            if (!self->interacting(now)) self->timer_.expires_after(kLivePoll);
+            // The timer may be a frame period away (at rest, or between two pointer moves,
+            // when it waits for the next 60 Hz frame): a pointer message now awaiting its
+            // answer brings it forward, so the polling for the answer starts at once.
+            if (!self->interacting(now) || self->session_->pointer_awaited()) self->timer_.expires_after(kLivePoll);
             self->last_message_ = now;
             self->read();
         });
@@ -281,7 +283,9 @@ private:
         // polling only while a pointer message's force change is awaited
         const bool live = interacting(now) && session_->pointer_awaited();
         const auto since = now - last_frame_;
-        const bool due = since >= kRestInterval || (live && since >= kLiveInterval && session_->pointer_answer_ready());
+        // An answer waits for no frame timer; answers alone are at most kLiveFrameHz.
+        const bool due = since >= kRestInterval ||
+                         (live && now - last_answer_ >= kLiveInterval && session_->pointer_answer_ready());
         if (due && queue_.size() < 4) {
             bool answers_pointer = false;
             bool news = false;
@@ -290,6 +294,7 @@ private:
             // keep-alive: at rest the browser has nothing to parse or redraw.
             if (news || now - last_sent_ >= kKeepAliveInterval) {
                 send(frame.dump(), answers_pointer ? session_->pointer_seq() : 0);
+                if (answers_pointer) last_answer_ = now;
                 if (!news) session_->frame_sent_without_news();
                 last_sent_ = now;
             }
@@ -357,6 +362,7 @@ private:
     bool waiting_ = false;                  // a wait on timer_ is outstanding
     Clock::time_point last_frame_{};        // when the last state frame was built
     Clock::time_point last_sent_{};         // when the last state frame was queued
+    Clock::time_point last_answer_{};       // when the last frame answering a pointer was queued
     Clock::time_point last_message_{};      // when the browser last sent a message
 };
 

@@ -30,15 +30,15 @@ inline constexpr size_t kMaxQueuedFrames = 64;             // per browser; state
 // State frames: 60 a second, and one more as soon as the device reports the force change
 // of the newest pointer message: while one is awaited (a pointer message in the last
 // kInteractiveWindow, its force not yet shown) the server polls the device every kLivePoll,
-// so a pointer move's force is not held back by the frame timer, at most kLiveFrameHz a
-// second. Only the answer goes early: every frame costs the browser's processes CPU, on
+// so a pointer move's force is not held back by the frame timer; these answers are at
+// most kLiveFrameHz a second, on top of the 60. Only the answer goes early: every frame costs the browser's processes CPU, on
 // a machine they share with the device (docs/studio.md, "Latency").
 inline constexpr int kStateFrameHz = 60;
 inline constexpr int kLiveFrameHz = 250;
 // At rest (no frame has news for the page: live_session.hpp) a frame goes out this often.
 inline constexpr int kKeepAliveFrameHz = 10;
 inline constexpr std::chrono::milliseconds kInteractiveWindow{500};
-inline constexpr std::chrono::milliseconds kLivePoll{1};  // the device reports every 2 ms (500 Hz)
+inline constexpr std::chrono::milliseconds kLivePoll{1};  // the device reports every tick (1 kHz)
 
 class StudioServer {
 public:

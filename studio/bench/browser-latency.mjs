@@ -100,6 +100,17 @@ if (cdp) {
   await cdp.send('Profiler.setSamplingInterval', { interval: 200 });
   await cdp.send('Profiler.start');
 }
+// TRACE=1: Chromium's own trace of the moves, summed per thread and event (where the
+// renderer's main thread, its compositor and the GPU process spend their time).
+const tracer = process.env.TRACE ? await browser.newCDPSession(page) : null;
+const traceEvents = [];
+if (tracer) {
+  tracer.on('Tracing.dataCollected', (d) => traceEvents.push(...d.value));
+  await tracer.send('Tracing.start', {
+    transferMode: 'ReportEvents',
+    traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc', 'gpu', 'blink', 'v8'] },
+  });
+}
 const procs = [...processes(process.pid)];
 const before = new Map(procs.map((p) => [p.pid, stat(p.pid)]));
 const t0 = performance.now();
@@ -132,7 +143,7 @@ const faded = lat.filter((l) => l.minFade < 1);
 console.log(`moves during which the device's safety faded the force: ${faded.length}` +
   (faded.length ? ` (their device hops: ${faded.map((l) => l.device?.toFixed(0)).join(' ')} ms)` : ''));
 console.log(`pointer->force shown (n=${lat.length}): ${stage('total')} ms; input ${stage('input')}, server ${stage('server')}, ` +
-  `transport ${stage('transport')}, paint ${stage('paint')}; device ${stage('device')} (loop ${stage('loop')}, transit ${stage('transit')}), frame ${stage('frame')}, built->onmessage ${stage('builtToArrive')}`);
+  `transport ${stage('transport')}, paint ${stage('paint')}; device ${stage('device')} (software ${stage('software')}, hand ${stage('loop')}, transit ${stage('transit')}), frame ${stage('frame')}, built->onmessage ${stage('builtToArrive')}`);
 if (process.env.SLOWEST) {
   for (const l of [...lat].sort((a, b) => b.total - a.total).slice(0, Number(process.env.SLOWEST))) {
     console.log(`  slow: ${Object.entries(l).map(([k, v]) => `${k}=${typeof v === 'number' ? v.toFixed(1) : v}`).join(' ')}`);
@@ -141,6 +152,24 @@ if (process.env.SLOWEST) {
 console.log(`CPU over the ${seconds.toFixed(1)} s of moves (% of one core): ` +
   [...cpu].sort((a, b) => b[1] - a[1]).map(([n, s]) => `${n} ${((100 * s) / seconds).toFixed(0)}%`).join(', ') +
   `; load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}${process.env.FEEL_CHROMIUM_ARGS ? `; extra flags: ${process.env.FEEL_CHROMIUM_ARGS}` : ''}`);
+if (tracer) {
+  const done = new Promise((ok) => tracer.once('Tracing.tracingComplete', ok));
+  await tracer.send('Tracing.end');
+  await done;
+  const threads = new Map(); // pid:tid -> name
+  for (const e of traceEvents) if (e.ph === 'M' && e.name === 'thread_name') threads.set(`${e.pid}:${e.tid}`, e.args.name);
+  const sums = new Map();
+  for (const e of traceEvents) {
+    if (e.ph !== 'X' || !e.dur) continue;
+    const key = `${threads.get(`${e.pid}:${e.tid}`) ?? e.tid} ${e.name}`;
+    const v = sums.get(key) ?? [0, 0];
+    v[0] += e.dur / 1000;
+    v[1] += 1;
+    sums.set(key, v);
+  }
+  console.log('trace (inclusive ms over the run, count), top 40:');
+  for (const [k, [ms, n]] of [...sums].sort((a, b) => b[1][0] - a[1][0]).slice(0, 40)) console.log(`  ${ms.toFixed(0)} ms  ${n}  ${k}`);
+}
 if (cdp) {
   const { profile } = await cdp.send('Profiler.stop');
   const self = new Map();

@@ -1,7 +1,8 @@
 // The server's share of pointer -> force, without a browser: `feel studio` on the in-process
 // simulated stick, a WebSocket client (Node's) that plays a spring of coefficient 5000,
 // moves the stiff hand's target between -6000 and +6000 every 30 ms, and times each move
-// to the first state frame whose force changed (total: the client's clock; server: the
+// to the state frame that answers it (the first report of a tick after the take whose force
+// moved; total: the client's clock; server: the
 // frame's pointer_age_us, the server's clock), with the server's hops (pointer_hops: the
 // target handed to the hand, the first report with the new force, the frame built).
 // Prints p50/p99/max and the load average (docs/studio.md, "Latency").
@@ -33,10 +34,12 @@ const ws = new WebSocket(`ws://${host}/live`);
 let last = null;
 let waiter = null;
 // Every report's device time, from the frames' samples: the plot's completeness (the device
-// reports every 2 ms; a longer gap is reports the plot never got).
+// reports at every tick of its loop, up to 1 kHz; a longer gap is reports the plot never got).
 const sampleTimes = [];
+let reportMs = 1;
 ws.onmessage = (e) => {
   const m = JSON.parse(e.data);
+  if (m.type === 'hello') reportMs = 1000 / Math.min(1000, m.device.loop_rate_hz);
   if (m.type !== 'state') return;
   for (const row of m.samples) sampleTimes.push(row[0]);
   last = m;
@@ -53,9 +56,8 @@ await sleep(300);
 
 const total = [];
 const server = [];
-const hops = { apply: [], device: [], loop: [], transit: [], frame: [] };
+const hops = { apply: [], device: [], software: [], loop: [], transit: [], frame: [] };
 for (let i = 1; i <= moves; ++i) {
-  const before = last.force[0];
   const t0 = performance.now();
   ws.send(JSON.stringify({ type: 'pointer', seq: i, x: i % 2 ? 6000 : -6000, y: 0 }));
   for (;;) {
@@ -65,9 +67,10 @@ for (let i = 1; i <= moves; ++i) {
       hops.device.push(m.pointer_hops.device_us / 1000);
       hops.transit.push(m.pointer_hops.transit_us / 1000);
       hops.loop.push(m.pointer_hops.loop_us / 1000);
+      hops.software.push(m.pointer_hops.software_us / 1000);
       hops.frame.push(m.pointer_hops.frame_us / 1000);
     }
-    if (m.pointer_seq >= i && Math.abs(m.force[0] - before) > 20) {
+    if (m.pointer_hops?.seq === i) { // the answer: a tick after the take, its force moved
       total.push(performance.now() - t0);
       server.push(m.pointer_age_us / 1000);
       break;
@@ -82,7 +85,7 @@ const q = (list, p) => {
 console.log(`pointer message -> frame with the new force (n=${moves}): client p50=${q(total, 0.5)} ms ` +
   `p99=${q(total, 0.99)} ms max=${q(total, 1)} ms; server p50=${q(server, 0.5)} ms p99=${q(server, 0.99)} ms ` +
   `max=${q(server, 1)} ms; hops p50/p99: apply ${q(hops.apply, 0.5)}/${q(hops.apply, 0.99)}, ` +
-  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)} (of it loop ${q(hops.loop, 0.5)}/${q(hops.loop, 0.99)}, transit ${q(hops.transit, 0.5)}/${q(hops.transit, 0.99)}), frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
+  `device ${q(hops.device, 0.5)}/${q(hops.device, 0.99)} (software ${q(hops.software, 0.5)}/${q(hops.software, 0.99)}; of it the hand ${q(hops.loop, 0.5)}/${q(hops.loop, 0.99)}, transit ${q(hops.transit, 0.5)}/${q(hops.transit, 0.99)}), frame ${q(hops.frame, 0.5)}/${q(hops.frame, 0.99)} ms ` +
   `(n=${hops.device.length}); load average ${loadavg().map((l) => l.toFixed(1)).join(' ')}`);
 // The slowest device hops, split: a stall in the loop's taking of the target, the handle's
 // motion (loop), or the way back (transit)?
@@ -90,11 +93,11 @@ const slow = hops.device.map((d, i) => ({ device: d, loop: hops.loop[i], transit
   .sort((a, b) => b.device - a.device).slice(0, 3);
 console.log(`slowest device hops (ms): ${slow.map((h) => `${h.device.toFixed(1)} = take ${(h.device - h.loop - h.transit).toFixed(1)} + loop ${h.loop.toFixed(1)} + transit ${h.transit.toFixed(1)}`).join('; ')}`);
 let missing = 0;
-const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 3 ms
+const gaps = new Map(); // gap (ms) -> how often: a skipped tick of the device's 1 kHz loop makes 2 ms
 for (let i = 1; i < sampleTimes.length; ++i) {
   const gap = Math.round(sampleTimes[i] - sampleTimes[i - 1]);
-  missing += Math.max(0, Math.round(gap / 2) - 1);
-  if (gap > 2) gaps.set(gap, (gaps.get(gap) ?? 0) + 1);
+  missing += Math.max(0, Math.round(gap / reportMs) - 1);
+  if (gap > reportMs) gaps.set(gap, (gaps.get(gap) ?? 0) + 1);
 }
 console.log(`plot samples: ${sampleTimes.length} received, ${missing} missing by the device's clock ` +
   `(${((100 * missing) / (sampleTimes.length + missing)).toFixed(2)}%; gaps in ms×count: ` +

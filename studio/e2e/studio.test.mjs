@@ -194,7 +194,7 @@ test('2. a spring of coefficient 5000: the force follows the spring law, the arr
   console.log(`LATENCY pointer->force shown: p50=${quantile(lat.map((l) => l.total), 0.5).toFixed(1)} ms ` +
     `p99=${quantile(lat.map((l) => l.total), 0.99).toFixed(1)} ms (n=${lat.length}); stages (ms): ` +
     `input ${stage('input')}, server ${stage('server')}, transport ${stage('transport')}, paint ${stage('paint')}; ` +
-    `hops (ms): send->read ${stage('sendToRead')}, apply ${stage('apply')}, device ${stage('device')} (of it loop ${stage('loop')}, transit ${stage('transit')}), ` +
+    `hops (ms): send->read ${stage('sendToRead')}, apply ${stage('apply')}, device ${stage('device')} (software ${stage('software')}; the hand ${stage('loop')}, transit ${stage('transit')}), ` +
     `frame ${stage('frame')}, write ${stage('write')}, built->onmessage ${stage('builtToArrive')}; ` +
     `plot redraw p50=${quantile(plotDraws, 0.5).toFixed(1)} p99=${quantile(plotDraws, 0.99).toFixed(1)} (n=${plotDraws.length}); ` +
     `animation frame period p50=${quantile(frameGaps, 0.5).toFixed(1)} p99=${quantile(frameGaps, 0.99).toFixed(1)} ms; ` +

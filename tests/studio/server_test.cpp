@@ -317,6 +317,10 @@ TEST_F(ServerTest, APointerMoveIsTimedHopByHop) {
     const double span = hops["built_wall_us"].get<double>() - hops["read_wall_us"].get<double>();
     const double sum = hops["apply_us"].get<double>() + hops["device_us"].get<double>() + hops["frame_us"].get<double>();
     EXPECT_NEAR(span, sum, 1000) << hops;
+    // The device's software path ends at the report of the tick that took the target, which
+    // is at or before the tick whose force moved (the hand had to move the handle first).
+    EXPECT_GE(hops["software_us"].get<double>(), 0) << hops;
+    EXPECT_LE(hops["software_us"].get<double>(), hops["device_us"].get<double>()) << hops;
     ASSERT_FALSE(written.is_null());
     EXPECT_EQ(written["seq"], 7);
     EXPECT_GE(written["write_us"].get<double>(), 0);

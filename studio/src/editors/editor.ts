@@ -57,7 +57,7 @@ export const deviceAxes = (s: State): string[] => ((s.hello?.device.axes as { na
 // the device's own time (the reports are quantized; a slope over ~20 reports is smooth).
 export function motion(rows: number[][], axisCount: number, a: number, windowMs = 30): { velocity: number; acceleration: number } {
   const col = 1 + axisCount + a;
-  const recent = rows.slice(-400); // 800 ms of reports at 500 Hz: more than the windows need
+  const recent = rows.slice(-400); // 400 ms of reports at 1 kHz (800 at 500 Hz): more than the windows need
   const slope = (from: number, to: number) => {
     const pts = recent.filter((r) => r[0] > from && r[0] <= to);
     if (pts.length < 3) return 0;

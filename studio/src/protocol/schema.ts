@@ -77,8 +77,9 @@ export const schema = {
       // through the server (seq, read_wall_us and built_wall_us on the wall clock, apply_us
       // read -> hand target set, device_us -> the first report with the new force (transit_us of it: from
       // that report's device tick to the sampler, less the fastest such transit; loop_us of it: the
-      // loop's tick that took the target -> the tick of that report, on the device's clock, -1 unknown),
-      // frame_us -> this frame built); docs/studio.md, "Latency"
+      // loop's tick that took the target -> the tick of that report, on the device's clock, -1 unknown:
+      // the hand's physics; software_us: hand target set -> the report of the tick that took it in the
+      // sampler, -1 unknown: the device's software path), frame_us -> this frame built); docs/studio.md, "Latency"
       pointer_hops: { type: 'object', optional: true },
       // that frame's write: seq, ahead (messages queued before it), write_us (queued -> written)
       pointer_written: { type: 'object', optional: true },

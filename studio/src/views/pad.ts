@@ -39,6 +39,7 @@ export interface LatencySample {
   device?: number;
   transit?: number;
   loop?: number;
+  software?: number; // the device's software path: target set -> the taking tick's report at the server
   minFade?: number; // the device's lowest safety fade meanwhile (below 1: it faded the force)
   frame?: number;
   builtToArrive?: number;
@@ -53,6 +54,7 @@ export interface PointerHops {
   device_us: number;
   transit_us: number;
   loop_us: number;
+  software_us: number;
   taken_t_us: number;
   min_fade: number;
   frame_us: number;
@@ -66,7 +68,6 @@ interface Probe {
   seq: number;
   event: number; // PointerEvent.timeStamp (performance.now()'s clock)
   sent: number;
-  force: number[];
   arrived?: number;
   server?: number;
   hops?: PointerHops;
@@ -132,7 +133,7 @@ export class Pad {
     const y = this.axes() === 1 ? 0 : clamp(10000 - (py - kMargin) / s);
     this.state.target = [x, y];
     this.live.send({ type: 'pointer', seq: ++this.seq, x, y });
-    this.probe = { seq: this.seq, event: e.timeStamp, sent: performance.now(), force: [...this.state.force] };
+    this.probe = { seq: this.seq, event: e.timeStamp, sent: performance.now() };
     this.draw();
   }
 
@@ -155,11 +156,13 @@ export class Pad {
     const p = this.probe;
     if (p && hops?.seq === p.seq) p.hops = hops;
     if (hops) this.lastHops = hops;
-    if (p && p.arrived === undefined && pointerSeq >= p.seq) {
-      if (force.some((f, a) => Math.abs(f - (p.force[a] ?? 0)) > 20)) {
-        p.arrived = performance.now();
-        p.server = pointerAgeUs / 1000;
-      }
+    // The probe ends at the server's answer (the frame with this message's hops: the first
+    // report of a tick after the device took the target whose force moved by more than 20
+    // from the newest when the target was set),
+    // not at a frame whose force still moves from the last target (a hand still settling).
+    if (p && p.arrived === undefined && pointerSeq >= p.seq && hops?.seq === p.seq) {
+      p.arrived = performance.now();
+      p.server = pointerAgeUs / 1000;
     }
     if (written) {
       const l = this.latencies.find((s) => s.seq === written.seq);
@@ -197,6 +200,7 @@ export class Pad {
           sample.device = p.hops.device_us / 1000;
           sample.transit = p.hops.transit_us / 1000;
           if (p.hops.loop_us >= 0) sample.loop = p.hops.loop_us / 1000;
+          if (p.hops.software_us >= 0) sample.software = p.hops.software_us / 1000;
           sample.minFade = p.hops.min_fade;
           sample.frame = p.hops.frame_us / 1000;
           sample.builtToArrive = (wall(p.arrived) - p.hops.built_wall_us) / 1000;
