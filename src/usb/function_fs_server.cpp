@@ -44,8 +44,10 @@
 // unbound, and the DISABLE event is not read yet) waits inside the kernel until the
 // endpoint is enabled again, unless the file is O_NONBLOCK (f_fs.c, ffs_epfile_io). So the
 // endpoints are opened O_NONBLOCK: such a submission completes at once with EAGAIN, and
-// that endpoint is left alone for kEndpointRetry, or until the host configures the device
-// again. A transfer the host never takes (an IN report nobody reads, an OUT read while the
+// that endpoint is left alone for kEndpointRetry (a couple of ticks: no spin until the
+// DISABLE event is read, and no gap worth a report should the kernel answer EAGAIN for
+// another reason; the log counts those answered while enabled), or until the host
+// configures the device again. A transfer the host never takes (an IN report nobody reads, an OUT read while the
 // host sends nothing) stays in flight without blocking anyone; io_destroy() cancels it.
 // ep0's data stages block until the host's controller runs them, which it does at once,
 // and unbinding the gadget ends them; the wait for the last host's reset is cut short by
@@ -98,7 +100,7 @@ constexpr std::size_t kInboundFrames = 64;
 constexpr std::size_t kInputQueue = 256;  // answers and events; the session has at most 256 in flight
 constexpr auto kReplyTimeout = 1000ms;
 constexpr auto kHostHandover = 3000ms;  // how long a new host waits for the last one's reset
-constexpr auto kEndpointRetry = 50ms;   // an endpoint that answered EAGAIN (not enabled) rests this long
+constexpr auto kEndpointRetry = 2ms;    // an endpoint that answered EAGAIN (not enabled) rests this long
 constexpr std::size_t kBufferBytes = 4096;
 
 std::string errno_text(int e) { return std::strerror(e); }
@@ -343,6 +345,7 @@ struct FunctionFsServer::Impl {
     bool out_busy = false, in_busy = false;
     // An endpoint that answered EAGAIN is not enabled: not tried again before this time.
     std::chrono::steady_clock::time_point out_rest_until{}, in_rest_until{};
+    uint64_t eagain_while_enabled = 0;  // this host session's, logged when it ends
     uint16_t last_state_key = 0;  // the state slot sent last (round robin)
     alignas(64) uint8_t out_buf[kBufferBytes]{};
     alignas(64) uint8_t in_buf[kBufferBytes]{};
@@ -443,7 +446,9 @@ struct FunctionFsServer::Impl {
             }
             channel->arrived.notify_all();
             channel.reset();
-            log.line("host gone");
+            log.line("host gone (" + std::to_string(eagain_while_enabled) +
+                     " endpoint transfers answered EAGAIN while the device was configured)");
+            eagain_while_enabled = 0;
         }
         assembler.reset();
         commit_order.reset();
@@ -528,6 +533,12 @@ struct FunctionFsServer::Impl {
         channel->arrived.notify_one();
     }
 
+    // An endpoint that answered EAGAIN: not enabled (or, if the device is configured, busy).
+    void rest(std::chrono::steady_clock::time_point& until) {
+        until = std::chrono::steady_clock::now() + kEndpointRetry;
+        if (enabled) ++eagain_while_enabled;
+    }
+
     // Completed endpoint I/O, without waiting.
     void collect_completions() {
         uint64_t count = 0;
@@ -541,7 +552,7 @@ struct FunctionFsServer::Impl {
                 const auto result = static_cast<long>(events[i].res);
                 if (events[i].obj == &out_cb) {
                     out_busy = false;
-                    if (result == -EAGAIN) out_rest_until = std::chrono::steady_clock::now() + kEndpointRetry;
+                    if (result == -EAGAIN) rest(out_rest_until);
                     if (result < 0 || !enabled) continue;  // disabled, or the host reset the endpoint
                     if (assembler.add({out_buf, static_cast<std::size_t>(result)})) {
                         ++output_reports;
@@ -549,7 +560,7 @@ struct FunctionFsServer::Impl {
                     }
                 } else if (events[i].obj == &in_cb) {
                     in_busy = false;
-                    if (result == -EAGAIN) in_rest_until = std::chrono::steady_clock::now() + kEndpointRetry;
+                    if (result == -EAGAIN) rest(in_rest_until);
                     if (result >= 0) ++input_reports;
                 }
             }
