@@ -144,7 +144,9 @@ struct PidDeviceCore {
     }
 
     // The observer's record of the drain's renders (the levels sent go with the last).
-    void observe(const std::vector<std::pair<uint16_t, int32_t>>& sent, bool stalled, int64_t stall_us) {
+    // `stall_at`: a stall render's positions (the last reading, which it rendered on).
+    void observe(const std::vector<std::pair<uint16_t, int32_t>>& sent, bool stalled, int64_t stall_us,
+                 const protocol::pid::JoystickReading& stall_at = {}) {
         PidDevice::EmulationObserver observer;
         {
             std::lock_guard lock(mu);
@@ -155,6 +157,7 @@ struct PidDeviceCore {
         if (stalled) {
             u.stalled = true;
             u.arrival_us = u.sense_us = stall_us;
+            for (int a = 0; a < kMaxAxes; ++a) u.position[a] = stall_at.position[a];
             u.sent = sent;
             observer(u);
             return;
@@ -204,14 +207,16 @@ struct PidDeviceCore {
                         last_frame = std::chrono::steady_clock::now();  // the next look a stall later
                         int64_t t = 0;
                         bool stalled = false;
+                        protocol::pid::JoystickReading at;
                         {
                             std::lock_guard lock(em->mu);
                             if (em->has_reading()) {
                                 t = sense_clock.place_silence(clock());
                                 stalled = em->render_if_stalled(t);
+                                at = em->last_reading();
                             }
                         }
-                        if (stalled) observe(send_due(*em), true, t);
+                        if (stalled) observe(send_due(*em), true, t, at);
                     }
                     continue;
                 }

@@ -17,8 +17,10 @@
 //     does not read (transport.hpp); the service thread never blocks on a send;
 //   * state reports (JoystickInput, DeviceStatus), which the next round supersedes, are
 //     sent with send_or_drop and counted when dropped; answers are never dropped;
-//   * a connection arriving while the last host's teardown runs waits for it (at most
-//     kAdmitWait) instead of being told `busy`, so hosts back to back are all served.
+//   * a connection arriving while the last host's teardown runs waits for it instead of
+//     being told `busy`, so hosts back to back are all served: kAdmitWait for the service
+//     thread to see its host gone, then as long as the reset takes (at most kResetWait,
+//     longer than kAdmitWait only on a machine too loaded to run the loop's ticks).
 #include "feel/peripheral/peripheral.hpp"
 
 #include <atomic>
@@ -234,8 +236,12 @@ struct Peripheral::Impl {
 
     void attach(std::unique_ptr<transport::Connection> host) {
         std::unique_lock lock(mutex);
-        // A host arriving while the last one's teardown runs waits for it to end.
-        detached.wait_for(lock, kAdmitWait, [&] { return stopping.load() || !attached.load(); });
+        // A host arriving while the last one's teardown runs waits for it to end: kAdmitWait
+        // for its service thread to see it gone, then the reset, however long the load makes
+        // it (`current` is cleared when the teardown begins).
+        const auto admitted = [&] { return stopping.load() || !attached.load(); };
+        detached.wait_for(lock, kAdmitWait, admitted);
+        if (!admitted() && current == nullptr) detached.wait_for(lock, kResetWait + kAdmitWait, admitted);
         if (stopping.load() || attached.load()) {
             lock.unlock();
             refuse_busy(*host);

@@ -36,6 +36,22 @@
 // oldest dropped and counted when the host does not read them (a HID host reads its
 // interrupt IN endpoint only while someone has the device open); the periodic state
 // reports keep only their latest, so that they never crowd out an answer.
+//
+// Never blocked. The I/O thread must come back to its loop whatever the host does, or
+// stop() never returns (`feel device` hung once on SIGTERM in the VM after the flood
+// probe). FunctionFS's AIO submission is not always asynchronous: io_submit() on an
+// endpoint that is not enabled (the host disabled the function, or the gadget was just
+// unbound, and the DISABLE event is not read yet) waits inside the kernel until the
+// endpoint is enabled again, unless the file is O_NONBLOCK (f_fs.c, ffs_epfile_io). So the
+// endpoints are opened O_NONBLOCK: such a submission completes at once with EAGAIN, and
+// that endpoint is left alone for kEndpointRetry (a couple of ticks: no spin until the
+// DISABLE event is read, and no gap worth a report should the kernel answer EAGAIN for
+// another reason; the log counts those answered while enabled), or until the host
+// configures the device again. A transfer the host never takes (an IN report nobody reads, an OUT read while the
+// host sends nothing) stays in flight without blocking anyone; io_destroy() cancels it.
+// ep0's data stages block until the host's controller runs them, which it does at once,
+// and unbinding the gadget ends them; the wait for the last host's reset is cut short by
+// stop().
 #include <fcntl.h>
 #include <libaio.h>
 #include <linux/usb/functionfs.h>
@@ -84,6 +100,7 @@ constexpr std::size_t kInboundFrames = 64;
 constexpr std::size_t kInputQueue = 256;  // answers and events; the session has at most 256 in flight
 constexpr auto kReplyTimeout = 1000ms;
 constexpr auto kHostHandover = 3000ms;  // how long a new host waits for the last one's reset
+constexpr auto kEndpointRetry = 2ms;    // an endpoint that answered EAGAIN (not enabled) rests this long
 constexpr std::size_t kBufferBytes = 4096;
 
 std::string errno_text(int e) { return std::strerror(e); }
@@ -326,6 +343,9 @@ struct FunctionFsServer::Impl {
     std::shared_ptr<Channel> channel;
     iocb out_cb{}, in_cb{};
     bool out_busy = false, in_busy = false;
+    // An endpoint that answered EAGAIN is not enabled: not tried again before this time.
+    std::chrono::steady_clock::time_point out_rest_until{}, in_rest_until{};
+    uint64_t eagain_while_enabled = 0;  // this host session's, logged when it ends
     uint16_t last_state_key = 0;  // the state slot sent last (round robin)
     alignas(64) uint8_t out_buf[kBufferBytes]{};
     alignas(64) uint8_t in_buf[kBufferBytes]{};
@@ -364,8 +384,10 @@ struct FunctionFsServer::Impl {
         ep0 = open_file("ep0", O_RDWR);
         write_all(ep0, detail::function_descriptors(report_descriptor.size()), "descriptors written to " + dir + "/ep0");
         write_all(ep0, detail::function_strings(options.interface_name), "strings written to " + dir + "/ep0");
-        ep_in = open_file("ep1", O_RDWR);
-        ep_out = open_file("ep2", O_RDWR);
+        // O_NONBLOCK: a submission to an endpoint that is not enabled must not wait for it
+        // (the design note, "Never blocked").
+        ep_in = open_file("ep1", O_RDWR | O_NONBLOCK);
+        ep_out = open_file("ep2", O_RDWR | O_NONBLOCK);
         aio_fd = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
         wake_fd = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
         if (aio_fd < 0 || wake_fd < 0) throw std::runtime_error("eventfd: " + errno_text(errno));
@@ -395,10 +417,14 @@ struct FunctionFsServer::Impl {
         assembler.reset();
         enabled = true;
         configured = true;
+        out_rest_until = in_rest_until = {};
         ++hosts;
         // The last host's reset must finish before the Peripheral takes a new one.
         const auto until = std::chrono::steady_clock::now() + kHostHandover;
-        while (device.host_attached() && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(5ms);
+        while (device.host_attached() && std::chrono::steady_clock::now() < until &&
+               !stopping.load(std::memory_order_relaxed)) {
+            std::this_thread::sleep_for(5ms);
+        }
         channel = std::make_shared<Channel>();
         channel->wake_fd = wake_fd;
         channel->log = log.enabled() ? &log : nullptr;
@@ -420,7 +446,9 @@ struct FunctionFsServer::Impl {
             }
             channel->arrived.notify_all();
             channel.reset();
-            log.line("host gone");
+            log.line("host gone (" + std::to_string(eagain_while_enabled) +
+                     " endpoint transfers answered EAGAIN while the device was configured)");
+            eagain_while_enabled = 0;
         }
         assembler.reset();
         commit_order.reset();
@@ -434,7 +462,7 @@ struct FunctionFsServer::Impl {
     }
 
     void submit_out() {
-        if (!enabled || out_busy || !inbound_has_room()) return;
+        if (!enabled || out_busy || std::chrono::steady_clock::now() < out_rest_until || !inbound_has_room()) return;
         io_prep_pread(&out_cb, ep_out, out_buf, out_packet, 0);
         io_set_eventfd(&out_cb, aio_fd);
         iocb* list[1] = {&out_cb};
@@ -442,7 +470,7 @@ struct FunctionFsServer::Impl {
     }
 
     void submit_in() {
-        if (!enabled || in_busy || !channel) return;
+        if (!enabled || in_busy || !channel || std::chrono::steady_clock::now() < in_rest_until) return;
         std::vector<uint8_t> next;
         {
             // Answers and events first; then the state slot least recently sent.
@@ -505,6 +533,12 @@ struct FunctionFsServer::Impl {
         channel->arrived.notify_one();
     }
 
+    // An endpoint that answered EAGAIN: not enabled (or, if the device is configured, busy).
+    void rest(std::chrono::steady_clock::time_point& until) {
+        until = std::chrono::steady_clock::now() + kEndpointRetry;
+        if (enabled) ++eagain_while_enabled;
+    }
+
     // Completed endpoint I/O, without waiting.
     void collect_completions() {
         uint64_t count = 0;
@@ -518,6 +552,7 @@ struct FunctionFsServer::Impl {
                 const auto result = static_cast<long>(events[i].res);
                 if (events[i].obj == &out_cb) {
                     out_busy = false;
+                    if (result == -EAGAIN) rest(out_rest_until);
                     if (result < 0 || !enabled) continue;  // disabled, or the host reset the endpoint
                     if (assembler.add({out_buf, static_cast<std::size_t>(result)})) {
                         ++output_reports;
@@ -525,6 +560,7 @@ struct FunctionFsServer::Impl {
                     }
                 } else if (events[i].obj == &in_cb) {
                     in_busy = false;
+                    if (result == -EAGAIN) rest(in_rest_until);
                     if (result >= 0) ++input_reports;
                 }
             }

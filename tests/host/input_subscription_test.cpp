@@ -70,29 +70,48 @@ TEST(HostInputSubscription, EveryRoundArrivesInOrder) {
 TEST(HostInputSubscription, AFullQueueDropsTheOldestAndCountsThem) {
     SimRig rig = SimRig::make("iforce2", "firm", "hold:0", reports_at_500());
     Device& dev = *rig.host;
+    // The device's losses are counted over a window that holds every round from t0 on.
+    const peripheral::PeripheralStats before = rig.device->stats();
     Result<InputSubscription> sub = dev.subscribe_input(8);
     ASSERT_TRUE(sub);
     Result<InputBatch> first = sub->wait(1000ms);
     ASSERT_TRUE(first) << first.status().message;
     const InputState t0 = first->reports.back();
-    const peripheral::PeripheralStats before = rig.device->stats();
-    std::this_thread::sleep_for(150ms);  // about 75 rounds: the queue holds 8
+    // Not read for a while: the queue, which holds 8, fills and drops the oldest; until it
+    // has dropped 20 (28 rounds after the first batch, 56 ms of the device's time, longer
+    // when the machine's load slows the device down).
+    const auto until = std::chrono::steady_clock::now() + 10s;
+    while (sub->dropped_total() < first->dropped + 20 && std::chrono::steady_clock::now() < until) {
+        std::this_thread::sleep_for(10ms);
+    }
     const InputBatch b = sub->take();
     const peripheral::PeripheralStats after = rig.device->stats();
     ASSERT_EQ(b.reports.size(), 8u);
     EXPECT_TRUE(b.overflowed());
+    EXPECT_GE(b.dropped, 20u);
     for (size_t i = 1; i < b.reports.size(); ++i) EXPECT_GT(b.reports[i].t_us, b.reports[i - 1].t_us);
     // The newest were kept: the rounds after t0 are the dropped ones and the 8 kept.
     const int64_t after_t0 = rounds_between(t0, b.reports.back()) - 1;
     const int64_t accounted = static_cast<int64_t>(b.dropped) + 8;
     EXPECT_LE(accounted, after_t0);
     EXPECT_GE(accounted + device_losses(before, after), after_t0);
-    EXPECT_EQ(sub->dropped_total(), b.dropped);
-    // The flag is per batch: the next one, taken in time, lost nothing.
-    Result<InputBatch> next = sub->wait(1000ms);
-    ASSERT_TRUE(next);
-    EXPECT_FALSE(next->overflowed());
-    EXPECT_EQ(sub->dropped_total(), b.dropped);
+    // The flag is per batch: a batch taken in time lost nothing. (Taken within 8 rounds,
+    // 16 ms, of the one before; a test thread kept from running longer than that by the
+    // machine's load sees a batch that lost rounds again and says how many, so it tries
+    // again.)
+    uint64_t dropped_in_batches = first->dropped + b.dropped;
+    bool lost_nothing = false;
+    for (int i = 0; i < 100 && !lost_nothing; ++i) {
+        Result<InputBatch> next = sub->wait(1000ms);
+        ASSERT_TRUE(next) << next.status().message;
+        dropped_in_batches += next->dropped;
+        lost_nothing = !next->overflowed();
+    }
+    EXPECT_TRUE(lost_nothing) << "100 batches in a row each lost rounds";
+    // The total is the batches' sum, once no round comes any more.
+    dev.close();
+    dropped_in_batches += sub->take().dropped;
+    EXPECT_EQ(sub->dropped_total(), dropped_in_batches);
 }
 
 TEST(HostInputSubscription, SubscribersOnTwoThreadsEachGetEveryRound) {

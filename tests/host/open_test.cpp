@@ -174,11 +174,13 @@ TEST(HostOpen, ABusyDeviceIsAskedAgainUntilTheOtherHostLeaves) {
     Result<Device> first = Device::open(address);
     ASSERT_TRUE(first) << first.status().message;
     // The first host leaves 300 ms from now; the second, asking meanwhile, gets the device.
+    // (The time is taken before the leaving thread starts its 300 ms, so that however long
+    // the machine's load delays this thread, the first host leaves 300 ms after it at least.)
+    const auto asked = std::chrono::steady_clock::now();
     std::thread leaving([&] {
         std::this_thread::sleep_for(std::chrono::milliseconds(300));
         first->close();
     });
-    const auto asked = std::chrono::steady_clock::now();
     Result<Device> second = Device::open(address);
     leaving.join();
     ASSERT_TRUE(second) << second.status().message;

@@ -4,6 +4,15 @@
 // until it has answered and sits in receive() again. So everything runs on device time (the
 // host's clock reads it) and a run repeats exactly: a host report sent in answer to tick n's
 // frames reaches the session before tick n + 1 (one tick of link latency, L = 1 ms).
+//
+// No wall time. However long the machine's load keeps the test's thread from its next step,
+// the host lives none of it: its receive() waits for the next tick's frames (until the rig
+// closes) instead of timing out, or PidDevice would take the wall-clock silence for a
+// device gone quiet and render a stall between two ticks (PidEmulation.RecoilMatches...
+// failed so under load). And while the test waits on a host call, the rig steps only when
+// the host sent something or the device has commands in flight (else one tick per
+// kIdleStep of wall time), so a test thread kept waiting does not burn the ticks the
+// test's timeline allows for its set-up.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -32,6 +41,7 @@ using transport::FrameKind;
 using namespace std::chrono_literals;
 
 inline constexpr int64_t kTickUs = 1000;  // the profile's 1 kHz loop
+inline constexpr auto kIdleStep = 5ms;    // background(): a tick this often when nothing waits
 
 inline runtime::RuntimeConfig quiet_config(const sim::DeviceProfile& p, int32_t report_rate_hz) {
     runtime::RuntimeConfig c = runtime::runtime_config_for(p);
@@ -67,14 +77,16 @@ public:
             std::lock_guard lock(rig_.mu_);
             if (rig_.closed_) throw transport::TransportError(transport::TransportError::Kind::disconnected, "closed");
             rig_.inbox_.push_back(f);
+            rig_.cv_.notify_all();  // a background() driver steps for it
         }
         std::optional<Frame> receive(std::chrono::milliseconds timeout) override {
             std::unique_lock lock(rig_.mu_);
             if (rig_.outbox_.empty() && timeout.count() > 0) {
-                // Idle: everything handed over is handled and answered.
+                // Idle: everything handed over is handled and answered. Then the next tick's
+                // frames, however long the test takes to step (no wall time; see above).
                 rig_.host_idle_ = true;
                 rig_.cv_.notify_all();
-                rig_.cv_.wait_for(lock, timeout, [&] { return !rig_.outbox_.empty() || rig_.closed_; });
+                rig_.cv_.wait(lock, [&] { return !rig_.outbox_.empty() || rig_.closed_; });
                 rig_.host_idle_ = false;
             }
             if (rig_.closed_) throw transport::TransportError(transport::TransportError::Kind::disconnected, "closed");
@@ -118,17 +130,29 @@ public:
         session_.pump(out);
         std::unique_lock lock(mu_);
         for (Frame& f : out) outbox_.push_back(std::move(f));
-        host_idle_ = false;
+        if (!out.empty()) host_idle_ = false;  // idle again once back in receive(), all handled
         cv_.notify_all();
         cv_.wait_for(lock, 2s, [&] { return (outbox_.empty() && host_idle_) || closed_; });
     }
 
-    // Steps on a thread of its own, while the test waits on a host call that needs answers.
+    // Steps on a thread of its own, while the test waits on a host call that needs answers:
+    // at once for what the host sent and while the device has commands in flight, else once
+    // per kIdleStep.
     void background(bool on) {
         if (on && !driver_.joinable()) {
             driving_ = true;
             driver_ = std::thread([this] {
-                while (driving_) step();
+                auto last = std::chrono::steady_clock::now();
+                while (driving_) {
+                    bool due = session_.in_flight() > 0 || std::chrono::steady_clock::now() - last >= kIdleStep;
+                    if (!due) {
+                        std::unique_lock lock(mu_);
+                        due = cv_.wait_for(lock, 1ms, [&] { return !inbox_.empty() || !driving_; }) && driving_;
+                    }
+                    if (!due) continue;
+                    step();
+                    last = std::chrono::steady_clock::now();
+                }
             });
         } else if (!on && driver_.joinable()) {
             driving_ = false;

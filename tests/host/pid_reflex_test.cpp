@@ -20,9 +20,12 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "../support/valid_effects.hpp"
+#include "emulation/emulated_loop.hpp"
 #include "feel/host/pid_device.hpp"
 #include "pid_lockstep.hpp"
 
@@ -314,6 +317,56 @@ private:
     std::map<int, int> levels_;
     std::vector<std::vector<uint8_t>> outputs_;
 };
+
+// A stall render (the device silent: before the report period is known, for 10 ms of the
+// host's time) renders on the last positions read, and its observer update carries them.
+// (It carried zeros once: the VM's emulation log showed x=0 in the middle of a sweep.)
+TEST(PidEmulationObserver, AStallRenderCarriesThePositionsItRenderedOn) {
+    FakeFfboard board;
+    std::atomic<int64_t> now_us{0};
+    Result<PidDevice> dev = PidDevice::attach(board.host_end(), "ffboard", OpenOptions{}, [&] { return now_us.load(); });
+    ASSERT_TRUE(dev) << dev.status().message;
+    std::mutex mu;
+    std::vector<PidEmulationUpdate> updates;
+    dev->observe_emulation([&](const PidEmulationUpdate& u) {
+        std::lock_guard lock(mu);
+        updates.push_back(u);
+    });
+    Result<uint16_t> wall = dev->create_effect(emulation::wall_on_x(2000));
+    ASSERT_TRUE(wall) << wall.status().message;
+    ASSERT_TRUE(dev->emulated(*wall));
+    ASSERT_TRUE(dev->start(*wall).ok());
+    // Reports (the same) until one is rendered, then silence.
+    auto until = std::chrono::steady_clock::now() + 10s;
+    for (int64_t t = 1'000; dev->emulation_stats().updates == 0 && std::chrono::steady_clock::now() < until;
+         t += 2'000) {
+        now_us = t;
+        board.push_input(12000, -3000);
+        std::this_thread::sleep_for(2ms);
+    }
+    ASSERT_GT(dev->emulation_stats().updates, 0) << "no report was rendered";
+    until = std::chrono::steady_clock::now() + 10s;
+    auto stalled = [&]() -> std::optional<PidEmulationUpdate> {
+        std::lock_guard lock(mu);
+        for (const PidEmulationUpdate& u : updates)
+            if (u.stalled) return u;
+        return std::nullopt;
+    };
+    while (!stalled() && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(5ms);
+    const std::optional<PidEmulationUpdate> stall = stalled();
+    ASSERT_TRUE(stall.has_value()) << "no stall render within 10 s of silence";
+    std::optional<PidEmulationUpdate> read;
+    {
+        std::lock_guard lock(mu);
+        for (const PidEmulationUpdate& u : updates)
+            if (!u.stalled) read = u;
+    }
+    ASSERT_TRUE(read.has_value()) << "the report was not rendered";
+    EXPECT_NE(read->position[0], 0.0f);  // the report's x, normalized: 12000 of 32767 one way
+    EXPECT_NE(read->position[1], 0.0f);
+    for (int a = 0; a < kMaxAxes; ++a) EXPECT_EQ(stall->position[a], read->position[a]) << "axis " << a;
+    dev->close();
+}
 
 TEST(PidReflex, WithoutTriggerButtonTheHostRunsAButtonReflex) {
     FakeFfboard board(true);

@@ -267,16 +267,18 @@ int main(int argc, char** argv) {
         }
         check_gains(spy, log, c, who);
         // Plays and stops: an Effect Operation start (count given) or stop for each of the
-        // effect's blocks, within 2 s.
+        // effect's blocks, before the judge's next call about it (answer_window_end).
         int plays = 0, seen = 0;
-        for (const Line& p : spy) {
+        for (std::size_t i = 0; i < spy.size(); ++i) {
+            const Line& p = spy[i];
             if (p.verb != "play") continue;
             ++plays;
+            const double until = answer_window_end(spy, i);
             const std::vector<int64_t>& blocks = blocks_of[p.fields.at("id")];
             std::size_t reached = 0;
             for (int64_t block : blocks) {
                 for (const Line& l : log) {
-                    if (l.t < p.t || l.t > p.t + 2.0 || l.report != "effect_operation") continue;
+                    if (l.t < p.t || l.t > until || l.report != "effect_operation") continue;
                     if (!l.fields.count("block") || l.fields.at("block") != block) continue;
                     const int64_t op = l.fields.count("operation_usage") ? l.fields.at("operation_usage") : -1;
                     if ((p.fields.at("value") > 0 && op == kOpStart) || (p.fields.at("value") == 0 && op == kOpStop)) {
@@ -289,13 +291,15 @@ int main(int argc, char** argv) {
         }
         c.equal(seen, plays, "plays and stops that reached the device as Effect Operations on every block of the effect");
         // Erases: each of the effect's blocks freed.
-        for (const Line& e : spy) {
+        for (std::size_t i = 0; i < spy.size(); ++i) {
+            const Line& e = spy[i];
             if (e.verb != "erase") continue;
+            const double until = answer_window_end(spy, i);
             const std::vector<int64_t>& blocks = blocks_of[e.fields.at("id")];
             std::size_t freed = 0;
             for (int64_t block : blocks) {
                 for (const Line& l : log) {
-                    if (l.t >= e.t && l.t <= e.t + 2.0 && l.report == "block_free" && l.fields.count("block") &&
+                    if (l.t >= e.t && l.t <= until && l.report == "block_free" && l.fields.count("block") &&
                         l.fields.at("block") == block) {
                         ++freed;
                         break;

@@ -35,6 +35,11 @@ using namespace feel_linux_checks;
 
 namespace {
 
+// How long `feel device --usb` may take from SIGTERM to its exit, in the VM (TCG, on a
+// loaded 2-core machine): its I/O thread comes back to its loop every 100 ms at most, then
+// the runtime stops and the gadget is removed from configfs.
+constexpr double kStopBoundS = 3.0;
+
 struct Upload {
     Line asked;       // the spy's upload line
     Line done;        // its uploaded line
@@ -326,6 +331,33 @@ int main(int argc, char** argv) {
     c.expect(has("Force feedback for USB HID PID devices by Anssi Hannula"), "hid-pidff initialised on feel's device");
     c.expect(has("==== event device /dev/input/event"), "an event device with EV_FF appeared");
     c.expect(has("feel device exit status 0"), "feel device exited 0 on SIGTERM");
+    {
+        // From SIGTERM to its exit (init.sh's stop_program, in steps of 0.1 s): its USB I/O
+        // thread never waits for the host (docs/usb-device.md, "Stopping"); the 5 s after
+        // which init.sh kills it are what the exit status above fails on.
+        double seconds = -1;
+        for (const std::string& l : console) {
+            if (std::sscanf(l.c_str(), "feel device stopped in %lf s", &seconds) == 1) break;
+        }
+        char figure[32];
+        std::snprintf(figure, sizeof figure, "%.2f", seconds);
+        c.expect(seconds >= 0 && seconds <= kStopBoundS, "feel device stopped " + std::string(figure) +
+                                                             " s after SIGTERM (bound " +
+                                                             std::to_string(static_cast<int>(kStopBoundS)) + " s)");
+    }
+    // tests/linux/init.sh names on the console each program that outlived its time limit.
+    {
+        std::string hung;
+        for (const std::string& l : console) {
+            const std::size_t at = l.find("FAIL: ");
+            if (at == std::string::npos || l.find(" did not ", at) == std::string::npos) continue;
+            std::string what = l.substr(at + 6);
+            if (!what.empty() && what.back() == '\r') what.pop_back();
+            hung += (hung.empty() ? "" : "; ") + what;
+        }
+        c.expect(hung.empty(), "every program in the VM ended within its time limit" +
+                                   (hung.empty() ? std::string() : ": " + hung));
+    }
     c.expect(!has("gadget left: "), "the gadget was removed from configfs on exit");
 
     // feel's protocol through hidraw (tests/linux/hidraw_probe.cpp): every USB path.

@@ -5,7 +5,9 @@
 # dummy_hcd, waits for the kernel's hid-pidff to take it, runs the judges (fftest, SDL2's
 # testhaptic) against the event device, stops feel (which unbinds its gadget) and prints
 # feel's device log between markers on the console, for the host to pick up. Never exits
-# without powering off: a hung step is cut by its own timeout.
+# without powering off: a hung step is cut by its own time limit in seconds, and named on
+# the console by a line "FAIL: ... did not ..." (the checkers fail on it), instead of
+# running into qemu's 600 s timeout.
 export PATH=/usr/bin:/bin:/sbin
 mount -t proc proc /proc
 mount -t sysfs sysfs /sys
@@ -25,6 +27,48 @@ for word in $(cat /proc/cmdline); do
 done
 
 mark() { echo "==== $* t=$(cut -d' ' -f1 /proc/uptime)"; }
+exec 3>&1  # the console, for FAIL lines from commands whose output goes to a file
+
+# bounded SECONDS NAME COMMAND...: runs COMMAND, sent SIGTERM after SECONDS and SIGKILL 3 s
+# later; cut short, it gets a FAIL line naming it. Returns COMMAND's exit status.
+bounded() {
+    limit=$1 name=$2
+    shift 2
+    timeout -k 3 "$limit" "$@"
+    status=$?
+    if [ "$status" -eq 143 ] || [ "$status" -eq 137 ]; then
+        echo "FAIL: $name did not end within its $limit s (exit status $status)" >&3
+    fi
+    return "$status"
+}
+
+# await_exit NAME PID SECONDS: waits for the background program PID to end, at most
+# SECONDS; past that it gets a FAIL line naming it and SIGKILL. Returns its exit status.
+await_exit() {
+    ticks=0
+    while kill -0 "$2" 2>/dev/null; do
+        if [ "$ticks" -ge $(($3 * 10)) ]; then
+            echo "FAIL: $1 did not exit within $3 s; killed" >&3
+            kill -KILL "$2" 2>/dev/null
+            break
+        fi
+        ticks=$((ticks + 1))
+        sleep 0.1
+    done
+    wait "$2"
+}
+
+# stop_program NAME PID: SIGTERM, then await_exit with 5 s; prints "NAME exit status N"
+# (the checkers read it) and "NAME stopped in S s" (from SIGTERM to its exit, 0.1 s steps).
+stop_program() {
+    read -r stop_t0 rest < /proc/uptime
+    kill -TERM "$2" 2>/dev/null
+    await_exit "$1" "$2" 5
+    status=$?
+    read -r stop_t1 rest < /proc/uptime
+    echo "$1 exit status $status"
+    echo "$1 stopped in $(awk -v a="$stop_t0" -v b="$stop_t1" 'BEGIN { printf "%.2f", b - a }') s"
+}
 . /etc/feel/pid_host_case.sh
 finish() {
     mark "end"
@@ -69,7 +113,7 @@ event=$(ff_event_device)
 # feel's own protocol through hidraw: every USB path of the backend, whatever hid-pidff
 # decided (tests/linux/hidraw_probe.cpp).
 mark "hidraw probe"
-timeout 30 hidraw_probe /dev/hidraw0 > /tmp/hidraw.log 2>&1
+bounded 30 hidraw_probe hidraw_probe /dev/hidraw0 > /tmp/hidraw.log 2>&1
 cat /tmp/hidraw.log
 cat /tmp/hidraw.log >> /tmp/probe.log
 pid_host_run /dev/hidraw0
@@ -82,23 +126,20 @@ else
     # It reads the effect number from stdin; -1 ends it.
     mark "fftest begin"
     ( for n in 0 1 2 3 4 5; do echo $n; sleep 1.2; done; echo -1 ) |
-        FF_SPY_LOG=/tmp/fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 60 fftest "$event" 2>&1
+        bounded 60 fftest env FF_SPY_LOG=/tmp/fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so fftest "$event" 2>&1
     mark "fftest end"
     mark "testhaptic begin"
-    FF_SPY_LOG=/tmp/testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
+    bounded 90 testhaptic env FF_SPY_LOG=/tmp/testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so testhaptic 2>&1 </dev/null
     mark "testhaptic end"
     # The measurements: EVIOCSFF + play -> first motor tick, and the loop under a flood.
-    ff_probe "$event" latency 40 > /tmp/probe.log 2>&1
-    ff_probe "$event" flood 3 >> /tmp/probe.log 2>&1
+    bounded 60 "ff_probe latency" ff_probe "$event" latency 40 > /tmp/probe.log 2>&1
+    bounded 30 "ff_probe flood" ff_probe "$event" flood 3 >> /tmp/probe.log 2>&1
     mark "probe end"
 fi
 
 kill "$heartbeat" 2>/dev/null
 mark "feel stop"
-kill -TERM "$feel_pid"
-for i in $(seq 1 50); do kill -0 "$feel_pid" 2>/dev/null || break; sleep 0.1; done
-wait "$feel_pid"
-echo "feel device exit status $?"
+stop_program "feel device" "$feel_pid"
 ls /sys/kernel/config/usb_gadget/ 2>/dev/null | sed 's/^/gadget left: /'
 echo "==== feel device.log begin"
 cat /tmp/device.log 2>/dev/null
@@ -138,25 +179,22 @@ if [ "$bridge" = 1 ]; then
         ( timeout 6 cat "$bridge_event" | head -c 24000 > /tmp/bridge-events.bin ) &
         events_reader=$!
         ( for n in 0 1 2 3 4 5; do echo $n; sleep 1.2; done; echo -1 ) |
-            FF_SPY_LOG=/tmp/bridge-fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 60 fftest "$bridge_event" 2>&1
+            bounded 60 "bridge fftest" env FF_SPY_LOG=/tmp/bridge-fftest.spy LD_PRELOAD=/usr/lib/ff_spy.so fftest "$bridge_event" 2>&1
         mark "bridge fftest end"
-        wait "$events_reader"
+        await_exit "the bridge's event reader" "$events_reader" 10
         echo "==== bridge events begin"
         hexdump -v -e '24/1 "%02x" "\n"' /tmp/bridge-events.bin
         echo "==== bridge events end"
         mark "bridge testhaptic begin"
-        FF_SPY_LOG=/tmp/bridge-testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so timeout 90 testhaptic 2>&1 </dev/null
+        bounded 90 "bridge testhaptic" env FF_SPY_LOG=/tmp/bridge-testhaptic.spy LD_PRELOAD=/usr/lib/ff_spy.so testhaptic 2>&1 </dev/null
         mark "bridge testhaptic end"
         # ff_effects the device cannot play: a clean errno each, and the bridge carries on.
-        ff_probe "$bridge_event" invalid 0 > /tmp/bridge-invalid.log 2>&1
+        bounded 30 "ff_probe invalid" ff_probe "$bridge_event" invalid 0 > /tmp/bridge-invalid.log 2>&1
         echo "==== bridge invalid begin"
         cat /tmp/bridge-invalid.log
         echo "==== bridge invalid end"
     fi
-    kill -TERM "$bridge_pid" 2>/dev/null
-    for i in $(seq 1 50); do kill -0 "$bridge_pid" 2>/dev/null || break; sleep 0.1; done
-    wait "$bridge_pid"
-    echo "feel bridge exit status $?"
+    stop_program "feel bridge" "$bridge_pid"
     cat /tmp/bridge.out
     echo "==== feel bridge.log begin"
     cat /tmp/bridge.log 2>/dev/null

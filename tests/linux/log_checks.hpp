@@ -27,6 +27,33 @@ struct Line {
     std::string text;
 };
 
+// How far after the judge's call at spy[i] (a play or a stop of effect `id`, or its erase)
+// the device's answer to it is looked for: until the judge makes the same call about the
+// same effect again (its next play with the same value), or, once the effect is erased, until
+// the next upload (which may be given the freed block), at most kAnswerWindowS. The answers
+// keep the calls' order but may come after the judge's next calls: on a loaded machine the
+// VM's programs answer late (a fixed 2 s failed there once).
+inline constexpr double kAnswerWindowS = 15.0;
+inline double answer_window_end(const std::vector<Line>& spy, std::size_t i) {
+    const Line& call = spy[i];
+    const auto field = [](const Line& l, const char* name) {
+        const auto it = l.fields.find(name);
+        return it == l.fields.end() ? int64_t{-1} : it->second;
+    };
+    bool erased = call.verb == "erase";
+    for (std::size_t k = i + 1; k < spy.size() && spy[k].t < call.t + kAnswerWindowS; ++k) {
+        const Line& next = spy[k];
+        const bool same_effect = field(next, "id") == field(call, "id");
+        if (erased && next.verb == "upload") return next.t;
+        if (same_effect && next.verb == "erase") erased = true;
+        if (same_effect && call.verb == "play" && next.verb == "play" &&
+            (field(next, "value") > 0) == (field(call, "value") > 0)) {
+            return next.t;
+        }
+    }
+    return call.t + kAnswerWindowS;
+}
+
 inline std::vector<std::string> read_lines(const std::string& path) {
     std::ifstream in(path);
     std::vector<std::string> lines;

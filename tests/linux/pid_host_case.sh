@@ -23,7 +23,7 @@ ff_event_device() {
 pid_host_run() {
     [ "$pidhost" = 1 ] || return 0
     mark "pid host probe"
-    timeout 60 pid_host_probe "$1" > /tmp/pid-host.log 2>&1
+    bounded 60 pid_host_probe pid_host_probe "$1" > /tmp/pid-host.log 2>&1
     echo "pid_host_probe exit status $?" >> /tmp/pid-host.log
     mark "pid host probe end"
 }
@@ -58,12 +58,9 @@ pid_emulation_run() {
     std_event=$(ff_event_device)
     if [ -n "$std_event" ]; then mark "std pid event device $std_event"; else mark "std pid no force-feedback event device"; fi
     std_node=$(ls /dev/hidraw* 2>/dev/null | head -n 1)
-    timeout 60 pid_emulation_probe "$std_node" > /tmp/std-emu.log 2>&1
+    bounded 60 pid_emulation_probe pid_emulation_probe "$std_node" > /tmp/std-emu.log 2>&1
     echo "pid_emulation_probe exit status $?" >> /tmp/std-emu.log
-    kill -TERM "$std_pid"
-    for i in $(seq 1 50); do kill -0 "$std_pid" 2>/dev/null || break; sleep 0.1; done
-    wait "$std_pid"
-    echo "std feel device exit status $?"
+    stop_program "std feel device" "$std_pid"
     cat /tmp/std-device.out
     echo "==== std device.log begin"
     cat /tmp/std-device.log 2>/dev/null

@@ -75,6 +75,8 @@ public:
     [[nodiscard]] const std::vector<LinkAxis>& link() const noexcept { return link_; }
     [[nodiscard]] bool links(Axis axis) const noexcept;
     [[nodiscard]] bool has_reading() const noexcept { return has_reading_; }
+    // The reading the last render used (a stall render renders on it again).
+    [[nodiscard]] const protocol::pid::JoystickReading& last_reading() const noexcept { return last_; }
 
     std::mutex mu;
     HostRenderer renderer;                 // guarded by mu
