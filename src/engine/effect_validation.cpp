@@ -14,6 +14,14 @@
 // periodic block holds. The ranges are the primer's (§6.3, §6.6, §8) and are spelled as
 // the named constants of units.hpp, so an error quotes exactly the range enforced.
 //
+// The plain fields are a table, not code: each block's fields are a list of FieldRule
+// (the member's name, where it lives in the block, its width, and its range or list of
+// choices), walked in order by one checker that builds the error's field path only when
+// a field fails. On the Cortex-M4 build, where flash is counted (docs/firmware.md), one
+// range check written out as code took about 40 bytes (the Range passed by value, the
+// Error handed back through each caller); a table row takes 8. What is left as code is the
+// rules between fields (directions, axes, the sample count) and their sentences.
+//
 // Direction rules (§6.5) decided here, and documented in docs/sensation-format.md:
 //   - A wave on one axis may omit its direction (an "axis wave", §4.2.c); a wave on
 //     several axes needs one (an "angle wave").
@@ -31,8 +39,9 @@
 //     0) and on x, y, z (a spherical direction aims them, the angle is 0); paddle is 2D.
 #include "feel/effect_validation.hpp"
 
-#include <charconv>
-#include <initializer_list>
+#include <cstddef>
+#include <cstring>
+#include <span>
 #include <string_view>
 
 namespace feel {
@@ -51,11 +60,17 @@ public:
         return *this;
     }
 
+    // An index is never negative and below 2^31 (an axis, a sample).
     Path& index(int64_t i) noexcept {
-        char digits[24];
-        const auto r = std::to_chars(digits, digits + sizeof digits, i);
+        char digits[10];
+        size_t n = sizeof digits;
+        auto u = static_cast<uint32_t>(i);
+        do {
+            digits[--n] = static_cast<char>('0' + u % 10);
+            u /= 10;
+        } while (u != 0 && n > 0);
         add("[");
-        add(std::string_view(digits, static_cast<size_t>(r.ptr - digits)));
+        add(std::string_view(digits + n, sizeof digits - n));
         return add("]");
     }
 
@@ -66,13 +81,238 @@ private:
     size_t len_ = 0;
 };
 
-[[nodiscard]] Error in_range(std::string_view field, int64_t value, Range allowed) noexcept {
+// The range by reference: on the Cortex-M4 a Range by value is 16 bytes copied at each call.
+[[nodiscard]] Error in_range(std::string_view field, int64_t value, const Range& allowed) noexcept {
     return allowed.contains(value) ? Error{} : Error::out_of_range(field, value, allowed);
 }
 
-[[nodiscard]] Error in_range(const Path& field, int64_t value, Range allowed) noexcept {
+[[nodiscard]] Error in_range(const Path& field, int64_t value, const Range& allowed) noexcept {
     return in_range(field.view(), value, allowed);
 }
+
+// --- the field table ------------------------------------------------------------------
+
+// What a field must hold: one of the ranges of units.hpp, or (kChoice and up) one of a
+// few enumerators, refused with the rule that names them.
+enum Check : uint8_t {
+    kLevel, kSignedLevel, kPositiveLevel, kAngle, kDelayUs, kPeriodUs, kGain, kDynamicMass,
+    kDynamicStiffness, kHalfCycles, kChannels, kSampleCount,
+    kChoice,
+    kOffsetModeChoice = kChoice, kWallSenseChoice, kSweepSenseChoice,
+};
+
+constexpr Range kRanges[kChoice] = {
+    range::kLevel,         range::kSignedLevel,  range::kPositiveLevel,     range::kAngle,
+    range::kDelayUs,       range::kPeriodUs,     range::kGain,              range::kDynamicMass,
+    range::kDynamicStiffness, range::kHalfCycles, range::kChannels,         range::kSampleCount,
+};
+
+struct Choice {
+    int64_t last;      // the enumerators are 0..last
+    const char* rule;  // the error's sentence
+};
+
+constexpr Choice kChoices[] = {
+    {1, "the offset mode must be absolute or relative"},             // OffsetMode
+    {1, "the sense must be positive or negative"},                   // WallSense
+    {1, "the sweep sense must be clockwise or counterclockwise"},    // SweepSense
+};
+
+// One checked field of a block. Its name is the member's, which is also the format's.
+struct FieldRule {
+    const char* name;
+    uint16_t offset;  // bytes into its block
+    uint8_t width;    // 1 (an enum), 4 (int32_t) or 8 (int64_t)
+    Check check;
+};
+
+#define FEEL_FIELD(Block, member, check)                                                   \
+    FieldRule {                                                                           \
+        #member, static_cast<uint16_t>(offsetof(Block, member)),                          \
+            static_cast<uint8_t>(sizeof(Block::member)), check                            \
+    }
+
+// The fields of `block` in `rules`, in order; the first that fails is the error, its field
+// named block[index].name (no index when index < 0; the bare name when block is empty).
+[[nodiscard]] Error check_fields(const char* block, int index, const void* base,
+                                 std::span<const FieldRule> rules) noexcept {
+    const auto* bytes = static_cast<const unsigned char*>(base);
+    for (const FieldRule& r : rules) {
+        int64_t value = 0;
+        if (r.width == 8) {
+            std::memcpy(&value, bytes + r.offset, 8);
+        } else if (r.width == 4) {
+            int32_t v32 = 0;
+            std::memcpy(&v32, bytes + r.offset, 4);
+            value = v32;
+        } else {
+            value = bytes[r.offset];
+        }
+        const bool choice = r.check >= kChoice;
+        const Range allowed = choice ? Range{0, kChoices[r.check - kChoice].last} : kRanges[r.check];
+        if (allowed.contains(value)) continue;
+        Path field(block);
+        if (index >= 0) field.index(index);
+        if (*block != '\0') field.add(".");
+        field.add(r.name);
+        return choice ? Error::invalid(field.view(), kChoices[r.check - kChoice].rule)
+                      : Error::out_of_range(field.view(), value, allowed);
+    }
+    return {};
+}
+
+[[nodiscard]] Error check_fields(const char* block, const void* base, std::span<const FieldRule> rules) noexcept {
+    return check_fields(block, -1, base, rules);
+}
+
+constexpr FieldRule kTimingRules[] = {
+    FEEL_FIELD(EffectParams, start_delay_us, kDelayUs),
+    FEEL_FIELD(EffectParams, gain, kGain),
+};
+
+constexpr FieldRule kEnvelopeRules[] = {
+    FEEL_FIELD(Envelope, impulse_level, kLevel),
+    FEEL_FIELD(Envelope, settle_time_us, kDelayUs),
+    FEEL_FIELD(Envelope, fade_level, kLevel),
+    FEEL_FIELD(Envelope, fade_time_us, kDelayUs),
+};
+
+constexpr FieldRule kConditionRules[] = {
+    FEEL_FIELD(ConditionBlock, pos_coefficient, kSignedLevel),
+    FEEL_FIELD(ConditionBlock, neg_coefficient, kSignedLevel),
+    FEEL_FIELD(ConditionBlock, offset, kSignedLevel),
+    FEEL_FIELD(ConditionBlock, pos_saturation, kLevel),
+    FEEL_FIELD(ConditionBlock, neg_saturation, kLevel),
+    FEEL_FIELD(ConditionBlock, deadband, kLevel),
+};
+
+constexpr FieldRule kTextureRules[] = {
+    FEEL_FIELD(TextureBlock, pos_roughness, kPositiveLevel),
+    FEEL_FIELD(TextureBlock, neg_roughness, kPositiveLevel),
+    FEEL_FIELD(TextureBlock, spacing, kPositiveLevel),
+    FEEL_FIELD(TextureBlock, density, kPositiveLevel),
+};
+
+// A wall's and a barrier's fields before their angle, and after it.
+constexpr FieldRule kWallRules[] = {
+    FEEL_FIELD(WallBlock, hardness, kSignedLevel),
+    FEEL_FIELD(WallBlock, sense, kWallSenseChoice),
+    FEEL_FIELD(WallBlock, offset, kSignedLevel),
+    FEEL_FIELD(WallBlock, offset_mode, kOffsetModeChoice),
+};
+
+constexpr FieldRule kWallSurfaceRules[] = {
+    FEEL_FIELD(WallBlock, surface_friction, kLevel),
+    FEEL_FIELD(WallBlock, surface_texture, kLevel),
+};
+
+constexpr FieldRule kBarrierRules[] = {
+    FEEL_FIELD(BarrierBlock, pos_hardness, kSignedLevel),
+    FEEL_FIELD(BarrierBlock, neg_hardness, kSignedLevel),
+    FEEL_FIELD(BarrierBlock, thickness, kPositiveLevel),
+    FEEL_FIELD(BarrierBlock, offset, kSignedLevel),
+    FEEL_FIELD(BarrierBlock, offset_mode, kOffsetModeChoice),
+};
+
+constexpr FieldRule kBarrierSurfaceRules[] = {
+    FEEL_FIELD(BarrierBlock, surface_friction, kLevel),
+    FEEL_FIELD(BarrierBlock, surface_texture, kLevel),
+};
+
+// §6.6.b: a periodic magnitude is 0..10000; §6.6.i: an advanced periodic (sweep) one is signed.
+constexpr FieldRule kPeriodicRules[] = {
+    FEEL_FIELD(PeriodicBlock, magnitude, kLevel),
+    FEEL_FIELD(PeriodicBlock, offset, kSignedLevel),
+    FEEL_FIELD(PeriodicBlock, period_us, kPeriodUs),
+    FEEL_FIELD(PeriodicBlock, phase, kAngle),
+};
+
+constexpr FieldRule kSweepRules[] = {
+    FEEL_FIELD(PeriodicBlock, magnitude, kSignedLevel),
+    FEEL_FIELD(PeriodicBlock, offset, kSignedLevel),
+    FEEL_FIELD(PeriodicBlock, period_us, kPeriodUs),
+    FEEL_FIELD(PeriodicBlock, phase, kAngle),
+    FEEL_FIELD(PeriodicBlock, sweep_start_angle, kAngle),
+    FEEL_FIELD(PeriodicBlock, sweep_end_angle, kAngle),
+    FEEL_FIELD(PeriodicBlock, sweep_sense, kSweepSenseChoice),
+};
+
+constexpr FieldRule kConstantRules[] = {FEEL_FIELD(ConstantBlock, magnitude, kSignedLevel)};
+
+constexpr FieldRule kRampRules[] = {
+    FEEL_FIELD(RampBlock, start, kSignedLevel),
+    FEEL_FIELD(RampBlock, end, kSignedLevel),
+};
+
+constexpr FieldRule kCustomRules[] = {
+    FEEL_FIELD(CustomBlock, channels, kChannels),
+    FEEL_FIELD(CustomBlock, sample_period_us, kPeriodUs),
+    FEEL_FIELD(CustomBlock, sample_count, kSampleCount),
+};
+
+// §8.4: each wrapper parameter has the range of the control-law parameter it maps to.
+constexpr FieldRule kRecoilRules[] = {
+    FEEL_FIELD(DynamicBlock, blast_direction, kAngle),
+    FEEL_FIELD(DynamicBlock, blast_intensity, kSignedLevel),
+    FEEL_FIELD(DynamicBlock, dynamic_mass, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, blast_resonance, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, blast_decay, kLevel),
+};
+
+constexpr FieldRule kImpactRules[] = {
+    FEEL_FIELD(DynamicBlock, impact_direction, kAngle),
+    FEEL_FIELD(DynamicBlock, impact_intensity, kSignedLevel),
+    FEEL_FIELD(DynamicBlock, dynamic_mass, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, elasticity, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, collision_absorption, kLevel),
+};
+
+constexpr FieldRule kLiquidRules[] = {
+    FEEL_FIELD(DynamicBlock, density, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, settle, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, viscosity, kLevel),
+};
+
+constexpr FieldRule kInertiaRules[] = {
+    FEEL_FIELD(DynamicBlock, inertia, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, play, kLevel),
+};
+
+constexpr FieldRule kCenterDriftRules[] = {
+    FEEL_FIELD(DynamicBlock, stiffness, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, drift_resistance, kLevel),
+};
+
+constexpr FieldRule kSlingRules[] = {
+    FEEL_FIELD(DynamicBlock, ball_mass, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, string_length, kLevel),
+    FEEL_FIELD(DynamicBlock, string_compliance, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, ball_damping, kLevel),
+};
+
+constexpr FieldRule kPaddleRules[] = {
+    FEEL_FIELD(DynamicBlock, ball_mass, kDynamicMass),
+    FEEL_FIELD(DynamicBlock, initial_velocity, kSignedLevel),
+    FEEL_FIELD(DynamicBlock, initial_velocity_direction, kAngle),
+    FEEL_FIELD(DynamicBlock, paddle_compliance, kDynamicStiffness),
+    FEEL_FIELD(DynamicBlock, paddle_damping, kLevel),
+    FEEL_FIELD(DynamicBlock, gravity, kSignedLevel),
+};
+
+constexpr FieldRule kControlLawRules[] = {
+    FEEL_FIELD(ControlLawBlock, mass, kDynamicMass),
+    FEEL_FIELD(ControlLawBlock, k_pos, kDynamicStiffness),
+    FEEL_FIELD(ControlLawBlock, k_neg, kDynamicStiffness),
+    FEEL_FIELD(ControlLawBlock, b, kLevel),
+    FEEL_FIELD(ControlLawBlock, vel_init, kSignedLevel),
+    FEEL_FIELD(ControlLawBlock, pos_init, kSignedLevel),
+    FEEL_FIELD(ControlLawBlock, half_cycles, kHalfCycles),
+    FEEL_FIELD(ControlLawBlock, length, kLevel),
+    FEEL_FIELD(ControlLawBlock, drag, kLevel),
+    FEEL_FIELD(ControlLawBlock, gravity, kSignedLevel),
+};
+
+#undef FEEL_FIELD
 
 // --- axes -------------------------------------------------------------------------------
 
@@ -134,8 +374,7 @@ private:
     } else if (Error e = in_range("duration_us", p.duration_us, range::kDurationUs)) {
         return e;
     }
-    if (Error e = in_range("start_delay_us", p.start_delay_us, range::kDelayUs)) return e;
-    if (Error e = in_range("gain", p.gain, range::kGain)) return e;
+    if (Error e = check_fields("", &p, kTimingRules)) return e;
     if (p.iterations != kInfiniteIterations) {
         if (Error e = in_range("iterations", p.iterations, range::kIterations)) return e;
     }
@@ -170,11 +409,7 @@ private:
                               "only vector_force, constant, the periodic and sweep waves, "
                               "force_profile and ramp take an envelope (§6.4)");
     }
-    const Envelope& e = p.envelope;
-    if (Error r = in_range("envelope.impulse_level", e.impulse_level, range::kLevel)) return r;
-    if (Error r = in_range("envelope.settle_time_us", e.settle_time_us, range::kDelayUs)) return r;
-    if (Error r = in_range("envelope.fade_level", e.fade_level, range::kLevel)) return r;
-    return in_range("envelope.fade_time_us", e.fade_time_us, range::kDelayUs);
+    return check_fields("envelope", &p.envelope, kEnvelopeRules);
 }
 
 // --- direction --------------------------------------------------------------------------
@@ -268,23 +503,16 @@ private:
 // A relative offset (SpringAtCurrentLocation, §8.2) is measured from where the handle is
 // when the effect starts: a position, so it means something only for springs.
 [[nodiscard]] Error check_condition_block(const ConditionBlock& c, int i, EffectType type) noexcept {
-    auto at = [i](std::string_view f) { return Path("conditions").index(i).add(".").add(f); };
-    if (c.offset_mode != OffsetMode::absolute && c.offset_mode != OffsetMode::relative) {
-        return Error::invalid(at("offset_mode").view(), "the offset mode must be absolute or relative");
-    }
+    constexpr FieldRule kOffsetMode[] = {{"offset_mode", offsetof(ConditionBlock, offset_mode), 1, kOffsetModeChoice}};
+    if (Error e = check_fields("conditions", i, &c, kOffsetMode)) return e;
     if (c.offset_mode == OffsetMode::relative && type != EffectType::spring &&
         type != EffectType::angle_spring) {
-        return Error::invalid(at("offset_mode").view(),
+        return Error::invalid(Path("conditions").index(i).add(".offset_mode").view(),
                               "a relative offset is a position (the handle's at the start), so "
                               "only springs take it; damper, inertia and friction offsets are "
                               "absolute");
     }
-    if (Error e = in_range(at("pos_coefficient"), c.pos_coefficient, range::kSignedLevel)) return e;
-    if (Error e = in_range(at("neg_coefficient"), c.neg_coefficient, range::kSignedLevel)) return e;
-    if (Error e = in_range(at("offset"), c.offset, range::kSignedLevel)) return e;
-    if (Error e = in_range(at("pos_saturation"), c.pos_saturation, range::kLevel)) return e;
-    if (Error e = in_range(at("neg_saturation"), c.neg_saturation, range::kLevel)) return e;
-    return in_range(at("deadband"), c.deadband, range::kLevel);
+    return check_fields("conditions", i, &c, kConditionRules);
 }
 
 // A spring, damper, inertia or friction with a direction (§3.1): one block, conditions[0],
@@ -310,50 +538,32 @@ private:
     return {};
 }
 
-[[nodiscard]] Error check_texture(const TextureBlock& t) noexcept {
-    if (Error e = in_range("texture.pos_roughness", t.pos_roughness, range::kPositiveLevel)) return e;
-    if (Error e = in_range("texture.neg_roughness", t.neg_roughness, range::kPositiveLevel)) return e;
-    if (Error e = in_range("texture.spacing", t.spacing, range::kPositiveLevel)) return e;
-    return in_range("texture.density", t.density, range::kPositiveLevel);
+// A wall or barrier: its fields before the angle (`head`), the angle, which only the
+// angle types have (an axis type lies across its one axis), then its surface (`tail`).
+[[nodiscard]] Error check_contact_block(const char* block, const void* base, std::span<const FieldRule> head,
+                                        int32_t angle, bool angled, const char* axis_rule,
+                                        std::span<const FieldRule> tail) noexcept {
+    if (Error e = check_fields(block, base, head)) return e;
+    if (angled) {
+        if (Error e = in_range(Path(block).add(".angle"), angle, range::kAngle)) return e;
+    } else if (angle != 0) {
+        return Error::invalid(Path(block).add(".angle").view(), axis_rule);
+    }
+    return check_fields(block, base, tail);
 }
 
 [[nodiscard]] Error check_wall(const WallBlock& w, bool angled) noexcept {
-    if (Error e = in_range("wall.hardness", w.hardness, range::kSignedLevel)) return e;
-    if (w.sense != WallSense::positive && w.sense != WallSense::negative) {
-        return Error::invalid("wall.sense", "the sense must be positive or negative");
-    }
-    if (Error e = in_range("wall.offset", w.offset, range::kSignedLevel)) return e;
-    if (w.offset_mode != OffsetMode::absolute && w.offset_mode != OffsetMode::relative) {
-        return Error::invalid("wall.offset_mode", "the offset mode must be absolute or relative");
-    }
-    if (angled) {
-        if (Error e = in_range("wall.angle", w.angle, range::kAngle)) return e;
-    } else if (w.angle != 0) {
-        return Error::invalid("wall.angle",
-                              "an axis_wall lies across its one axis and has no angle; "
-                              "use angle_wall for a wall at an angle");
-    }
-    if (Error e = in_range("wall.surface_friction", w.surface_friction, range::kLevel)) return e;
-    return in_range("wall.surface_texture", w.surface_texture, range::kLevel);
+    return check_contact_block("wall", &w, kWallRules, w.angle, angled,
+                               "an axis_wall lies across its one axis and has no angle; "
+                               "use angle_wall for a wall at an angle",
+                               kWallSurfaceRules);
 }
 
 [[nodiscard]] Error check_barrier(const BarrierBlock& b, bool angled) noexcept {
-    if (Error e = in_range("barrier.pos_hardness", b.pos_hardness, range::kSignedLevel)) return e;
-    if (Error e = in_range("barrier.neg_hardness", b.neg_hardness, range::kSignedLevel)) return e;
-    if (Error e = in_range("barrier.thickness", b.thickness, range::kPositiveLevel)) return e;
-    if (Error e = in_range("barrier.offset", b.offset, range::kSignedLevel)) return e;
-    if (b.offset_mode != OffsetMode::absolute && b.offset_mode != OffsetMode::relative) {
-        return Error::invalid("barrier.offset_mode", "the offset mode must be absolute or relative");
-    }
-    if (angled) {
-        if (Error e = in_range("barrier.angle", b.angle, range::kAngle)) return e;
-    } else if (b.angle != 0) {
-        return Error::invalid("barrier.angle",
-                              "an axis_barrier lies across its one axis and has no angle; "
-                              "use angle_barrier for a barrier at an angle");
-    }
-    if (Error e = in_range("barrier.surface_friction", b.surface_friction, range::kLevel)) return e;
-    return in_range("barrier.surface_texture", b.surface_texture, range::kLevel);
+    return check_contact_block("barrier", &b, kBarrierRules, b.angle, angled,
+                               "an axis_barrier lies across its one axis and has no angle; "
+                               "use angle_barrier for a barrier at an angle",
+                               kBarrierSurfaceRules);
 }
 
 [[nodiscard]] Error check_condition(const EffectParams& p) noexcept {
@@ -393,7 +603,7 @@ private:
                 }
                 if (Error e = check_direction_form(p)) return e;
             }
-            return check_texture(p.texture);
+            return check_fields("texture", &p.texture, kTextureRules);
         case EffectType::axis_wall:
         case EffectType::axis_barrier: {
             const bool wall = p.type == EffectType::axis_wall;
@@ -427,29 +637,13 @@ private:
 // --- waves (§6.6.b, c, d, e, i) -------------------------------------------------------------
 
 [[nodiscard]] Error check_periodic(const EffectParams& p) noexcept {
-    const PeriodicBlock& w = p.periodic;
-    const bool sweep = is_sweep(p.type);
-    // §6.6.b: a periodic magnitude is 0..10000; §6.6.i: an advanced periodic one is signed.
-    const Range magnitude = sweep ? range::kSignedLevel : range::kLevel;
-    if (Error e = in_range("periodic.magnitude", w.magnitude, magnitude)) return e;
-    if (Error e = in_range("periodic.offset", w.offset, range::kSignedLevel)) return e;
-    if (Error e = in_range("periodic.period_us", w.period_us, range::kPeriodUs)) return e;
-    if (Error e = in_range("periodic.phase", w.phase, range::kAngle)) return e;
-    if (!sweep) return {};
-    if (Error e = in_range("periodic.sweep_start_angle", w.sweep_start_angle, range::kAngle)) return e;
-    if (Error e = in_range("periodic.sweep_end_angle", w.sweep_end_angle, range::kAngle)) return e;
-    if (w.sweep_sense != SweepSense::clockwise && w.sweep_sense != SweepSense::counterclockwise) {
-        return Error::invalid("periodic.sweep_sense",
-                              "the sweep sense must be clockwise or counterclockwise");
-    }
-    return {};
+    using Rules = std::span<const FieldRule>;
+    return check_fields("periodic", &p.periodic, is_sweep(p.type) ? Rules(kSweepRules) : Rules(kPeriodicRules));
 }
 
 [[nodiscard]] Error check_force_profile(const EffectParams& p, std::span<const int16_t> samples) noexcept {
     const CustomBlock& c = p.custom;
-    if (Error e = in_range("custom.channels", c.channels, range::kChannels)) return e;
-    if (Error e = in_range("custom.sample_period_us", c.sample_period_us, range::kPeriodUs)) return e;
-    if (Error e = in_range("custom.sample_count", c.sample_count, range::kSampleCount)) return e;
+    if (Error e = check_fields("custom", &c, kCustomRules)) return e;
     if (c.sample_count % c.channels != 0) {
         return Error::invalid("custom.sample_count",
                               "the sample count must be a multiple of custom.channels: samples "
@@ -496,13 +690,10 @@ private:
         case EffectType::vector_force:
         case EffectType::constant:
         case EffectType::smart_pop:
-            if (Error e = in_range("constant.magnitude", p.constant.magnitude, range::kSignedLevel)) {
-                return e;
-            }
+            if (Error e = check_fields("constant", &p.constant, kConstantRules)) return e;
             return check_wave_direction(p);
         case EffectType::ramp:
-            if (Error e = in_range("ramp.start", p.ramp.start, range::kSignedLevel)) return e;
-            if (Error e = in_range("ramp.end", p.ramp.end, range::kSignedLevel)) return e;
+            if (Error e = check_fields("ramp", &p.ramp, kRampRules)) return e;
             return check_wave_direction(p);
         case EffectType::force_profile:
             return check_force_profile(p, samples);
@@ -512,36 +703,6 @@ private:
 }
 
 // --- dynamics (§6.6.f, §8.4) ----------------------------------------------------------------
-
-[[nodiscard]] Error check_control_law(const ControlLawBlock& c, int i) noexcept {
-    auto at = [i](std::string_view f) {
-        return Path("dynamic.control_law").index(i).add(".").add(f);
-    };
-    if (Error e = in_range(at("mass"), c.mass, range::kDynamicMass)) return e;
-    if (Error e = in_range(at("k_pos"), c.k_pos, range::kDynamicStiffness)) return e;
-    if (Error e = in_range(at("k_neg"), c.k_neg, range::kDynamicStiffness)) return e;
-    if (Error e = in_range(at("b"), c.b, range::kLevel)) return e;
-    if (Error e = in_range(at("vel_init"), c.vel_init, range::kSignedLevel)) return e;
-    if (Error e = in_range(at("pos_init"), c.pos_init, range::kSignedLevel)) return e;
-    if (Error e = in_range(at("half_cycles"), c.half_cycles, range::kHalfCycles)) return e;
-    if (Error e = in_range(at("length"), c.length, range::kLevel)) return e;
-    if (Error e = in_range(at("drag"), c.drag, range::kLevel)) return e;
-    return in_range(at("gravity"), c.gravity, range::kSignedLevel);
-}
-
-// The first of several independent range checks that fails, in order.
-struct Check {
-    std::string_view field;
-    int64_t value;
-    Range allowed;
-};
-
-[[nodiscard]] Error first_failing(std::initializer_list<Check> checks) noexcept {
-    for (const Check& c : checks) {
-        if (Error e = in_range(c.field, c.value, c.allowed)) return e;
-    }
-    return {};
-}
 
 // Recoil and impact aim their kick (§5.4, §5.10): in the x-y plane with the compass angle
 // of their block; on one axis with the sign of their intensity (the angle must be 0); on
@@ -587,54 +748,33 @@ struct Check {
         }
     }
     const DynamicBlock& d = p.dynamic;
-    // §8.4: each wrapper parameter has the range of the control-law parameter it maps to.
     switch (p.type) {
         case EffectType::dynamic_recoil:
-            if (Error e = in_range("dynamic.blast_direction", d.blast_direction, range::kAngle)) return e;
-            if (Error e = check_kick_aim(p, "dynamic.blast_direction", d.blast_direction)) return e;
-            return first_failing({{"dynamic.blast_direction", d.blast_direction, range::kAngle},
-                                  {"dynamic.blast_intensity", d.blast_intensity, range::kSignedLevel},
-                                  {"dynamic.dynamic_mass", d.dynamic_mass, range::kDynamicMass},
-                                  {"dynamic.blast_resonance", d.blast_resonance, range::kDynamicStiffness},
-                                  {"dynamic.blast_decay", d.blast_decay, range::kLevel}});
-        case EffectType::dynamic_impact:
-            if (Error e = in_range("dynamic.impact_direction", d.impact_direction, range::kAngle)) return e;
-            if (Error e = check_kick_aim(p, "dynamic.impact_direction", d.impact_direction)) return e;
-            return first_failing({{"dynamic.impact_direction", d.impact_direction, range::kAngle},
-                                  {"dynamic.impact_intensity", d.impact_intensity, range::kSignedLevel},
-                                  {"dynamic.dynamic_mass", d.dynamic_mass, range::kDynamicMass},
-                                  {"dynamic.elasticity", d.elasticity, range::kDynamicStiffness},
-                                  {"dynamic.collision_absorption", d.collision_absorption, range::kLevel}});
-        case EffectType::dynamic_liquid:
-            return first_failing({{"dynamic.density", d.density, range::kDynamicMass},
-                                  {"dynamic.settle", d.settle, range::kDynamicStiffness},
-                                  {"dynamic.viscosity", d.viscosity, range::kLevel}});
-        case EffectType::dynamic_inertia:
-            return first_failing({{"dynamic.inertia", d.inertia, range::kDynamicMass},
-                                  {"dynamic.play", d.play, range::kLevel}});
-        case EffectType::dynamic_center_drift:
-            return first_failing({{"dynamic.stiffness", d.stiffness, range::kDynamicStiffness},
-                                  {"dynamic.drift_resistance", d.drift_resistance, range::kLevel}});
-        case EffectType::dynamic_sling:
-            return first_failing({{"dynamic.ball_mass", d.ball_mass, range::kDynamicMass},
-                                  {"dynamic.string_length", d.string_length, range::kLevel},
-                                  {"dynamic.string_compliance", d.string_compliance, range::kDynamicStiffness},
-                                  {"dynamic.ball_damping", d.ball_damping, range::kLevel}});
+        case EffectType::dynamic_impact: {
+            // The angle's own range first, then how the kick is aimed, then every field.
+            const bool recoil = p.type == EffectType::dynamic_recoil;
+            using Rules = std::span<const FieldRule>;
+            const Rules rules = recoil ? Rules(kRecoilRules) : Rules(kImpactRules);
+            if (Error e = check_fields("dynamic", &d, rules.first(1))) return e;
+            if (Error e = recoil ? check_kick_aim(p, "dynamic.blast_direction", d.blast_direction)
+                                 : check_kick_aim(p, "dynamic.impact_direction", d.impact_direction)) {
+                return e;
+            }
+            return check_fields("dynamic", &d, rules);
+        }
+        case EffectType::dynamic_liquid: return check_fields("dynamic", &d, kLiquidRules);
+        case EffectType::dynamic_inertia: return check_fields("dynamic", &d, kInertiaRules);
+        case EffectType::dynamic_center_drift: return check_fields("dynamic", &d, kCenterDriftRules);
+        case EffectType::dynamic_sling: return check_fields("dynamic", &d, kSlingRules);
         case EffectType::dynamic_paddle:
             if (Error e = needs_xy(p, "a paddle is a ball bouncing on the handle in the x-y plane "
                                       "(2D only, not 1 or 3 axes): its axes must be x and y")) {
                 return e;
             }
-            return first_failing(
-                {{"dynamic.ball_mass", d.ball_mass, range::kDynamicMass},
-                 {"dynamic.initial_velocity", d.initial_velocity, range::kSignedLevel},
-                 {"dynamic.initial_velocity_direction", d.initial_velocity_direction, range::kAngle},
-                 {"dynamic.paddle_compliance", d.paddle_compliance, range::kDynamicStiffness},
-                 {"dynamic.paddle_damping", d.paddle_damping, range::kLevel},
-                 {"dynamic.gravity", d.gravity, range::kSignedLevel}});
+            return check_fields("dynamic", &d, kPaddleRules);
         case EffectType::dynamic_control_law:
             for (int i = 0; i < p.axis_count; ++i) {
-                if (Error e = check_control_law(d.control_law[i], i)) return e;
+                if (Error e = check_fields("dynamic.control_law", i, &d.control_law[i], kControlLawRules)) return e;
             }
             return {};
         default:
