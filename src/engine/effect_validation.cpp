@@ -81,13 +81,23 @@ private:
     size_t len_ = 0;
 };
 
-// The range by reference: on the Cortex-M4 a Range by value is 16 bytes copied at each call.
-[[nodiscard]] Error in_range(std::string_view field, int64_t value, const Range& allowed) noexcept {
-    return allowed.contains(value) ? Error{} : Error::out_of_range(field, value, allowed);
+// Every check below returns true when it refuses the effect, having written why into `out`,
+// the one Error validate_effect returns: on the Cortex-M4 an Error (88 bytes) handed back by
+// value through each caller was copied at every level. The range goes by reference (16
+// bytes by value at each call).
+[[nodiscard]] bool refuse(Error& out, std::string_view field, const char* rule) noexcept {
+    out = Error::invalid(field, rule);
+    return true;
 }
 
-[[nodiscard]] Error in_range(const Path& field, int64_t value, const Range& allowed) noexcept {
-    return in_range(field.view(), value, allowed);
+[[nodiscard]] bool in_range(std::string_view field, int64_t value, const Range& allowed, Error& out) noexcept {
+    if (allowed.contains(value)) return false;
+    out = Error::out_of_range(field, value, allowed);
+    return true;
+}
+
+[[nodiscard]] bool in_range(const Path& field, int64_t value, const Range& allowed, Error& out) noexcept {
+    return in_range(field.view(), value, allowed, out);
 }
 
 // --- the field table ------------------------------------------------------------------
@@ -134,8 +144,8 @@ struct FieldRule {
 
 // The fields of `block` in `rules`, in order; the first that fails is the error, its field
 // named block[index].name (no index when index < 0; the bare name when block is empty).
-[[nodiscard]] Error check_fields(const char* block, int index, const void* base,
-                                 std::span<const FieldRule> rules) noexcept {
+[[nodiscard]] bool check_fields(const char* block, int index, const void* base,
+                                 std::span<const FieldRule> rules, Error& out) noexcept {
     const auto* bytes = static_cast<const unsigned char*>(base);
     for (const FieldRule& r : rules) {
         int64_t value = 0;
@@ -155,14 +165,15 @@ struct FieldRule {
         if (index >= 0) field.index(index);
         if (*block != '\0') field.add(".");
         field.add(r.name);
-        return choice ? Error::invalid(field.view(), kChoices[r.check - kChoice].rule)
-                      : Error::out_of_range(field.view(), value, allowed);
+        out = choice ? Error::invalid(field.view(), kChoices[r.check - kChoice].rule)
+                     : Error::out_of_range(field.view(), value, allowed);
+        return true;
     }
-    return {};
+    return false;
 }
 
-[[nodiscard]] Error check_fields(const char* block, const void* base, std::span<const FieldRule> rules) noexcept {
-    return check_fields(block, -1, base, rules);
+[[nodiscard]] bool check_fields(const char* block, const void* base, std::span<const FieldRule> rules, Error& out) noexcept {
+    return check_fields(block, -1, base, rules, out);
 }
 
 constexpr FieldRule kTimingRules[] = {
@@ -343,19 +354,19 @@ constexpr FieldRule kControlLawRules[] = {
     return true;
 }
 
-[[nodiscard]] Error check_axes(const EffectParams& p) noexcept {
-    if (Error e = in_range("axes", p.axis_count, range::kAxisCount)) return e;
+[[nodiscard]] bool check_axes(const EffectParams& p, Error& out) noexcept {
+    if (in_range("axes", p.axis_count, range::kAxisCount, out)) return true;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = static_cast<int>(p.axes[i]);
-        if (Error e = in_range(Path("axes").index(i), a, Range{0, kMaxAxes - 1})) return e;
+        if (in_range(Path("axes").index(i), a, Range{0, kMaxAxes - 1}, out)) return true;
         for (int j = 0; j < i; ++j) {
             if (p.axes[j] == p.axes[i]) {
-                return Error::invalid(Path("axes").index(i).view(),
+                return refuse(out, Path("axes").index(i).view(),
                                       "an axis may appear only once in an effect's axes");
             }
         }
     }
-    return {};
+    return false;
 }
 
 // --- common fields ----------------------------------------------------------------------
@@ -364,341 +375,341 @@ constexpr FieldRule kControlLawRules[] = {
     return t == EffectType::ramp || t == EffectType::smart_pop || is_sweep(t);
 }
 
-[[nodiscard]] Error check_timing(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_timing(const EffectParams& p, Error& out) noexcept {
     if (p.duration_us == kInfiniteUs) {
         if (needs_finite_duration(p.type)) {
-            return Error::invalid("duration_us",
+            return refuse(out, "duration_us",
                                   "ramp, smart_pop and the sweep waves need a finite duration: "
                                   "they are shaped over it");
         }
-    } else if (Error e = in_range("duration_us", p.duration_us, range::kDurationUs)) {
-        return e;
+    } else if (in_range("duration_us", p.duration_us, range::kDurationUs, out)) {
+        return true;
     }
-    if (Error e = check_fields("", &p, kTimingRules)) return e;
+    if (check_fields("", &p, kTimingRules, out)) return true;
     if (p.iterations != kInfiniteIterations) {
-        if (Error e = in_range("iterations", p.iterations, range::kIterations)) return e;
+        if (in_range("iterations", p.iterations, range::kIterations, out)) return true;
     }
-    return {};
+    return false;
 }
 
-[[nodiscard]] Error check_trigger(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_trigger(const EffectParams& p, Error& out) noexcept {
     switch (p.trigger.kind) {
         case TriggerKind::none:
             if (p.trigger_repeat_interval_us != 0) {
-                return Error::invalid("trigger_repeat_interval_us",
+                return refuse(out, "trigger_repeat_interval_us",
                                       "a repeat interval needs a trigger button to repeat on");
             }
-            return {};
+            return false;
         case TriggerKind::button:
-            if (Error e = in_range("trigger_button", p.trigger.index, range::kTriggerButton)) return e;
+            if (in_range("trigger_button", p.trigger.index, range::kTriggerButton, out)) return true;
             break;
         case TriggerKind::hat:
-            if (Error e = in_range("trigger_button", p.trigger.index, range::kTriggerHat)) return e;
+            if (in_range("trigger_button", p.trigger.index, range::kTriggerHat, out)) return true;
             break;
         default:
-            return Error::invalid("trigger_button", "the trigger kind must be none, button or hat");
+            return refuse(out, "trigger_button", "the trigger kind must be none, button or hat");
     }
     return in_range("trigger_repeat_interval_us", p.trigger_repeat_interval_us,
-                    range::kRepeatIntervalUs);
+                    range::kRepeatIntervalUs, out);
 }
 
-[[nodiscard]] Error check_envelope(const EffectParams& p) noexcept {
-    if (!p.has_envelope) return {};
+[[nodiscard]] bool check_envelope(const EffectParams& p, Error& out) noexcept {
+    if (!p.has_envelope) return false;
     if (!supports_envelope(p.type)) {
-        return Error::invalid("envelope",
+        return refuse(out, "envelope",
                               "only vector_force, constant, the periodic and sweep waves, "
                               "force_profile and ramp take an envelope (§6.4)");
     }
-    return check_fields("envelope", &p.envelope, kEnvelopeRules);
+    return check_fields("envelope", &p.envelope, kEnvelopeRules, out);
 }
 
 // --- direction --------------------------------------------------------------------------
 
 // A cartesian or moments vector: one component per axis, each in range, not all zero.
-[[nodiscard]] Error check_vector(const EffectParams& p, std::string_view name) noexcept {
+[[nodiscard]] bool check_vector(const EffectParams& p, std::string_view name, Error& out) noexcept {
     // Distinct axes of one kind are at most three; this guards value[3] all the same.
     if (p.axis_count > 3) {
-        return Error::invalid(Path("direction.").add(name).view(),
+        return refuse(out, Path("direction.").add(name).view(),
                               "a cartesian or moments direction has at most 3 components, "
                               "one per axis");
     }
     bool any = false;
     for (int i = 0; i < p.axis_count; ++i) {
         const int32_t v = p.direction.value[i];
-        if (Error e = in_range(Path("direction.").add(name).index(i), v, range::kCartesianComponent)) {
-            return e;
+        if (in_range(Path("direction.").add(name).index(i), v, range::kCartesianComponent, out)) {
+            return true;
         }
         any = any || v != 0;
     }
     if (!any) {
-        return Error::invalid(Path("direction.").add(name).view(),
+        return refuse(out, Path("direction.").add(name).view(),
                               "the zero vector names no direction");
     }
-    return {};
+    return false;
 }
 
 // The direction is well formed for the effect's axes (whether one is needed is the
 // caller's rule).
-[[nodiscard]] Error check_direction_form(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_direction_form(const EffectParams& p, Error& out) noexcept {
     const Direction& d = p.direction;
     switch (d.kind) {
         case DirectionKind::none:
-            return {};
+            return false;
         case DirectionKind::polar:
             if (!on_xy(p)) {
-                return Error::invalid("direction.polar",
+                return refuse(out, "direction.polar",
                                       "a polar direction is a compass angle in the x-y plane: "
                                       "the effect's axes must be x and y");
             }
-            return in_range("direction.polar", d.value[0], range::kAngle);
+            return in_range("direction.polar", d.value[0], range::kAngle, out);
         case DirectionKind::spherical:
             if (!on_xyz(p)) {
-                return Error::invalid("direction.spherical",
+                return refuse(out, "direction.spherical",
                                       "a spherical direction needs the axes x, y and z (§6.5.c)");
             }
-            if (Error e = in_range("direction.spherical[0]", d.value[0], range::kAngle)) return e;
-            return in_range("direction.spherical[1]", d.value[1], range::kElevation);
+            if (in_range("direction.spherical[0]", d.value[0], range::kAngle, out)) return true;
+            return in_range("direction.spherical[1]", d.value[1], range::kElevation, out);
         case DirectionKind::cartesian:
             if (!all_axes(p, false)) {
-                return Error::invalid("direction.cartesian",
+                return refuse(out, "direction.cartesian",
                                       "a cartesian direction is for the axes x, y, z; "
                                       "use moments for rx, ry, rz (§6.5.d)");
             }
-            return check_vector(p, "cartesian");
+            return check_vector(p, "cartesian", out);
         case DirectionKind::moments:
             if (!all_axes(p, true)) {
-                return Error::invalid("direction.moments",
+                return refuse(out, "direction.moments",
                                       "moments are for the rotational axes rx, ry, rz (§6.5.d)");
             }
-            return check_vector(p, "moments");
+            return check_vector(p, "moments", out);
     }
-    return Error::invalid("direction", "the direction kind must be none, polar, cartesian, "
+    return refuse(out, "direction", "the direction kind must be none, polar, cartesian, "
                                        "spherical or moments");
 }
 
 // A wave on one axis may omit its direction; on several axes it needs one.
-[[nodiscard]] Error check_wave_direction(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_wave_direction(const EffectParams& p, Error& out) noexcept {
     if (p.direction.kind == DirectionKind::none && p.axis_count > 1) {
-        return Error::invalid("direction",
+        return refuse(out, "direction",
                               "a wave on several axes needs a direction (polar, cartesian, "
                               "spherical or moments)");
     }
-    return check_direction_form(p);
+    return check_direction_form(p, out);
 }
 
-[[nodiscard]] Error no_direction(const EffectParams& p, const char* rule) noexcept {
-    return p.direction.kind == DirectionKind::none ? Error{} : Error::invalid("direction", rule);
+[[nodiscard]] bool no_direction(const EffectParams& p, const char* rule, Error& out) noexcept {
+    return p.direction.kind != DirectionKind::none && refuse(out, "direction", rule);
 }
 
-[[nodiscard]] Error needs_xy(const EffectParams& p, const char* rule) noexcept {
-    return on_xy(p) ? Error{} : Error::invalid("axes", rule);
+[[nodiscard]] bool needs_xy(const EffectParams& p, const char* rule, Error& out) noexcept {
+    return !on_xy(p) && refuse(out, "axes", rule);
 }
 
-[[nodiscard]] Error needs_one_axis(const EffectParams& p, const char* rule) noexcept {
-    return p.axis_count == 1 ? Error{} : Error::invalid("axes", rule);
+[[nodiscard]] bool needs_one_axis(const EffectParams& p, const char* rule, Error& out) noexcept {
+    return p.axis_count != 1 && refuse(out, "axes", rule);
 }
 
 // --- conditions (§6.6.a, g, h, j) ---------------------------------------------------------
 
 // A relative offset (SpringAtCurrentLocation, §8.2) is measured from where the handle is
 // when the effect starts: a position, so it means something only for springs.
-[[nodiscard]] Error check_condition_block(const ConditionBlock& c, int i, EffectType type) noexcept {
+[[nodiscard]] bool check_condition_block(const ConditionBlock& c, int i, EffectType type, Error& out) noexcept {
     constexpr FieldRule kOffsetMode[] = {{"offset_mode", offsetof(ConditionBlock, offset_mode), 1, kOffsetModeChoice}};
-    if (Error e = check_fields("conditions", i, &c, kOffsetMode)) return e;
+    if (check_fields("conditions", i, &c, kOffsetMode, out)) return true;
     if (c.offset_mode == OffsetMode::relative && type != EffectType::spring &&
         type != EffectType::angle_spring) {
-        return Error::invalid(Path("conditions").index(i).add(".offset_mode").view(),
+        return refuse(out, Path("conditions").index(i).add(".offset_mode").view(),
                               "a relative offset is a position (the handle's at the start), so "
                               "only springs take it; damper, inertia and friction offsets are "
                               "absolute");
     }
-    return check_fields("conditions", i, &c, kConditionRules);
+    return check_fields("conditions", i, &c, kConditionRules, out);
 }
 
 // A spring, damper, inertia or friction with a direction (§3.1): one block, conditions[0],
 // applied along the direction on 2 or more axes (DirectInput's single DICONDITION "in the
 // specified direction"). The blocks past the first are not read, so they must be left at
 // their defaults: a block given for an axis and silently ignored would be a lie.
-[[nodiscard]] Error check_directed_condition(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_directed_condition(const EffectParams& p, Error& out) noexcept {
     if (p.axis_count < 2) {
-        return Error::invalid("direction",
+        return refuse(out, "direction",
                               "a condition on one axis acts along that axis and takes no direction; a "
                               "direction applies one condition block along it on 2 or more axes");
     }
-    if (Error e = check_direction_form(p)) return e;
-    if (Error e = check_condition_block(p.conditions[0], 0, p.type)) return e;
+    if (check_direction_form(p, out)) return true;
+    if (check_condition_block(p.conditions[0], 0, p.type, out)) return true;
     for (int i = 1; i < p.axis_count; ++i) {
         if (!(p.conditions[i] == ConditionBlock{})) {
-            return Error::invalid(Path("conditions").index(i).view(),
+            return refuse(out, Path("conditions").index(i).view(),
                                   "a condition with a direction has one block, conditions[0], applied "
                                   "along the direction; leave the others at their defaults, or give "
                                   "one block per axis and no direction");
         }
     }
-    return {};
+    return false;
 }
 
 // A wall or barrier: its fields before the angle (`head`), the angle, which only the
 // angle types have (an axis type lies across its one axis), then its surface (`tail`).
-[[nodiscard]] Error check_contact_block(const char* block, const void* base, std::span<const FieldRule> head,
+[[nodiscard]] bool check_contact_block(const char* block, const void* base, std::span<const FieldRule> head,
                                         int32_t angle, bool angled, const char* axis_rule,
-                                        std::span<const FieldRule> tail) noexcept {
-    if (Error e = check_fields(block, base, head)) return e;
+                                        std::span<const FieldRule> tail, Error& out) noexcept {
+    if (check_fields(block, base, head, out)) return true;
     if (angled) {
-        if (Error e = in_range(Path(block).add(".angle"), angle, range::kAngle)) return e;
+        if (in_range(Path(block).add(".angle"), angle, range::kAngle, out)) return true;
     } else if (angle != 0) {
-        return Error::invalid(Path(block).add(".angle").view(), axis_rule);
+        return refuse(out, Path(block).add(".angle").view(), axis_rule);
     }
-    return check_fields(block, base, tail);
+    return check_fields(block, base, tail, out);
 }
 
-[[nodiscard]] Error check_wall(const WallBlock& w, bool angled) noexcept {
+[[nodiscard]] bool check_wall(const WallBlock& w, bool angled, Error& out) noexcept {
     return check_contact_block("wall", &w, kWallRules, w.angle, angled,
                                "an axis_wall lies across its one axis and has no angle; "
                                "use angle_wall for a wall at an angle",
-                               kWallSurfaceRules);
+                               kWallSurfaceRules, out);
 }
 
-[[nodiscard]] Error check_barrier(const BarrierBlock& b, bool angled) noexcept {
+[[nodiscard]] bool check_barrier(const BarrierBlock& b, bool angled, Error& out) noexcept {
     return check_contact_block("barrier", &b, kBarrierRules, b.angle, angled,
                                "an axis_barrier lies across its one axis and has no angle; "
                                "use angle_barrier for a barrier at an angle",
-                               kBarrierSurfaceRules);
+                               kBarrierSurfaceRules, out);
 }
 
-[[nodiscard]] Error check_condition(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_condition(const EffectParams& p, Error& out) noexcept {
     switch (p.type) {
         case EffectType::spring:
         case EffectType::damper:
         case EffectType::inertia:
         case EffectType::friction:
-            if (is_directed_condition(p)) return check_directed_condition(p);
+            if (is_directed_condition(p)) return check_directed_condition(p, out);
             for (int i = 0; i < p.axis_count; ++i) {
-                if (Error e = check_condition_block(p.conditions[i], i, p.type)) return e;
+                if (check_condition_block(p.conditions[i], i, p.type, out)) return true;
             }
-            return {};
+            return false;
         case EffectType::angle_spring:
-            if (Error e = needs_xy(p, "an angle_spring acts in the x-y plane: its axes must be "
-                                      "x and y")) {
-                return e;
+            if (needs_xy(p, "an angle_spring acts in the x-y plane: its axes must be "
+                            "x and y", out)) {
+                return true;
             }
             if (p.direction.kind != DirectionKind::polar) {
-                return Error::invalid("direction",
+                return refuse(out, "direction",
                                       "an angle_spring needs a polar direction: the angle of "
                                       "the spring");
             }
-            if (Error e = check_direction_form(p)) return e;
-            return check_condition_block(p.conditions[0], 0, p.type);
+            if (check_direction_form(p, out)) return true;
+            return check_condition_block(p.conditions[0], 0, p.type, out);
         case EffectType::texture:
             if (p.axis_count == 1) {
-                if (Error e = no_direction(p, "a texture on one axis lies along that axis and "
-                                              "takes no direction")) {
-                    return e;
+                if (no_direction(p, "a texture on one axis lies along that axis and "
+                                    "takes no direction", out)) {
+                    return true;
                 }
             } else {
                 if (p.direction.kind == DirectionKind::none) {
-                    return Error::invalid("direction",
+                    return refuse(out, "direction",
                                           "a texture on several axes needs a direction: the "
                                           "line its bumps lie along");
                 }
-                if (Error e = check_direction_form(p)) return e;
+                if (check_direction_form(p, out)) return true;
             }
-            return check_fields("texture", &p.texture, kTextureRules);
+            return check_fields("texture", &p.texture, kTextureRules, out);
         case EffectType::axis_wall:
         case EffectType::axis_barrier: {
             const bool wall = p.type == EffectType::axis_wall;
-            if (Error e = needs_one_axis(p, "axis_wall and axis_barrier act on exactly one axis")) {
-                return e;
+            if (needs_one_axis(p, "axis_wall and axis_barrier act on exactly one axis", out)) {
+                return true;
             }
-            if (Error e = no_direction(p, "axis_wall and axis_barrier lie across their one axis "
-                                          "and take no direction")) {
-                return e;
+            if (no_direction(p, "axis_wall and axis_barrier lie across their one axis "
+                                "and take no direction", out)) {
+                return true;
             }
-            return wall ? check_wall(p.wall, false) : check_barrier(p.barrier, false);
+            return wall ? check_wall(p.wall, false, out) : check_barrier(p.barrier, false, out);
         }
         case EffectType::angle_wall:
         case EffectType::angle_barrier: {
             const bool wall = p.type == EffectType::angle_wall;
-            if (Error e = needs_xy(p, "angle_wall and angle_barrier lie in the x-y plane: their "
-                                      "axes must be x and y")) {
-                return e;
+            if (needs_xy(p, "angle_wall and angle_barrier lie in the x-y plane: their "
+                            "axes must be x and y", out)) {
+                return true;
             }
-            if (Error e = no_direction(p, "angle_wall and angle_barrier take their angle from "
-                                          "their block, not from a direction")) {
-                return e;
+            if (no_direction(p, "angle_wall and angle_barrier take their angle from "
+                                "their block, not from a direction", out)) {
+                return true;
             }
-            return wall ? check_wall(p.wall, true) : check_barrier(p.barrier, true);
+            return wall ? check_wall(p.wall, true, out) : check_barrier(p.barrier, true, out);
         }
         default:
-            return {};
+            return false;
     }
 }
 
 // --- waves (§6.6.b, c, d, e, i) -------------------------------------------------------------
 
-[[nodiscard]] Error check_periodic(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_periodic(const EffectParams& p, Error& out) noexcept {
     using Rules = std::span<const FieldRule>;
-    return check_fields("periodic", &p.periodic, is_sweep(p.type) ? Rules(kSweepRules) : Rules(kPeriodicRules));
+    return check_fields("periodic", &p.periodic, is_sweep(p.type) ? Rules(kSweepRules) : Rules(kPeriodicRules), out);
 }
 
-[[nodiscard]] Error check_force_profile(const EffectParams& p, std::span<const int16_t> samples) noexcept {
+[[nodiscard]] bool check_force_profile(const EffectParams& p, std::span<const int16_t> samples, Error& out) noexcept {
     const CustomBlock& c = p.custom;
-    if (Error e = check_fields("custom", &c, kCustomRules)) return e;
+    if (check_fields("custom", &c, kCustomRules, out)) return true;
     if (c.sample_count % c.channels != 0) {
-        return Error::invalid("custom.sample_count",
+        return refuse(out, "custom.sample_count",
                               "the sample count must be a multiple of custom.channels: samples "
                               "are interleaved by channel (§6.6.d)");
     }
     if (samples.size() != static_cast<size_t>(c.sample_count)) {
-        return Error::invalid("custom.samples",
+        return refuse(out, "custom.samples",
                               "the number of samples passed must equal custom.sample_count");
     }
     for (size_t i = 0; i < samples.size(); ++i) {
-        if (Error e = in_range(Path("custom.samples").index(static_cast<int64_t>(i)), samples[i],
-                               range::kSample)) {
-            return e;
+        if (in_range(Path("custom.samples").index(static_cast<int64_t>(i)), samples[i],
+                     range::kSample, out)) {
+            return true;
         }
     }
-    if (c.channels == 1) return check_wave_direction(p);
+    if (c.channels == 1) return check_wave_direction(p, out);
     if (c.channels != p.axis_count) {
-        return Error::invalid("custom.channels",
+        return refuse(out, "custom.channels",
                               "a profile with several channels drives one axis per channel: "
                               "custom.channels must equal the number of axes");
     }
     return no_direction(p, "a profile with several channels drives each axis with its own "
-                           "channel and takes no direction");
+                           "channel and takes no direction", out);
 }
 
-[[nodiscard]] Error check_wave(const EffectParams& p, std::span<const int16_t> samples) noexcept {
+[[nodiscard]] bool check_wave(const EffectParams& p, std::span<const int16_t> samples, Error& out) noexcept {
     const EffectType t = p.type;
     if (is_sweep(t)) {
-        if (Error e = needs_xy(p, "a sweep turns its direction in the x-y plane: its axes must "
-                                  "be x and y")) {
-            return e;
+        if (needs_xy(p, "a sweep turns its direction in the x-y plane: its axes must "
+                        "be x and y", out)) {
+            return true;
         }
-        if (Error e = no_direction(p, "a sweep's direction is given by its sweep angles, not by "
-                                      "a direction")) {
-            return e;
+        if (no_direction(p, "a sweep's direction is given by its sweep angles, not by "
+                            "a direction", out)) {
+            return true;
         }
-        return check_periodic(p);
+        return check_periodic(p, out);
     }
     if (is_periodic(t)) {
-        if (Error e = check_periodic(p)) return e;
-        return check_wave_direction(p);
+        if (check_periodic(p, out)) return true;
+        return check_wave_direction(p, out);
     }
     switch (t) {
         case EffectType::vector_force:
         case EffectType::constant:
         case EffectType::smart_pop:
-            if (Error e = check_fields("constant", &p.constant, kConstantRules)) return e;
-            return check_wave_direction(p);
+            if (check_fields("constant", &p.constant, kConstantRules, out)) return true;
+            return check_wave_direction(p, out);
         case EffectType::ramp:
-            if (Error e = check_fields("ramp", &p.ramp, kRampRules)) return e;
-            return check_wave_direction(p);
+            if (check_fields("ramp", &p.ramp, kRampRules, out)) return true;
+            return check_wave_direction(p, out);
         case EffectType::force_profile:
-            return check_force_profile(p, samples);
+            return check_force_profile(p, samples, out);
         default:
-            return {};
+            return false;
     }
 }
 
@@ -707,44 +718,44 @@ constexpr FieldRule kControlLawRules[] = {
 // Recoil and impact aim their kick (§5.4, §5.10): in the x-y plane with the compass angle
 // of their block; on one axis with the sign of their intensity (the angle must be 0); on
 // the axes x, y and z with a spherical direction, as waves do (the angle must be 0).
-[[nodiscard]] Error check_kick_aim(const EffectParams& p, const char* angle_field, int32_t angle) noexcept {
+[[nodiscard]] bool check_kick_aim(const EffectParams& p, const char* angle_field, int32_t angle, Error& out) noexcept {
     if (p.axis_count == 1) {
-        if (Error e = no_direction(p, "a recoil or impact on one axis takes no direction: the "
-                                      "sign of its intensity is its direction")) {
-            return e;
+        if (no_direction(p, "a recoil or impact on one axis takes no direction: the "
+                            "sign of its intensity is its direction", out)) {
+            return true;
         }
         if (angle != 0) {
-            return Error::invalid(angle_field, "on one axis the sign of the intensity is the "
+            return refuse(out, angle_field, "on one axis the sign of the intensity is the "
                                                "direction: the angle must be 0");
         }
-        return {};
+        return false;
     }
     if (on_xyz(p)) {
         if (p.direction.kind != DirectionKind::spherical) {
-            return Error::invalid("direction", "a recoil or impact on the axes x, y and z aims "
+            return refuse(out, "direction", "a recoil or impact on the axes x, y and z aims "
                                                "with a spherical direction (§6.5.c)");
         }
         if (angle != 0) {
-            return Error::invalid(angle_field, "on the axes x, y and z the spherical direction "
+            return refuse(out, angle_field, "on the axes x, y and z the spherical direction "
                                                "aims the kick: the angle must be 0");
         }
-        return check_direction_form(p);
+        return check_direction_form(p, out);
     }
-    if (Error e = needs_xy(p, "a recoil or impact plays on one axis, on x and y (aimed by the "
-                              "angle in its block) or on x, y and z (aimed by a spherical "
-                              "direction)")) {
-        return e;
+    if (needs_xy(p, "a recoil or impact plays on one axis, on x and y (aimed by the "
+                    "angle in its block) or on x, y and z (aimed by a spherical "
+                    "direction)", out)) {
+        return true;
     }
     return no_direction(p, "on x and y a recoil or impact aims with the angle in its block, "
-                           "not with a direction");
+                           "not with a direction", out);
 }
 
-[[nodiscard]] Error check_dynamic(const EffectParams& p) noexcept {
+[[nodiscard]] bool check_dynamic(const EffectParams& p, Error& out) noexcept {
     const bool kick = p.type == EffectType::dynamic_recoil || p.type == EffectType::dynamic_impact;
     if (!kick) {
-        if (Error e = no_direction(p, "dynamics take no direction; paddle aims with the angle "
-                                      "in its block, recoil and impact with it on x and y")) {
-            return e;
+        if (no_direction(p, "dynamics take no direction; paddle aims with the angle "
+                            "in its block, recoil and impact with it on x and y", out)) {
+            return true;
         }
     }
     const DynamicBlock& d = p.dynamic;
@@ -755,51 +766,57 @@ constexpr FieldRule kControlLawRules[] = {
             const bool recoil = p.type == EffectType::dynamic_recoil;
             using Rules = std::span<const FieldRule>;
             const Rules rules = recoil ? Rules(kRecoilRules) : Rules(kImpactRules);
-            if (Error e = check_fields("dynamic", &d, rules.first(1))) return e;
-            if (Error e = recoil ? check_kick_aim(p, "dynamic.blast_direction", d.blast_direction)
-                                 : check_kick_aim(p, "dynamic.impact_direction", d.impact_direction)) {
-                return e;
+            if (check_fields("dynamic", &d, rules.first(1), out)) return true;
+            if (recoil ? check_kick_aim(p, "dynamic.blast_direction", d.blast_direction, out)
+                       : check_kick_aim(p, "dynamic.impact_direction", d.impact_direction, out)) {
+                return true;
             }
-            return check_fields("dynamic", &d, rules);
+            return check_fields("dynamic", &d, rules, out);
         }
-        case EffectType::dynamic_liquid: return check_fields("dynamic", &d, kLiquidRules);
-        case EffectType::dynamic_inertia: return check_fields("dynamic", &d, kInertiaRules);
-        case EffectType::dynamic_center_drift: return check_fields("dynamic", &d, kCenterDriftRules);
-        case EffectType::dynamic_sling: return check_fields("dynamic", &d, kSlingRules);
+        case EffectType::dynamic_liquid: return check_fields("dynamic", &d, kLiquidRules, out);
+        case EffectType::dynamic_inertia: return check_fields("dynamic", &d, kInertiaRules, out);
+        case EffectType::dynamic_center_drift: return check_fields("dynamic", &d, kCenterDriftRules, out);
+        case EffectType::dynamic_sling: return check_fields("dynamic", &d, kSlingRules, out);
         case EffectType::dynamic_paddle:
-            if (Error e = needs_xy(p, "a paddle is a ball bouncing on the handle in the x-y plane "
-                                      "(2D only, not 1 or 3 axes): its axes must be x and y")) {
-                return e;
+            if (needs_xy(p, "a paddle is a ball bouncing on the handle in the x-y plane "
+                            "(2D only, not 1 or 3 axes): its axes must be x and y", out)) {
+                return true;
             }
-            return check_fields("dynamic", &d, kPaddleRules);
+            return check_fields("dynamic", &d, kPaddleRules, out);
         case EffectType::dynamic_control_law:
             for (int i = 0; i < p.axis_count; ++i) {
-                if (Error e = check_fields("dynamic.control_law", i, &d.control_law[i], kControlLawRules)) return e;
+                if (check_fields("dynamic.control_law", i, &d.control_law[i], kControlLawRules, out)) return true;
             }
-            return {};
+            return false;
         default:
-            return {};
+            return false;
     }
+}
+
+// The first refusal, in reading order, into `out`.
+[[nodiscard]] bool check_effect(const EffectParams& p, std::span<const int16_t> samples, Error& out) noexcept {
+    const int type = static_cast<int>(p.type);
+    if (in_range("type", type, Range{0, kEffectTypeCount - 1}, out)) return true;
+    if (check_timing(p, out) || check_axes(p, out) || check_trigger(p, out) || check_envelope(p, out)) {
+        return true;
+    }
+    if (p.type != EffectType::force_profile && !samples.empty()) {
+        return refuse(out, "custom.samples", "only force_profile effects carry samples");
+    }
+    switch (effect_class(p.type)) {
+        case EffectClass::condition: return check_condition(p, out);
+        case EffectClass::wave: return check_wave(p, samples, out);
+        case EffectClass::dynamic: return check_dynamic(p, out);
+    }
+    return false;
 }
 
 }  // namespace
 
 Error validate_effect(const EffectParams& p, std::span<const int16_t> samples) noexcept {
-    const int type = static_cast<int>(p.type);
-    if (Error e = in_range("type", type, Range{0, kEffectTypeCount - 1})) return e;
-    if (Error e = check_timing(p)) return e;
-    if (Error e = check_axes(p)) return e;
-    if (Error e = check_trigger(p)) return e;
-    if (Error e = check_envelope(p)) return e;
-    if (p.type != EffectType::force_profile && !samples.empty()) {
-        return Error::invalid("custom.samples", "only force_profile effects carry samples");
-    }
-    switch (effect_class(p.type)) {
-        case EffectClass::condition: return check_condition(p);
-        case EffectClass::wave: return check_wave(p, samples);
-        case EffectClass::dynamic: return check_dynamic(p);
-    }
-    return {};
+    Error out;
+    (void)check_effect(p, samples, out);
+    return out;
 }
 
 }  // namespace feel
