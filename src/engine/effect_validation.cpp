@@ -48,13 +48,15 @@ namespace feel {
 namespace {
 
 // A field path built in place, e.g. Path("conditions").index(1).add(".deadband").
+// Its parts are C strings: on the Cortex-M4 at -Os a string_view made of a literal is an
+// out-of-line call (strlen) at every call site.
 class Path {
 public:
-    explicit Path(std::string_view base) noexcept { add(base); }
+    explicit Path(const char* base) noexcept { add(base); }
 
-    Path& add(std::string_view s) noexcept {
-        for (char c : s) {
-            if (len_ + 1 < sizeof buf_) buf_[len_++] = c;
+    Path& add(const char* s) noexcept {
+        for (; *s != '\0'; ++s) {
+            if (len_ + 1 < sizeof buf_) buf_[len_++] = *s;
         }
         buf_[len_] = '\0';
         return *this;
@@ -62,16 +64,16 @@ public:
 
     // An index is never negative and below 2^31 (an axis, a sample).
     Path& index(int64_t i) noexcept {
-        char digits[10];
-        size_t n = sizeof digits;
+        char digits[12] = {};
+        size_t n = sizeof digits - 2;
+        digits[n] = ']';
         auto u = static_cast<uint32_t>(i);
         do {
             digits[--n] = static_cast<char>('0' + u % 10);
             u /= 10;
-        } while (u != 0 && n > 0);
+        } while (u != 0);
         add("[");
-        add(std::string_view(digits + n, sizeof digits - n));
-        return add("]");
+        return add(digits + n);
     }
 
     [[nodiscard]] std::string_view view() const noexcept { return {buf_, len_}; }
@@ -90,10 +92,18 @@ private:
     return true;
 }
 
+[[nodiscard]] bool refuse(Error& out, const char* field, const char* rule) noexcept {
+    return refuse(out, std::string_view(field), rule);
+}
+
 [[nodiscard]] bool in_range(std::string_view field, int64_t value, const Range& allowed, Error& out) noexcept {
     if (allowed.contains(value)) return false;
     out = Error::out_of_range(field, value, allowed);
     return true;
+}
+
+[[nodiscard]] bool in_range(const char* field, int64_t value, const Range& allowed, Error& out) noexcept {
+    return in_range(std::string_view(field), value, allowed, out);
 }
 
 [[nodiscard]] bool in_range(const Path& field, int64_t value, const Range& allowed, Error& out) noexcept {
@@ -426,7 +436,7 @@ constexpr FieldRule kControlLawRules[] = {
 // --- direction --------------------------------------------------------------------------
 
 // A cartesian or moments vector: one component per axis, each in range, not all zero.
-[[nodiscard]] bool check_vector(const EffectParams& p, std::string_view name, Error& out) noexcept {
+[[nodiscard]] bool check_vector(const EffectParams& p, const char* name, Error& out) noexcept {
     // Distinct axes of one kind are at most three; this guards value[3] all the same.
     if (p.axis_count > 3) {
         return refuse(out, Path("direction.").add(name).view(),
