@@ -5,7 +5,8 @@
 #            optimised at link time, the link's ltrans partitions (only the engine's
 #            objects are LTO objects: firmware/CMakeLists.txt)
 #   libgcc   soft-float double routines and 64-bit division the engine's code calls
-#   libm     the math library (exp, expm1, sin, cos, expf, ...)
+#   libm     the math library (expf, sqrt, ...; the board's own double sin, cos, exp and
+#            expm1, board_math.c, in place of newlib's)
 #   runtime  newlib, libstdc++ and the semihosting syscalls: printf, malloc, exit
 #   program  the test or size program, start-up and the heap guard
 # Strings merged across files are counted once per file here, so the parts may exceed the
@@ -28,7 +29,7 @@ flash {
         file = f[n]
         if (file ~ /libfeel_engine_m4\.a|\.ltrans[0-9]*\.ltrans\.o$/) k = "engine"
         else if (file ~ /libgcc\.a/) k = "libgcc"
-        else if (file ~ /libm\.a/) k = "libm"
+        else if (file ~ /libm\.a|board_(math|libm)\.c\.obj$/) k = "libm"
         else if (file ~ /\/lib[^\/]*\.a\(|crt[^\/]*\.o$/) k = "runtime"
         else k = "program"
         bytes[k] += hex(f[n - 1])

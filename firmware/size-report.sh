@@ -16,7 +16,7 @@ echo "feel on a Cortex-M4F (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -
 echo "flash (bytes; goal 49152 for the engine with what it calls):"
 printf '  engine            %6d  (its code and constants)\n' "$engine"
 printf '  libgcc            %6d  (soft-float double, 64-bit division: called by the engine)\n' "$libgcc"
-printf '  libm              %6d  (exp, expm1, sin, cos, expf, ...: called by the engine)\n' "$libm"
+printf '  libm              %6d  (sin, cos, exp, expm1 in double: firmware/board_math.c; expf, sqrt, ... from newlib: called by the engine)\n' "$libm"
 printf '  engine + callees  %6d  goal 49152\n' $((engine + libgcc + libm))
 printf '  C runtime         %6d  (newlib: printf, exit, semihosting for the harness; malloc for the engine at start-up)\n' "$runtime"
 printf '  program           %6d  (size program, start-up, heap guard)\n' "$program"
