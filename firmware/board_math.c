@@ -34,19 +34,20 @@
 
 #include <stdint.h>
 
+typedef union {
+    double d;
+    uint64_t u;
+} DoubleBits;
+
 static double from_bits(uint64_t u) {
-    union {
-        uint64_t u;
-        double d;
-    } v = {u};
+    DoubleBits v;
+    v.u = u;
     return v.d;
 }
 
 static uint64_t bits_of(double d) {
-    union {
-        double d;
-        uint64_t u;
-    } v = {d};
+    DoubleBits v;
+    v.d = d;
     return v.u;
 }
 
