@@ -14,13 +14,14 @@
 // periodic block holds. The ranges are the primer's (§6.3, §6.6, §8) and are spelled as
 // the named constants of units.hpp, so an error quotes exactly the range enforced.
 //
-// The plain fields are a table, not code: each block's fields are a list of FieldRule
-// (the member's name, where it lives in the block, its width, and its range or list of
-// choices), walked in order by one checker that builds the error's field path only when
-// a field fails. On the Cortex-M4 build, where flash is counted (docs/firmware.md), one
-// range check written out as code took about 40 bytes (the Range passed by value, the
-// Error handed back through each caller); a table row takes 8. What is left as code is the
-// rules between fields (directions, axes, the sample count) and their sentences.
+// The plain fields are a table, not code (effect_field_rules.hpp): each block's fields are
+// a list of FieldRule (the member's name, where it lives in the block, its width, and its
+// range or list of choices), walked in order by one checker that builds the error's field
+// path only when a field fails. On the Cortex-M4 build, where flash is counted
+// (docs/firmware.md), one range check written out as code took about 40 bytes (the Range
+// passed by value, the Error handed back through each caller); a table row takes 8. What
+// is left as code is the rules between fields (directions, axes, the sample count) and
+// their sentences.
 //
 // Direction rules (§6.5) decided here, and documented in docs/sensation-format.md:
 //   - A wave on one axis may omit its direction (an "axis wave", §4.2.c); a wave on
@@ -44,8 +45,12 @@
 #include <span>
 #include <string_view>
 
+#include "effect_field_rules.hpp"
+
 namespace feel {
 namespace {
+
+using namespace detail::field_rules;
 
 // A field path built in place, e.g. Path("conditions").index(1).add(".deadband").
 // Its parts are C strings: on the Cortex-M4 at -Os a string_view made of a literal is an
@@ -112,46 +117,6 @@ private:
 
 // --- the field table ------------------------------------------------------------------
 
-// What a field must hold: one of the ranges of units.hpp, or (kChoice and up) one of a
-// few enumerators, refused with the rule that names them.
-enum Check : uint8_t {
-    kLevel, kSignedLevel, kPositiveLevel, kAngle, kDelayUs, kPeriodUs, kGain, kDynamicMass,
-    kDynamicStiffness, kHalfCycles, kChannels, kSampleCount,
-    kChoice,
-    kOffsetModeChoice = kChoice, kWallSenseChoice, kSweepSenseChoice,
-};
-
-constexpr Range kRanges[kChoice] = {
-    range::kLevel,         range::kSignedLevel,  range::kPositiveLevel,     range::kAngle,
-    range::kDelayUs,       range::kPeriodUs,     range::kGain,              range::kDynamicMass,
-    range::kDynamicStiffness, range::kHalfCycles, range::kChannels,         range::kSampleCount,
-};
-
-struct Choice {
-    int64_t last;      // the enumerators are 0..last
-    const char* rule;  // the error's sentence
-};
-
-constexpr Choice kChoices[] = {
-    {1, "the offset mode must be absolute or relative"},             // OffsetMode
-    {1, "the sense must be positive or negative"},                   // WallSense
-    {1, "the sweep sense must be clockwise or counterclockwise"},    // SweepSense
-};
-
-// One checked field of a block. Its name is the member's, which is also the format's.
-struct FieldRule {
-    const char* name;
-    uint16_t offset;  // bytes into its block
-    uint8_t width;    // 1 (an enum), 4 (int32_t) or 8 (int64_t)
-    Check check;
-};
-
-#define FEEL_FIELD(Block, member, check)                                                   \
-    FieldRule {                                                                           \
-        #member, static_cast<uint16_t>(offsetof(Block, member)),                          \
-            static_cast<uint8_t>(sizeof(Block::member)), check                            \
-    }
-
 // The fields of `block` in `rules`, in order; the first that fails is the error, its field
 // named block[index].name (no index when index < 0; the bare name when block is empty).
 [[nodiscard]] bool check_fields(const char* block, int index, const void* base,
@@ -185,155 +150,6 @@ struct FieldRule {
 [[nodiscard]] bool check_fields(const char* block, const void* base, std::span<const FieldRule> rules, Error& out) noexcept {
     return check_fields(block, -1, base, rules, out);
 }
-
-constexpr FieldRule kTimingRules[] = {
-    FEEL_FIELD(EffectParams, start_delay_us, kDelayUs),
-    FEEL_FIELD(EffectParams, gain, kGain),
-};
-
-constexpr FieldRule kEnvelopeRules[] = {
-    FEEL_FIELD(Envelope, impulse_level, kLevel),
-    FEEL_FIELD(Envelope, settle_time_us, kDelayUs),
-    FEEL_FIELD(Envelope, fade_level, kLevel),
-    FEEL_FIELD(Envelope, fade_time_us, kDelayUs),
-};
-
-constexpr FieldRule kConditionRules[] = {
-    FEEL_FIELD(ConditionBlock, pos_coefficient, kSignedLevel),
-    FEEL_FIELD(ConditionBlock, neg_coefficient, kSignedLevel),
-    FEEL_FIELD(ConditionBlock, offset, kSignedLevel),
-    FEEL_FIELD(ConditionBlock, pos_saturation, kLevel),
-    FEEL_FIELD(ConditionBlock, neg_saturation, kLevel),
-    FEEL_FIELD(ConditionBlock, deadband, kLevel),
-};
-
-constexpr FieldRule kTextureRules[] = {
-    FEEL_FIELD(TextureBlock, pos_roughness, kPositiveLevel),
-    FEEL_FIELD(TextureBlock, neg_roughness, kPositiveLevel),
-    FEEL_FIELD(TextureBlock, spacing, kPositiveLevel),
-    FEEL_FIELD(TextureBlock, density, kPositiveLevel),
-};
-
-// A wall's and a barrier's fields before their angle, and after it.
-constexpr FieldRule kWallRules[] = {
-    FEEL_FIELD(WallBlock, hardness, kSignedLevel),
-    FEEL_FIELD(WallBlock, sense, kWallSenseChoice),
-    FEEL_FIELD(WallBlock, offset, kSignedLevel),
-    FEEL_FIELD(WallBlock, offset_mode, kOffsetModeChoice),
-};
-
-constexpr FieldRule kWallSurfaceRules[] = {
-    FEEL_FIELD(WallBlock, surface_friction, kLevel),
-    FEEL_FIELD(WallBlock, surface_texture, kLevel),
-};
-
-constexpr FieldRule kBarrierRules[] = {
-    FEEL_FIELD(BarrierBlock, pos_hardness, kSignedLevel),
-    FEEL_FIELD(BarrierBlock, neg_hardness, kSignedLevel),
-    FEEL_FIELD(BarrierBlock, thickness, kPositiveLevel),
-    FEEL_FIELD(BarrierBlock, offset, kSignedLevel),
-    FEEL_FIELD(BarrierBlock, offset_mode, kOffsetModeChoice),
-};
-
-constexpr FieldRule kBarrierSurfaceRules[] = {
-    FEEL_FIELD(BarrierBlock, surface_friction, kLevel),
-    FEEL_FIELD(BarrierBlock, surface_texture, kLevel),
-};
-
-// §6.6.b: a periodic magnitude is 0..10000; §6.6.i: an advanced periodic (sweep) one is signed.
-constexpr FieldRule kPeriodicRules[] = {
-    FEEL_FIELD(PeriodicBlock, magnitude, kLevel),
-    FEEL_FIELD(PeriodicBlock, offset, kSignedLevel),
-    FEEL_FIELD(PeriodicBlock, period_us, kPeriodUs),
-    FEEL_FIELD(PeriodicBlock, phase, kAngle),
-};
-
-constexpr FieldRule kSweepRules[] = {
-    FEEL_FIELD(PeriodicBlock, magnitude, kSignedLevel),
-    FEEL_FIELD(PeriodicBlock, offset, kSignedLevel),
-    FEEL_FIELD(PeriodicBlock, period_us, kPeriodUs),
-    FEEL_FIELD(PeriodicBlock, phase, kAngle),
-    FEEL_FIELD(PeriodicBlock, sweep_start_angle, kAngle),
-    FEEL_FIELD(PeriodicBlock, sweep_end_angle, kAngle),
-    FEEL_FIELD(PeriodicBlock, sweep_sense, kSweepSenseChoice),
-};
-
-constexpr FieldRule kConstantRules[] = {FEEL_FIELD(ConstantBlock, magnitude, kSignedLevel)};
-
-constexpr FieldRule kRampRules[] = {
-    FEEL_FIELD(RampBlock, start, kSignedLevel),
-    FEEL_FIELD(RampBlock, end, kSignedLevel),
-};
-
-constexpr FieldRule kCustomRules[] = {
-    FEEL_FIELD(CustomBlock, channels, kChannels),
-    FEEL_FIELD(CustomBlock, sample_period_us, kPeriodUs),
-    FEEL_FIELD(CustomBlock, sample_count, kSampleCount),
-};
-
-// §8.4: each wrapper parameter has the range of the control-law parameter it maps to.
-constexpr FieldRule kRecoilRules[] = {
-    FEEL_FIELD(DynamicBlock, blast_direction, kAngle),
-    FEEL_FIELD(DynamicBlock, blast_intensity, kSignedLevel),
-    FEEL_FIELD(DynamicBlock, dynamic_mass, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, blast_resonance, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, blast_decay, kLevel),
-};
-
-constexpr FieldRule kImpactRules[] = {
-    FEEL_FIELD(DynamicBlock, impact_direction, kAngle),
-    FEEL_FIELD(DynamicBlock, impact_intensity, kSignedLevel),
-    FEEL_FIELD(DynamicBlock, dynamic_mass, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, elasticity, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, collision_absorption, kLevel),
-};
-
-constexpr FieldRule kLiquidRules[] = {
-    FEEL_FIELD(DynamicBlock, density, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, settle, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, viscosity, kLevel),
-};
-
-constexpr FieldRule kInertiaRules[] = {
-    FEEL_FIELD(DynamicBlock, inertia, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, play, kLevel),
-};
-
-constexpr FieldRule kCenterDriftRules[] = {
-    FEEL_FIELD(DynamicBlock, stiffness, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, drift_resistance, kLevel),
-};
-
-constexpr FieldRule kSlingRules[] = {
-    FEEL_FIELD(DynamicBlock, ball_mass, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, string_length, kLevel),
-    FEEL_FIELD(DynamicBlock, string_compliance, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, ball_damping, kLevel),
-};
-
-constexpr FieldRule kPaddleRules[] = {
-    FEEL_FIELD(DynamicBlock, ball_mass, kDynamicMass),
-    FEEL_FIELD(DynamicBlock, initial_velocity, kSignedLevel),
-    FEEL_FIELD(DynamicBlock, initial_velocity_direction, kAngle),
-    FEEL_FIELD(DynamicBlock, paddle_compliance, kDynamicStiffness),
-    FEEL_FIELD(DynamicBlock, paddle_damping, kLevel),
-    FEEL_FIELD(DynamicBlock, gravity, kSignedLevel),
-};
-
-constexpr FieldRule kControlLawRules[] = {
-    FEEL_FIELD(ControlLawBlock, mass, kDynamicMass),
-    FEEL_FIELD(ControlLawBlock, k_pos, kDynamicStiffness),
-    FEEL_FIELD(ControlLawBlock, k_neg, kDynamicStiffness),
-    FEEL_FIELD(ControlLawBlock, b, kLevel),
-    FEEL_FIELD(ControlLawBlock, vel_init, kSignedLevel),
-    FEEL_FIELD(ControlLawBlock, pos_init, kSignedLevel),
-    FEEL_FIELD(ControlLawBlock, half_cycles, kHalfCycles),
-    FEEL_FIELD(ControlLawBlock, length, kLevel),
-    FEEL_FIELD(ControlLawBlock, drag, kLevel),
-    FEEL_FIELD(ControlLawBlock, gravity, kSignedLevel),
-};
-
-#undef FEEL_FIELD
 
 // --- axes -------------------------------------------------------------------------------
 
