@@ -3,11 +3,28 @@
 // bristles start relaxed and take the handle's position at the first tick as their anchor.
 #pragma once
 
+#include <cstdint>
+
 #include "conditions/friction_model.hpp"
 #include "conditions/stop_guard.hpp"
 #include "feel/axis.hpp"
 
 namespace feel::detail {
+
+// What a friction block's law needs that changes only with its coefficients or the tick
+// period, worked out when one of them changes rather than every tick (issue 14: friction's
+// cost per effect).
+struct FrictionBlockLaw {
+    // The coefficients it was worked out for; INT32_MIN (out of their range): not yet.
+    int32_t pos_coefficient = INT32_MIN;
+    int32_t neg_coefficient = INT32_MIN;
+    float pos = 0.0f, neg = 0.0f;     // the coefficients as floats
+    float magnitude = 0.0f;           // f = max(|pos|, |neg|)
+    float stiffness = 0.0f;           // the presliding stiffness K (friction_model.hpp)
+    float inverse_presliding = 0.0f;  // K / f = 1/Z, 0 when f = 0
+    float damping = 0.0f;             // -K·kBristleDampingTime: the microdamping's σ1
+    GuardLimits limits{};             // the stop guard's (stop_guard.hpp)
+};
 
 struct FrictionState {
     // friction: one bristle per block, index i = the effect's i-th axis.
@@ -24,6 +41,8 @@ struct FrictionState {
     // 14: friction's cost per effect): the guards' gains (an exp), the presliding rule's
     // bounds 2b/T and the resolution cap, and the microdamping's 1/fade speed.
     StopGuardTick guard_tick{};
+    // friction: each block's law at this tick period (reset when it changes).
+    FrictionBlockLaw law[kMaxAxes] = {};
     float passive = 0.0f, cap = 0.0f, inverse_fade_speed = 0.0f;
     double tick_dt_s = -1.0;
 };
