@@ -51,7 +51,7 @@ void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s
     state.cap = static_cast<float>(rule.cap);
     state.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
     state.tick_dt_s = dt_s;
-    for (FrictionBlockLaw& law : state.law) law = FrictionBlockLaw{};
+    for (FrictionBlock& block : state.block) block.law = FrictionBlockLaw{};
 }
 
 // A block's law for its coefficients: presliding_stiffness in float, K = min(max(2b/T,
@@ -110,8 +110,9 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     for (int i = 0; i < blocks; ++i) {
         const int a = axis_index(p.axes[i]);
         const ConditionBlock& b = p.conditions[i];
-        Bristle& bristle = state.bristle[i];
-        FrictionBlockLaw& law = state.law[i];
+        FrictionBlock& block = state.block[i];
+        Bristle& bristle = block.bristle;
+        FrictionBlockLaw& law = block.law;
         if (law.pos_coefficient != b.pos_coefficient || law.neg_coefficient != b.neg_coefficient) {
             remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
         }
@@ -127,7 +128,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         float z = advance(bristle, position, surface_speed * dt_s, law.inverse_presliding);
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
         const float others = others_force != nullptr ? others_force[a]
-                             : applied_force != nullptr ? applied_force[a] - state.guard[i].own
+                             : applied_force != nullptr ? applied_force[a] - block.guard.own
                                                         : 0.0f;
         if (others_known) {
             const float pushed = others * inverse_gain;
@@ -136,10 +137,10 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
                 const bool slipping = z == 1.0f || z == -1.0f || held != bristle_force;
-                hold_with_others(bristle, bristle_force, held, slipping, state.others[i], pushed, pos, neg);
+                hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
                 z = bristle.deflection;
             }
-            state.others[i] = pushed;
+            block.others = pushed;
         }
         const bool toward_positive = z >= 0;
         float f = -(toward_positive ? pos : neg) * z;
@@ -157,7 +158,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         f = f > limit ? limit : (f < -limit ? -limit : f);
         if (guarding && still_surface && b.deadband == 0) {
             // A free handle coming to rest gets only what stops it (stop_guard.hpp).
-            StopGuard& g = state.guard[i];
+            StopGuard& g = block.guard;
             // The engine's observer of the axis, shared by every friction on it (issue 14).
             const float guarded =
                 observers != nullptr

@@ -26,23 +26,28 @@ struct FrictionBlockLaw {
     GuardLimits limits{};             // the stop guard's (stop_guard.hpp)
 };
 
-struct FrictionState {
-    // friction: one bristle per block, index i = the effect's i-th axis.
-    // texture: bristle 0 runs along the texture's line.
-    Bristle bristle[kMaxAxes] = {};
-    // friction: the stop guard of each block (stop_guard.hpp).
-    StopGuard guard[kMaxAxes] = {};
-    // The other effects' force along each block's line at the last tick (ConditionContext::
+// One block's memory, kept together (issue 14: one stride through the blocks).
+struct FrictionBlock {
+    // friction: the block's bristle; texture: block 0's runs along the texture's line.
+    Bristle bristle{};
+    // The block's stop guard (stop_guard.hpp).
+    StopGuard guard{};
+    // The other effects' force along the block's line at the last tick (ConditionContext::
     // others_force), what its stiction held against, in this effect's units (before its gain
     // and the device's): friction_condition.cpp's release.
-    float others[kMaxAxes] = {};
+    float others = 0.0f;
+    // friction: the block's law at this tick period (reset when it changes).
+    FrictionBlockLaw law{};
+};
+
+struct FrictionState {
+    // friction: index i = the effect's i-th axis; texture: block 0.
+    FrictionBlock block[kMaxAxes] = {};
     bool others_known = false;
     // What every block shares at this tick period, recomputed only when it changes (issue
     // 14: friction's cost per effect): the guards' gains (an exp), the presliding rule's
     // bounds 2b/T and the resolution cap, and the microdamping's 1/fade speed.
     StopGuardTick guard_tick{};
-    // friction: each block's law at this tick period (reset when it changes).
-    FrictionBlockLaw law[kMaxAxes] = {};
     float passive = 0.0f, cap = 0.0f, inverse_fade_speed = 0.0f;
     double tick_dt_s = -1.0;
 };

@@ -235,7 +235,7 @@ struct GuardLimits {
     // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
     // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
     // against it (the mechanism's dry friction is below that).
-    if (!g.sliding || g.hold_off > 0 || !o.settled || !limits.resists || o.abs_external > limits.free ||
+    if (!o.settled || o.abs_external > limits.free || !g.sliding || g.hold_off > 0 || !limits.resists ||
         o.external * g.direction > limits.along) {
         return force;
     }
