@@ -36,6 +36,7 @@ namespace {
 // 0 inside the deadband, 1 beyond twice the deadband, a smoothstep between.
 float deadband_gate(float relative_speed, float deadband) noexcept {
     if (!(deadband > 0)) return 1.0f;
+    if (std::fabs(relative_speed) <= deadband) return 0.0f;  // t <= 0 below, without its division
     const float t = (std::fabs(relative_speed) - deadband) / deadband;
     if (t <= 0) return 0.0f;
     if (t >= 1) return 1.0f;
@@ -132,11 +133,13 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
                                                         : 0.0f;
         if (others_known) {
             const float pushed = others * inverse_gain;
-            if (at_rest && (held_before || first) && law.limits.resists) {
+            // (pushed == block.others: the push did not change, hold_with_others does nothing.)
+            if (at_rest && pushed != block.others && (held_before || first) && law.limits.resists) {
                 const float bristle_force = -(z >= 0 ? pos : neg) * z;
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-                const bool slipping = z == 1.0f || z == -1.0f || held != bristle_force;
+                // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
+                const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
                 hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
                 z = bristle.deflection;
             }
