@@ -385,9 +385,16 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.curves = s.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);
-            for (int a = 0; a < axes; ++a) {
-                sum[a] += force[a] * s.gain_factor;
-                others[a] += force[a] * s.gain_factor * device_gain;
+            if (axes == 2) {  // the common device, unrolled
+                sum[0] += force[0] * s.gain_factor;
+                sum[1] += force[1] * s.gain_factor;
+                others[0] += force[0] * s.gain_factor * device_gain;
+                others[1] += force[1] * s.gain_factor * device_gain;
+            } else {
+                for (int a = 0; a < axes; ++a) {
+                    sum[a] += force[a] * s.gain_factor;
+                    others[a] += force[a] * s.gain_factor * device_gain;
+                }
             }
         }
     }

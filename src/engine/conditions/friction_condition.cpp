@@ -36,13 +36,15 @@ namespace {
 // 0 inside the deadband, 1 beyond twice the deadband, a smoothstep between.
 float deadband_gate(float relative_speed, float deadband) noexcept {
     if (!(deadband > 0)) return 1.0f;
+    if (std::fabs(relative_speed) <= deadband) return 0.0f;  // t <= 0 below, without its division
     const float t = (std::fabs(relative_speed) - deadband) / deadband;
     if (t <= 0) return 0.0f;
     if (t >= 1) return 1.0f;
     return t * t * (3.0f - 2.0f * t);
 }
 
-// What every block of a friction shares at tick period dt_s.
+// What every block of a friction shares at tick period dt_s; the blocks' laws are worked
+// out again at this period.
 void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s) noexcept {
     state.guard_tick = stop_guard_tick(config, dt_s);
     const PreslidingRule rule = presliding_rule(config, dt_s);
@@ -50,90 +52,123 @@ void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s
     state.cap = static_cast<float>(rule.cap);
     state.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
     state.tick_dt_s = dt_s;
+    for (FrictionBlock& block : state.block) block.law = FrictionBlockLaw{};
+}
+
+// A block's law for its coefficients: presliding_stiffness in float, K = min(max(2b/T,
+// f / kMaxPresliding), cap), Z = f/K.
+void remember_law(FrictionBlockLaw& law, const FrictionState& state, int32_t pos_coefficient,
+                  int32_t neg_coefficient) noexcept {
+    constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
+    law = FrictionBlockLaw{};
+    law.pos_coefficient = pos_coefficient;
+    law.neg_coefficient = neg_coefficient;
+    const float pos = static_cast<float>(pos_coefficient), neg = static_cast<float>(neg_coefficient);
+    law.pos = pos;
+    law.neg = neg;
+    // (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must be
+    // honoured, and nothing here is NaN.)
+    law.magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
+    if (law.magnitude > 0) {
+        const float guarded = law.magnitude * kMinStiffnessPerForce;
+        float stiffness = state.passive > guarded ? state.passive : guarded;
+        if (stiffness > state.cap) stiffness = state.cap;
+        law.stiffness = stiffness;
+        law.inverse_presliding = stiffness / law.magnitude;
+        law.damping = -stiffness * static_cast<float>(kBristleDampingTime);
+    }
+    law.limits = guard_limits(law.magnitude, pos, neg);
 }
 
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const EffectParams& p = *c.params;
-    const EngineConfig& config = *c.config;
-    // Single precision (issue 14); what is per tick rather than per block is computed once.
+    // Single precision (issue 14); what is per tick or per command rather than per block
+    // and tick is worked out once (remember_tick, remember_law), and the context is read
+    // once (the state's stores could alias it).
     FrictionState& state = c.state->friction;
-    if (state.tick_dt_s != c.dt_s) remember_tick(state, config, c.dt_s);
+    if (state.tick_dt_s != c.dt_s) remember_tick(state, *c.config, c.dt_s);
     const StopGuardTick& guard = state.guard_tick;
-    const float passive = state.passive, cap = state.cap, inverse_fade_speed = state.inverse_fade_speed;
-    const float velocity_ref = config.velocity_ref;
     const float dt_s = static_cast<float>(c.dt_s);
-    constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
+    const float velocity_ref = c.config->velocity_ref;
+    const float velocity_scale = c.velocity_scale;
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
+    const float* const position_of = c.position;
+    const float* const velocity_of = c.velocity;
+    const float* const others_force = c.others_force;
+    const float* const applied_force = c.applied_force;
+    const AxisObservers* const observers = c.observers;
     // The others' force is kept in this friction's units (before its gain and the device's),
     // so that a gain change, which scales the friction too, is not taken for a push easing.
-    const bool others_known = c.others_force != nullptr && output_gain != 0;
+    const bool others_known = others_force != nullptr && output_gain != 0;
     const float inverse_gain = others_known ? 1.0f / output_gain : 0.0f;
-    for (int i = 0; i < p.axis_count; ++i) {
-        const int a = device_axis(c, i);
+    const bool held_before = state.others_known;
+    // The stop guard's preconditions that hold for every block of this tick.
+    const bool guarding = guard.on && applied_force != nullptr;
+    const bool damping_on = dt_s > 0;
+    const int blocks = p.axis_count;
+    for (int i = 0; i < blocks; ++i) {
+        const int a = axis_index(p.axes[i]);
         const ConditionBlock& b = p.conditions[i];
-        Bristle& bristle = state.bristle[i];
-        const float position = c.position[a];
-        const float pos = static_cast<float>(b.pos_coefficient), neg = static_cast<float>(b.neg_coefficient);
-        // (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must
-        // be honoured, and nothing here is NaN.)
-        const float magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
-        // presliding_stiffness in float: K = min(max(2b/T, f / kMaxPresliding), cap), Z = f/K.
-        float stiffness = 0.0f, inverse_presliding = 0.0f;
-        if (magnitude > 0) {
-            const float guarded = magnitude * kMinStiffnessPerForce;
-            stiffness = passive > guarded ? passive : guarded;
-            if (stiffness > cap) stiffness = cap;
-            inverse_presliding = stiffness / magnitude;
+        FrictionBlock& block = state.block[i];
+        Bristle& bristle = block.bristle;
+        FrictionBlockLaw& law = block.law;
+        if (law.pos_coefficient != b.pos_coefficient || law.neg_coefficient != b.neg_coefficient) {
+            remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
         }
+        const float position = position_of[a];
+        const float pos = law.pos, neg = law.neg;
+        const bool still_surface = b.offset == 0;
         const float surface_speed =
-            b.offset == 0 ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
+            still_surface ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
         // At its first tick the friction has held nothing yet (its state is zeroed at start):
         // it takes the other effects' push at once from there.
         const bool first = !bristle.primed;
-        const bool at_rest = (first || position == bristle.anchor) && b.offset == 0;
-        float z = advance(bristle, position, surface_speed * dt_s, inverse_presliding);
+        const bool at_rest = (first || position == bristle.anchor) && still_surface;
+        float z = advance(bristle, position, surface_speed * dt_s, law.inverse_presliding);
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
-        const float others = c.others_force != nullptr ? c.others_force[a] : c.applied_force != nullptr
-                                                                    ? c.applied_force[a] - state.guard[i].own
-                                                                    : 0.0f;
+        const float others = others_force != nullptr ? others_force[a]
+                             : applied_force != nullptr ? applied_force[a] - block.guard.own
+                                                        : 0.0f;
         if (others_known) {
             const float pushed = others * inverse_gain;
-            if (at_rest && (state.others_known || first) && pos >= 0 && neg >= 0) {
+            // (pushed == block.others: the push did not change, hold_with_others does nothing.)
+            if (at_rest && pushed != block.others && (held_before || first) && law.limits.resists) {
                 const float bristle_force = -(z >= 0 ? pos : neg) * z;
                 const float limit = z >= 0 ? pos_limit : neg_limit;
                 const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-                const bool slipping = z == 1.0f || z == -1.0f || held != bristle_force;
-                hold_with_others(bristle, bristle_force, held, slipping, state.others[i], pushed, pos, neg);
+                // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
+                const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
+                hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
                 z = bristle.deflection;
             }
-            state.others[i] = pushed;
+            block.others = pushed;
         }
-        const float relative_velocity = c.velocity[a] - surface_speed;
         const bool toward_positive = z >= 0;
         float f = -(toward_positive ? pos : neg) * z;
-        if (inverse_presliding > 0 && dt_s > 0) {
+        const bool on_axis = observers != nullptr && still_surface;
+        if (law.inverse_presliding > 0 && damping_on) {
             // The fade depends on the axis' velocity alone: the engine's, once per axis (issue 14).
-            f += c.observers != nullptr && b.offset == 0
-                     ? bristle_damping_faded(stiffness, z, relative_velocity, c.observers->fade[a])
-                     : bristle_damping(stiffness, z, relative_velocity, inverse_fade_speed);
+            f += on_axis ? bristle_damping_faded(law.damping, z, observers->damped_velocity[a],
+                                                 observers->damped_way[a], observers->fade[a])
+                         : bristle_damping(law.stiffness, z, velocity_of[a] - surface_speed, state.inverse_fade_speed);
         }
         if (b.deadband > 0) {
-            f *= deadband_gate(relative_velocity * c.velocity_scale, static_cast<float>(b.deadband));
+            f *= deadband_gate((velocity_of[a] - surface_speed) * velocity_scale, static_cast<float>(b.deadband));
         }
         const float limit = toward_positive ? pos_limit : neg_limit;
         f = f > limit ? limit : (f < -limit ? -limit : f);
-        if (guard.on && c.applied_force != nullptr && b.offset == 0 && b.deadband == 0) {
+        if (guarding && still_surface && b.deadband == 0) {
             // A free handle coming to rest gets only what stops it (stop_guard.hpp).
-            StopGuard& g = state.guard[i];
+            StopGuard& g = block.guard;
             // The engine's observer of the axis, shared by every friction on it (issue 14).
-            const float guarded = c.observers != nullptr
-                                      ? guard_stop(g, c.observers->axis[a], c.observers->observed[a], bristle, guard,
-                                                   position, others, f, magnitude, pos, neg)
-                                      : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others,
-                                                           f, magnitude, pos, neg);
-            const float side = guarded >= 0 ? static_cast<float>(b.neg_saturation) : pos_limit;
+            const float guarded =
+                observers != nullptr
+                    ? guard_stop(g, observers->view[a], bristle, guard, position, others, f, law.limits, pos, neg)
+                    : guard_stop_on_line(g, bristle, guard, position, applied_force[a], others, f, law.magnitude,
+                                         pos, neg);
+            const float side = guarded >= 0 ? neg_limit : pos_limit;
             f = guarded > side ? side : (guarded < -side ? -side : guarded);
             remember_output(g, f, output_gain);
         }

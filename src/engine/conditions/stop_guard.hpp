@@ -61,6 +61,7 @@
 // of a device axis is the engine's, shared by every friction on it (AxisObservers).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "conditions/friction_model.hpp"
@@ -108,6 +109,7 @@ struct StopGuardTick {
     float min_speed = 0.0f;  // the observer's velocity noise: h·count/T
     float count = 0.0f;
     float fast_speed = 0.0f; // 2 counts over the observer's time constant: its prediction has bite
+    float quick_stop = 0.0f; // 2·fast_speed: how much a free stop may have slowed the handle since
     int32_t hold_off = 0;
     int32_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
     bool on = false;         // device_mass known and a tick to observe over
@@ -120,16 +122,47 @@ struct StopGuardTick {
 // tick and after a non-finite input or state, when it starts afresh).
 [[nodiscard]] bool observe(HandleObserver& o, const StopGuardTick& t, float position, float applied) noexcept;
 
+// What the guard reads of a line's observer at this tick: the tests on the observer alone,
+// made once per line (for a device axis once for every friction on it, issue 14).
+struct ObserverView {
+    float velocity = 0.0f;
+    float external = 0.0f;
+    float abs_external = 0.0f;
+    float direction = 0.0f;  // the way the observer moves: +1 (v > 0) or -1
+    bool usable = false;     // the guard is on and observe() had a state to judge by
+    bool moving = false;     // |v| >= min_speed: faster than the observer's noise
+    bool fast = false;       // |v| >= fast_speed
+    bool settled = false;    // it agreed with the sensor for τ
+};
+
+[[nodiscard]] inline ObserverView view_of(const HandleObserver& o, bool observed, const StopGuardTick& t) noexcept {
+    ObserverView view;
+    view.usable = t.on && observed;
+    view.velocity = o.velocity;
+    view.external = o.external;
+    view.abs_external = std::fabs(o.external);
+    const float speed = std::fabs(o.velocity);
+    view.direction = o.velocity > 0 ? 1.0f : -1.0f;
+    view.moving = speed >= t.min_speed;
+    view.fast = speed >= t.fast_speed;
+    view.settled = o.agreed >= t.settle;
+    return view;
+}
+
 // The engine's observers, one per device axis, shared by every friction on the axis (issue
 // 14: the observer is most of the guard's cost, and every friction on an axis sees the same
 // handle and the same engine force). Advanced once a tick before the frictions render;
 // observe_axes restarts them when the previous tick was not observed (no friction played).
 struct AxisObservers {
     HandleObserver axis[kMaxAxes] = {};
-    bool observed[kMaxAxes] = {};  // observe()'s answer at this tick
-    // The bristles' microdamping fade exp(-(v/v_d)²) at the axis' estimated velocity, shared
-    // by every friction without a velocity offset (friction_model.hpp, bristle_damping).
+    ObserverView view[kMaxAxes] = {};  // what the guards read of axis[] at this tick
+    // The bristles' microdamping at the axis' estimated velocity v, shared by every friction
+    // without a velocity offset (friction_model.hpp, bristle_damping): the fade
+    // exp(-(v/v_d)²), 0 where there is nothing to damp (v = 0 or not finite) or beyond the
+    // cutoff; v where the fade is not 0, else 0; and its way, +1 (> 0) or -1.
     float fade[kMaxAxes] = {};
+    float damped_velocity[kMaxAxes] = {};
+    float damped_way[kMaxAxes] = {};
     float inverse_fade_speed = 0.0f;
     StopGuardTick tick{};
     double tick_dt_s = -1.0;
@@ -142,23 +175,99 @@ void observe_axes(AxisObservers& observers, const EngineConfig& config, double d
                   int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
                   int axes) noexcept;
 
-// One block's friction along its line, with `o` the observer of that line after this tick's
-// observe() (`observed` its answer): `position` sensed, `others` the other effects' force
-// this tick (ConditionContext::others_force; without it, the last tick's: applied less this
-// friction's share), `force` the friction about to be applied (after its saturation), `f`
-// its magnitude. Returns `force`, or the force that brings the handle to rest. May set the
+// Sets the bristle to hold against `others` (within ±1) and returns that force.
+inline float hold_against(Bristle& bristle, float others, float pos_coefficient, float neg_coefficient) noexcept {
+    return set_bristle_force(bristle, -others, pos_coefficient, neg_coefficient);
+}
+
+// What the guard compares with for a friction of magnitude f and these coefficients.
+struct GuardLimits {
+    float f = 0.0f;       // the most the stop may apply
+    float free = 0.0f;    // kStopGuardFreeFraction·f: the most that may hold a free handle
+    float along = 0.0f;   // kStopGuardAlongFraction·f: the most that may push it along its motion
+    bool resists = false; // both coefficients >= 0 (a negative one pushes along the motion: no guard)
+};
+
+[[nodiscard]] inline GuardLimits guard_limits(float f, float pos_coefficient, float neg_coefficient) noexcept {
+    return {f, kStopGuardFreeFraction * f, kStopGuardAlongFraction * f, pos_coefficient >= 0 && neg_coefficient >= 0};
+}
+
+// One block's friction along its line, with `o` what the guard reads of the line's observer
+// after this tick's observe(): `position` sensed, `others` the other effects' force this tick
+// (ConditionContext::others_force; without it, the last tick's: applied less this
+// friction's share), `force` the friction about to be applied (after its saturation), `limits`
+// those of its magnitude. Returns `force`, or the force that brings the handle to rest. May set the
 // bristle's deflection (after a stop). Call remember_output with what was finally applied.
-[[nodiscard]] float guard_stop(StopGuard& g, const HandleObserver& o, bool observed, Bristle& bristle,
-                               const StopGuardTick& t, float position, float others, float force, float f,
-                               float pos_coefficient, float neg_coefficient) noexcept;
+// Inline: it runs for every block of every friction, and most ticks it returns `force` after
+// a few tests (issue 14: friction's cost per effect).
+[[nodiscard, gnu::always_inline]] inline float guard_stop(StopGuard& g, const ObserverView& o, Bristle& bristle, const StopGuardTick& t,
+                                      float position, float others, float force, const GuardLimits& limits,
+                                      float pos_coefficient, float neg_coefficient) noexcept {
+    if (!o.usable || !std::isfinite(others)) return force;
+    if (g.hold_off > 0) --g.hold_off;
+    if (g.stopping) {
+        g.stopping = false;
+        g.sliding = false;
+        if (std::fabs(position - g.stop_at) < t.count) {
+            // At rest: the bristle, anchored here, holds against the other effects (nothing
+            // for a free handle).
+            return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+        }
+        if ((position - g.stop_at) * g.direction < 0) {
+            // It went back: the stop overshot (the observer's velocity within its noise of a
+            // slow handle). Friction may not push it on: anchor here, holding the others.
+            g.direction = -g.direction;
+            return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+        }
+        g.hold_off = t.hold_off;  // it went on: a push the observer has not learned yet
+    }
+    if (o.moving) {
+        g.sliding = true;
+        g.direction = o.direction;
+    }
+    // A free stop is quick: the handle slid faster than fast_speed (2 counts over τ, where
+    // the observer's prediction can be refuted by the sensor) no longer ago than the
+    // friction's force alone could have stopped it. A hand dragging the handle slower than
+    // that, whose travel the sensor cannot tell from the observer's prediction of a stop,
+    // is left to the bristle.
+    g.decelerated = o.fast ? 0.0f : g.decelerated + std::fabs(force) * t.dt_per_mass;
+    if (!(g.decelerated <= t.quick_stop)) return force;
+    // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
+    // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
+    // against it (the mechanism's dry friction is below that).
+    if (!o.settled || o.abs_external > limits.free || !g.sliding || g.hold_off > 0 || !limits.resists ||
+        o.external * g.direction > limits.along) {
+        return force;
+    }
+    if (force * g.direction > 0 && (force + others) * g.direction > limits.free) {
+        // The bristle pushes the free handle along its motion: it gives back what a push
+        // stored in it. Friction only resists: the anchor follows the handle, and the bristle
+        // holds no more than what the other effects push with.
+        return hold_against(bristle, others, pos_coefficient, neg_coefficient);
+    }
+    if (!(force * g.direction < 0)) return force;
+    const float v = o.velocity;
+    const float v_next = v + (force + others + o.external - t.damping * v) * t.dt_per_mass;
+    if (v_next * g.direction > 0) return force;  // still sliding at the tick's end
+    // It comes to rest within the tick (or already has): apply what stops it there.
+    float stop = -t.mass * v * t.inverse_dt - others - o.external + t.damping * v;
+    const float f = limits.f;
+    stop = stop > f ? f : (stop < -f ? -f : stop);
+    // Friction only resists: where the force on the handle besides the engine's (the
+    // mechanism's dry friction) stops it by itself, it gets no push along its motion.
+    if (stop * g.direction > 0) stop = 0.0f;
+    g.stopping = true;
+    g.stop_at = position + 0.5f * v * t.dt;
+    return stop;
+}
 
 // The same on a line that is not a device axis, with the block's own observer.
 [[nodiscard]] inline float guard_stop_on_line(StopGuard& g, Bristle& bristle, const StopGuardTick& t,
                                               float position, float applied, float others, float force, float f,
                                               float pos_coefficient, float neg_coefficient) noexcept {
     const bool observed = t.on && observe(g.observer, t, position, applied);
-    return guard_stop(g, g.observer, observed, bristle, t, position, others, force, f, pos_coefficient,
-                      neg_coefficient);
+    return guard_stop(g, view_of(g.observer, observed, t), bristle, t, position, others, force,
+                      guard_limits(f, pos_coefficient, neg_coefficient), pos_coefficient, neg_coefficient);
 }
 
 // The friction's share of the engine's force this tick: its force times the effect's and

@@ -56,7 +56,8 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const float pos = static_cast<float>(t.pos_roughness), neg = static_cast<float>(t.neg_roughness);
     const float roughness = pos > neg ? pos : neg;
     const float presliding = static_cast<float>(presliding_distance(*c.config, c.dt_s, roughness));
-    Bristle& bristle = state.bristle[0];
+    FrictionBlock& block = state.block[0];
+    Bristle& bristle = block.bristle;
     const bool first = !bristle.primed;  // nothing held yet: take the others' push from here
     const bool at_rest = first || s == bristle.anchor;
     float z = advance(bristle, s, 0.0f, presliding > 0 ? 1.0f / presliding : 0.0f);
@@ -70,12 +71,12 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
         if (at_rest && (state.others_known || first)) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
             if (bump > 0) {
-                hold_with_others(bristle, held, held, z == 1.0f || z == -1.0f, state.others[0], pushed, pos * bump,
+                hold_with_others(bristle, held, held, z == 1.0f || z == -1.0f, block.others, pushed, pos * bump,
                                  neg * bump);
             }
             z = bristle.deflection;
         }
-        state.others[0] = pushed;
+        block.others = pushed;
     }
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
@@ -91,8 +92,8 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
         }
         if (state.guard_tick.on) {
             const float others = c.others_force != nullptr ? along(u, c.others_force)
-                                                            : along(u, c.applied_force) - state.guard[0].own;
-            StopGuard& g = state.guard[0];
+                                                            : along(u, c.applied_force) - block.guard.own;
+            StopGuard& g = block.guard;
             f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit,
                                    pos * bump, neg * bump);
             f = f > limit ? limit : (f < -limit ? -limit : f);
