@@ -320,14 +320,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         float force[kMaxAxes] = {};
         const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {
-            // Dynamics integrate their masses in double (docs/stability.md, "Where double
-            // remains"); their force is converted once here.
+            // A dynamic adds its force in float; the balls, which integrate in double
+            // (docs/stability.md, "Where double remains"), round theirs once.
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
-            double dynamic_force[kMaxAxes] = {};
-            detail::render_dynamic(dynamic, dynamic_force, result);
-            for (int a = 0; a < axes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
+            detail::render_dynamic(dynamic, force, result);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;

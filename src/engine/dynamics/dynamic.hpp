@@ -5,6 +5,8 @@
 // across ticks), adds the tether's reaction on the handle to force[] (±10000 units, physical
 // sign, before effect and device gain), and tells the engine where its mass is and whether
 // it has ended (DynamicResult). The engine turns that into interim and final reports.
+// force[] is float, as the engine sums it; the balls work in double and render_dynamic rounds
+// their force once (their tests hold the models' double exactly).
 //
 // Every named dynamic maps onto the control law (§8.4), except the sling and the paddle,
 // which are true 2D models (§5.8, §5.9). One file per model; dynamic.cpp dispatches.
@@ -55,10 +57,10 @@ struct DynamicResult {
     float mass_velocity[kMaxAxes] = {};  // per DEVICE axis: mass minus handle, position units/s
 };
 
-void render_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void render_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 
 // The models, one file each.
-void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
 void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
 
