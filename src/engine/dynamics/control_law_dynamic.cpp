@@ -112,6 +112,14 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
                                               float inverse_step, float hysteresis, float& pull) noexcept {
     const float u = (handle - last_position) * inverse_step;
     const float weight = law.mass * law.gravity;
+    if (now.stretch == 0 && now.velocity == 0 && u == 0 && last_velocity == 0 && handle_velocity == 0 &&
+        weight == 0) {
+        // A mass at rest on a still handle with nothing pulling it: both propagators map
+        // (0, 0) to (0, 0) exactly and the impulse is 0 (a settled recoil, liquid or drift at
+        // rest: flush_subnormal brings a settling mass to exactly 0). The handle is where it was.
+        pull = 0;
+        return;
+    }
     // Catch up along the sensed line, the damper reading last tick's estimate.
     float s = now.stretch;
     float rate = now.velocity - u;
@@ -132,6 +140,24 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     last_velocity = handle_velocity;
 }
 
+// A tick of an effect whose laws are all plain, once it catches up: its own loop, so that
+// none of the general loop's state is kept alive across it.
+[[gnu::noinline]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
+                                  float force[kMaxAxes], DynamicResult& result) noexcept {
+    const EffectParams& p = *c.params;
+    for (int i = 0; i < p.axis_count; ++i) {
+        const int a = axis_index(p.axes[i]);
+        const float handle_velocity = c.velocity[a];
+        float pull;
+        plain_axis(st.laws[i], st.now[i], st.handle_position[i], st.handle_velocity[i], c.position[a], handle_velocity,
+                   inverse_step, hysteresis, pull);
+        force[a] += std::isfinite(pull) ? pull : 0.0f;
+        // The acceleration is read only in the handle's frame: a plain law keeps none.
+        result.mass_position[a] = st.now[i].stretch;
+        result.mass_velocity[a] = st.now[i].velocity - handle_velocity;
+    }
+}
+
 }  // namespace
 
 void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
@@ -141,7 +167,11 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     if (!c.state->prepared) {
         TetherLaw laws[kMaxAxes];
         tether_laws(p, *c.config, laws);
-        for (int i = 0; i < n; ++i) st.laws[i] = prepare_tether(laws[i]);
+        c.state->plain = true;
+        for (int i = 0; i < n; ++i) {
+            st.laws[i] = prepare_tether(laws[i]);
+            c.state->plain = c.state->plain && st.laws[i].plain;
+        }
         c.state->prepared = true;
     }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
@@ -157,22 +187,16 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     const bool fresh = !c.state->initialized || !(step > 0);
     const bool catch_up = c.state->initialized && step > 0;
     const float inverse_step = step > 0 ? static_cast<float>(1.0 / step) : 0.0f;
+    if (catch_up && c.state->plain) {
+        plain_tick(c, st, inverse_step, hysteresis, force, result);
+        return;
+    }
     // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
     for (int i = 0; i < n; ++i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
         const float handle = c.position[a];
         const float handle_velocity = c.velocity[a];
-        if (law.plain && catch_up) {
-            float pull;
-            plain_axis(law, st.now[i], st.handle_position[i], st.handle_velocity[i], handle, handle_velocity,
-                       inverse_step, hysteresis, pull);
-            force[a] += std::isfinite(pull) ? pull : 0.0f;
-            // The acceleration is read only in the handle's frame: a plain law keeps none.
-            result.mass_position[a] = st.now[i].stretch;
-            result.mass_velocity[a] = st.now[i].velocity - handle_velocity;
-            continue;
-        }
         const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
         // The velocity the mass's own is seen from: the handle's, unless simulated in its frame.
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;

@@ -28,6 +28,9 @@ struct DynamicState {
     // The slot's parameters are worked into its per-tick form (ControlLawState::laws);
     // prepare_slot clears it after every command that sets them.
     bool prepared = false;
+    // Every axis's law is plain (PreparedTether::plain), set with prepared: the tick takes
+    // the short way (control_law_dynamic.cpp).
+    bool plain = false;
     // The simulated mass: a control law's or a ball's, never both (the type of a slot's
     // effect never changes), so they share the bytes (issue 14: RAM). The control law's is
     // live from construction; ball_tick assigns the ball's whole on a ball's first tick.
