@@ -142,7 +142,7 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
 
 // A tick of an effect whose laws are all plain, once it catches up: its own loop, so that
 // none of the general loop's state is kept alive across it.
-[[gnu::noinline]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
+[[gnu::noinline, maybe_unused]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
                                   float force[kMaxAxes], DynamicResult& result) noexcept {
     const EffectParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
@@ -180,17 +180,24 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     const double step = c.dt_s;  // the catch-up's, and the prediction's: the next tick as long
     if (step > 0) {
         for (int i = 0; i < n; ++i) {
-            if (st.laws[i].step_s != step) prepare_pieces(st.laws[i], step);
+            if (st.laws[i].step_s != step) {
+                prepare_pieces(st.laws[i], step);
+                c.state->inverse_step = static_cast<float>(1.0 / step);
+            }
         }
     }
 
     const bool fresh = !c.state->initialized || !(step > 0);
     const bool catch_up = c.state->initialized && step > 0;
-    const float inverse_step = step > 0 ? static_cast<float>(1.0 / step) : 0.0f;
+    const float inverse_step = step > 0 ? c.state->inverse_step : 0.0f;
+#if !defined(__OPTIMIZE_SIZE__)
+    // Not in a build for size (the Cortex-M4F image, whose flash is the tighter budget): the
+    // general loop below does the same operations.
     if (catch_up && c.state->plain) {
         plain_tick(c, st, inverse_step, hysteresis, force, result);
         return;
     }
+#endif
     // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
     for (int i = 0; i < n; ++i) {
         const PreparedTether& law = st.laws[i];

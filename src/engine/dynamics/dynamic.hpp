@@ -31,6 +31,9 @@ struct DynamicState {
     // Every axis's law is plain (PreparedTether::plain), set with prepared: the tick takes
     // the short way (control_law_dynamic.cpp).
     bool plain = false;
+    // 1/step of the tick length the laws are prepared for (PreparedTether::step_s), set with
+    // them: a double division a tick less, in the padding before the union.
+    float inverse_step = 0;
     // The simulated mass: a control law's or a ball's, never both (the type of a slot's
     // effect never changes), so they share the bytes (issue 14: RAM). The control law's is
     // live from construction; ball_tick assigns the ball's whole on a ball's first tick.
