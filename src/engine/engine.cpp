@@ -221,9 +221,9 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
     // (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
     bool inertia_plays = false;
-    for (int32_t i = 0; i < m.slot_end; ++i) {
+    for (int32_t i = 0; i < m.slot_end && !inertia_plays; ++i) {
         const Slot& s = m.slots[i];
-        inertia_plays |= s.reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
+        inertia_plays = s.reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
     }
     m.motion.update(in.t_us, in.position, axes, inertia_plays);
     float velocity[kMaxAxes] = {};
@@ -313,21 +313,25 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             } else {
                 for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
             }
-            if (oscillates(s.params.type))
-                for (int a = 0; a < axes; ++a) vibration[a] += value * s.direction_gain[a];
+            if (oscillates(s.params.type)) {
+                if (axes == 2) {
+                    vibration[0] += value * s.direction_gain[0];
+                    vibration[1] += value * s.direction_gain[1];
+                } else {
+                    for (int a = 0; a < axes; ++a) vibration[a] += value * s.direction_gain[a];
+                }
+            }
             continue;
         }
         float force[kMaxAxes] = {};
         const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {
-            // Dynamics integrate their masses in double (docs/stability.md, "Where double
-            // remains"); their force is converted once here.
+            // A dynamic adds its force in float; the balls, which integrate in double
+            // (docs/stability.md, "Where double remains"), round theirs once.
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
-            double dynamic_force[kMaxAxes] = {};
-            detail::render_dynamic(dynamic, dynamic_force, result);
-            for (int a = 0; a < axes; ++a) force[a] = static_cast<float>(dynamic_force[a]);
+            detail::render_dynamic(dynamic, force, result);
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;

@@ -55,9 +55,11 @@ struct BallHandlePath {
 //       the string or paddle gave it (force units·s, per device axis);
 //   void reaction(const BallMotion&, const DynamicContext&, double force[kMaxAxes]): the
 //       instantaneous force on the handle (the engine's first tick only).
-// Adds the force on the handle to force[].
+// Adds the force on the handle to force[], on the device axes the model moves in (axes[0 ..
+// count-1]): the handle's other axes never reach the model, so the tick reads and divides
+// only these (a double division each, and the other axes' force is 0 either way).
 template <typename Model>
-void ball_tick(const Model& model, const DynamicContext& c, double force[kMaxAxes]) noexcept {
+void ball_tick(const Model& model, const int* axes, int count, const DynamicContext& c, double force[kMaxAxes]) noexcept {
     BallState& ball = c.state->ball;
     const bool fresh = !c.state->initialized || !(c.dt_s > 0);  // no line through two positions yet
     const double step = std::min(c.dt_s, kBallMaxAdvanceS);     // how far the ball advances
@@ -67,7 +69,8 @@ void ball_tick(const Model& model, const DynamicContext& c, double force[kMaxAxe
         c.state->initialized = true;
     } else if (c.dt_s > 0) {
         BallHandlePath seen;
-        for (int a = 0; a < kMaxAxes; ++a) {
+        for (int i = 0; i < count; ++i) {
+            const int a = axes[i];
             seen.from[a] = ball.handle[a];
             seen.velocity[a] = (c.position[a] - ball.handle[a]) / step;
             seen.damper_velocity[a] = ball.handle_velocity[a];
@@ -77,7 +80,8 @@ void ball_tick(const Model& model, const DynamicContext& c, double force[kMaxAxe
     }
 
     BallHandlePath expected;
-    for (int a = 0; a < kMaxAxes; ++a) {
+    for (int i = 0; i < count; ++i) {
+        const int a = axes[i];
         expected.from[a] = c.position[a];
         expected.velocity[a] = fresh ? c.velocity[a] : (c.position[a] - ball.handle[a]) / c.dt_s;
         expected.damper_velocity[a] = c.velocity[a];
@@ -88,7 +92,8 @@ void ball_tick(const Model& model, const DynamicContext& c, double force[kMaxAxe
         BallMotion ahead = ball.now;
         double impulse[kMaxAxes] = {};
         model.advance(ahead, expected, step, impulse);
-        for (int a = 0; a < kMaxAxes; ++a) {
+        for (int i = 0; i < count; ++i) {
+            const int a = axes[i];
             const double pull = -impulse[a] / step;
             force[a] += std::isfinite(pull) ? pull : 0.0;
         }

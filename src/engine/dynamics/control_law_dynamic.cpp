@@ -101,16 +101,77 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     return law.handle_frame ? law.gravity - acceleration : law.gravity;
 }
 
+// One axis of a plain law (PreparedTether::plain: one region, nothing counted, the fixed
+// frame) on a tick that catches up: the general loop below with every branch it does not
+// take removed, the same operations in the same order, so the same bits. The handle's line
+// since the last tick serves the catch-up and the prediction alike; most laws are plain
+// (recoil, impact, liquid, center drift), and the general loop's bookkeeping cost them
+// twice what their two propagators do.
+[[gnu::always_inline]] inline void plain_axis(const PreparedTether& law, TetherAxisState& now, float& last_position,
+                                              float& last_velocity, float handle, float handle_velocity,
+                                              float inverse_step, float hysteresis, float& pull) noexcept {
+    const float u = (handle - last_position) * inverse_step;
+    const float weight = law.mass * law.gravity;
+    if (now.stretch == 0 && now.velocity == 0 && u == 0 && last_velocity == 0 && handle_velocity == 0 &&
+        weight == 0) {
+        // A mass at rest on a still handle with nothing pulling it: both propagators map
+        // (0, 0) to (0, 0) exactly and the impulse is 0 (a settled recoil, liquid or drift at
+        // rest: flush_subnormal brings a settling mass to exactly 0). The handle is where it was.
+        pull = 0;
+        return;
+    }
+    // Catch up along the sensed line, the damper reading last tick's estimate.
+    float s = now.stretch;
+    float rate = now.velocity - u;
+    propagate(law.above, weight - law.drag * u - law.b * (u - last_velocity), s, rate);
+    now.stretch = s;
+    now.velocity = rate + u;
+    flush_subnormal(now);
+    if (!finite(now)) now = initial_state(law, handle_velocity, hysteresis);  // never expected
+    // Predict along the same line, the damper reading this tick's estimate.
+    const float s0 = now.stretch;
+    const float rate0 = now.velocity - u;
+    s = s0;
+    rate = rate0;
+    propagate(law.above, weight - law.drag * u - law.b * (u - handle_velocity), s, rate);
+    const float h = static_cast<float>(law.step_s);
+    pull = -(law.mass * (rate - rate0) - weight * h + law.drag * ((s - s0) + u * h)) * inverse_step;
+    last_position = handle;
+    last_velocity = handle_velocity;
+}
+
+// A tick of an effect whose laws are all plain, once it catches up: its own loop, so that
+// none of the general loop's state is kept alive across it.
+[[gnu::noinline, maybe_unused]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
+                                  float force[kMaxAxes], DynamicResult& result) noexcept {
+    const EffectParams& p = *c.params;
+    for (int i = 0; i < p.axis_count; ++i) {
+        const int a = axis_index(p.axes[i]);
+        const float handle_velocity = c.velocity[a];
+        float pull;
+        plain_axis(st.laws[i], st.now[i], st.handle_position[i], st.handle_velocity[i], c.position[a], handle_velocity,
+                   inverse_step, hysteresis, pull);
+        force[a] += std::isfinite(pull) ? pull : 0.0f;
+        // The acceleration is read only in the handle's frame: a plain law keeps none.
+        result.mass_position[a] = st.now[i].stretch;
+        result.mass_velocity[a] = st.now[i].velocity - handle_velocity;
+    }
+}
+
 }  // namespace
 
-void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
+void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
     const EffectParams& p = *c.params;
     ControlLawState& st = c.state->law;
     const int32_t n = p.axis_count;
     if (!c.state->prepared) {
         TetherLaw laws[kMaxAxes];
         tether_laws(p, *c.config, laws);
-        for (int i = 0; i < n; ++i) st.laws[i] = prepare_tether(laws[i]);
+        c.state->plain = true;
+        for (int i = 0; i < n; ++i) {
+            st.laws[i] = prepare_tether(laws[i]);
+            c.state->plain = c.state->plain && st.laws[i].plain;
+        }
         c.state->prepared = true;
     }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
@@ -119,13 +180,24 @@ void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], Dynami
     const double step = c.dt_s;  // the catch-up's, and the prediction's: the next tick as long
     if (step > 0) {
         for (int i = 0; i < n; ++i) {
-            if (st.laws[i].step_s != step) prepare_pieces(st.laws[i], step);
+            if (st.laws[i].step_s != step) {
+                prepare_pieces(st.laws[i], step);
+                c.state->inverse_step = static_cast<float>(1.0 / step);
+            }
         }
     }
 
     const bool fresh = !c.state->initialized || !(step > 0);
     const bool catch_up = c.state->initialized && step > 0;
-    const float inverse_step = step > 0 ? static_cast<float>(1.0 / step) : 0.0f;
+    const float inverse_step = step > 0 ? c.state->inverse_step : 0.0f;
+#if !defined(__OPTIMIZE_SIZE__)
+    // Not in a build for size (the Cortex-M4F image, whose flash is the tighter budget): the
+    // general loop below does the same operations.
+    if (catch_up && c.state->plain) {
+        plain_tick(c, st, inverse_step, hysteresis, force, result);
+        return;
+    }
+#endif
     // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
     for (int i = 0; i < n; ++i) {
         const PreparedTether& law = st.laws[i];

@@ -37,6 +37,10 @@ struct PreparedTether {
     int32_t half_cycles = 0;
     bool handle_frame = false;
     bool piecewise = false;  // free play, or k_pos != k_neg: regions must be tracked
+    // One region, nothing counted, in the fixed frame (recoil, impact, liquid, center
+    // drift): a tick is two propagators (control_law_dynamic.cpp's plain_tick). It fills
+    // the padding after the flags above.
+    bool plain = false;
     TetherPropagator below{}, slack{}, above{};
 };
 

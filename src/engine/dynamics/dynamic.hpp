@@ -5,6 +5,8 @@
 // across ticks), adds the tether's reaction on the handle to force[] (±10000 units, physical
 // sign, before effect and device gain), and tells the engine where its mass is and whether
 // it has ended (DynamicResult). The engine turns that into interim and final reports.
+// force[] is float, as the engine sums it; the balls work in double and render_dynamic rounds
+// their force once (their tests hold the models' double exactly).
 //
 // Every named dynamic maps onto the control law (§8.4), except the sling and the paddle,
 // which are true 2D models (§5.8, §5.9). One file per model; dynamic.cpp dispatches.
@@ -26,6 +28,12 @@ struct DynamicState {
     // The slot's parameters are worked into its per-tick form (ControlLawState::laws);
     // prepare_slot clears it after every command that sets them.
     bool prepared = false;
+    // Every axis's law is plain (PreparedTether::plain), set with prepared: the tick takes
+    // the short way (control_law_dynamic.cpp).
+    bool plain = false;
+    // 1/step of the tick length the laws are prepared for (PreparedTether::step_s), set with
+    // them: a double division a tick less, in the padding before the union.
+    float inverse_step = 0;
     // The simulated mass: a control law's or a ball's, never both (the type of a slot's
     // effect never changes), so they share the bytes (issue 14: RAM). The control law's is
     // live from construction; ball_tick assigns the ball's whole on a ball's first tick.
@@ -55,10 +63,10 @@ struct DynamicResult {
     float mass_velocity[kMaxAxes] = {};  // per DEVICE axis: mass minus handle, position units/s
 };
 
-void render_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void render_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 
 // The models, one file each.
-void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
 void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
 

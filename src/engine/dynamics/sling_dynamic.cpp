@@ -229,7 +229,7 @@ struct Sling {
 
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
     const Sling sling(*c.params, *c.config);
-    ball_tick(sling, c, force);
+    ball_tick(sling, sling.axes, sling.count, c, force);
     report_ball(c.state->ball.now, c, sling.axes, sling.count, result);
     result.finished = false;
 }

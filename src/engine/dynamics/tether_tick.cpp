@@ -69,6 +69,7 @@ PreparedTether prepare_tether(const TetherLaw& law) noexcept {
     t.half_cycles = law.half_cycles;
     t.handle_frame = law.handle_frame;
     t.piecewise = t.length > 0 || t.k_pos != t.k_neg;
+    t.plain = !t.piecewise && t.half_cycles == 0 && !t.handle_frame;
     return t;
 }
 

@@ -148,7 +148,7 @@ RC_GTEST_PROP(ControlLawProperty, FiniteAndWithinTheMotorLimitForAnyParametersRa
         }
         const float acceleration[kMaxAxes] = {};
         const detail::DynamicContext context{&p, &config, in.position, velocity, acceleration, in.position, n == 0 ? 0.0 : static_cast<double>(dt_us) * 1e-6, t_us, &state};
-        double raw[kMaxAxes] = {};
+        float raw[kMaxAxes] = {};
         detail::DynamicResult result;
         detail::render_dynamic(context, raw, result);
         for (int a = 0; a < kMaxAxes; ++a) {
