@@ -87,7 +87,6 @@ export class Pad {
   latencies: LatencySample[] = [];
   lastHops: PointerHops | null = null; // the newest hops, for the latency bench's diagnosis
   private drawPending = false;
-  private answerFrame = -1; // the animation frame (its time) that drew the newest answer
   private rect: DOMRect | null = null; // the canvas's place during a drag
 
   constructor(
@@ -119,11 +118,6 @@ export class Pad {
     window.addEventListener('resize', () => (this.rect = null));
   }
 
-  // Whether the animation frame at `frameTime` shows (or is about to show) a pointer's
-  // answer: the plot leaves that frame to the pad.
-  answersIn(frameTime: number): boolean {
-    return this.answerFrame === frameTime || this.probe?.arrived !== undefined;
-  }
 
   setGrip(g: string): void {
     (document.getElementById('grip') as HTMLSelectElement).value = g;
@@ -192,12 +186,11 @@ export class Pad {
   draw(): void {
     if (this.drawPending) return;
     this.drawPending = true;
-    requestAnimationFrame((frameTime) => {
+    requestAnimationFrame(() => {
       this.drawPending = false;
       this.paint();
       const p = this.probe;
       if (p?.arrived !== undefined) {
-        this.answerFrame = frameTime;
         const painted = performance.now();
         const server = Math.min(p.server ?? 0, p.arrived - p.sent);
         const sample: LatencySample = {
