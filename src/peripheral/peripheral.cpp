@@ -5,7 +5,10 @@
 // serves the attached host: it is the session's only user and so the single producer and
 // consumer of the runtime's queues. It reads the host's frames with a short timeout (1 ms,
 // or none while commands are in flight, so that acks go back within a tick), pumps the
-// session and sends what it produced. When the host leaves it resets the device through
+// session and sends what it produced. On a connection that rings a doorbell when a frame
+// arrives (the in-process one: doorbell.hpp) it sleeps on that doorbell instead, which the
+// loop rings too after a tick that left reports: a report then leaves as soon as it is
+// posted, not when the 1 ms read times out (docs/studio.md, "Latency"). When the host leaves it resets the device through
 // the session and waits (at most kResetWaitS) for the runtime to confirm, then ends; the
 // next host gets a new service thread. An accept thread, when serving a listener, hands
 // each connection to attach(), which answers `busy` while a host is attached.
@@ -37,6 +40,7 @@
 #include "feel/peripheral/device_session.hpp"
 #include "feel/protocol/standard_pid.hpp"
 #include "feel/runtime/runtime_backend.hpp"
+#include "feel/transport/doorbell.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "standard_pid_connection.hpp"
 
@@ -196,7 +200,9 @@ struct Peripheral::Impl {
         sim::TargetMotion motion = sim::TargetMotion::parse(o.motion, kMotionSpanS, profile->axis_count);
         auto backend = std::make_unique<runtime::SimBackend>(*profile, grip, std::move(motion));
         sim = backend.get();
-        rt = std::make_unique<runtime::DeviceRuntime>(config, std::move(backend), o.runtime);
+        runtime::DeviceRuntimeOptions runtime_options = o.runtime;
+        runtime_options.report_signal = &reports_ready;
+        rt = std::make_unique<runtime::DeviceRuntime>(config, std::move(backend), runtime_options);
         session = std::make_unique<DeviceSession>(caps, rt->config(), *rt, LoopMeter(*rt));
         rt->start();
     }
@@ -206,6 +212,14 @@ struct Peripheral::Impl {
     const sim::DeviceProfile* profile;
     runtime::Capabilities caps;
     runtime::RuntimeConfig config;
+    // The service thread sleeps on it; the loop and an in-process host's frames ring it.
+    // Declared before rt: the loop that rings it stops first.
+    std::shared_ptr<transport::Doorbell> bell = std::make_shared<transport::Doorbell>();
+    struct RingOnReports final : runtime::ReportSignal {
+        explicit RingOnReports(transport::Doorbell* b) : bell(b) {}
+        void reports_ready() noexcept override { bell->ring(); }
+        transport::Doorbell* bell;
+    } reports_ready{bell.get()};
     runtime::SimBackend* sim = nullptr;  // owned by rt
     std::unique_ptr<runtime::DeviceRuntime> rt;
     std::unique_ptr<DeviceSession> session;  // the service thread's alone while one runs
@@ -262,12 +276,17 @@ struct Peripheral::Impl {
         const bool watchdog = timeout_us != kInfiniteUs;
         const auto silence_limit = std::chrono::microseconds(watchdog ? timeout_us : 0);
         Clock::time_point heard = Clock::now();
+        // A connection that rings the doorbell on arrival: read without waiting, sleep on
+        // the doorbell (a frame or a report wakes it; 1 ms at most, for the watchdog).
+        auto* rings = dynamic_cast<transport::BellOnArrival*>(host.get());
+        if (rings != nullptr) rings->ring_on_arrival(bell);
         try {
             while (!stopping.load(std::memory_order_relaxed)) {
+                const uint32_t seen = bell->rings();  // before looking: a later ring wakes the wait
                 const bool busy = session->in_flight() > 0;
                 bool received = false;
                 if (session->accepting()) {
-                    if (auto frame = host->receive(busy ? 0ms : 1ms)) {
+                    if (auto frame = host->receive(busy || rings != nullptr ? 0ms : 1ms)) {
                         session->offer(std::move(*frame));
                         received = true;
                         heard = Clock::now();
@@ -288,8 +307,13 @@ struct Peripheral::Impl {
                 out.clear();
                 publish(session->counters());
                 // Waiting on the runtime with nothing read (or no room to read): a short
-                // nap, not a spin.
-                if (!received && (busy || !session->accepting())) std::this_thread::sleep_for(50us);
+                // nap, not a spin; on the doorbell, until the loop posts (acks are reports
+                // too) or a frame comes.
+                if (!received && rings != nullptr && session->accepting()) {
+                    bell->wait(seen, 1ms);
+                } else if (!received && (busy || !session->accepting())) {
+                    std::this_thread::sleep_for(50us);
+                }
             }
         } catch (const transport::TransportError& e) {
             // Disconnected, or a bad frame, a stalled partial frame or a host that does not
@@ -305,6 +329,7 @@ struct Peripheral::Impl {
             std::lock_guard lock(mutex);
             current = nullptr;
         }
+        if (rings != nullptr) rings->ring_on_arrival(nullptr);
         host->close();
         host.reset();
         session->host_gone();

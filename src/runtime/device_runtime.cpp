@@ -34,7 +34,11 @@ void DeviceRuntime::start() {
     loop_options.lock_memory = options_.lock_memory;
     RuntimePipeline* pipeline = pipeline_.get();
     const int64_t base = pipeline->next_tick_index();
-    loop_.start(loop_options, [pipeline, base](int64_t tick, int64_t /*t_us*/) { pipeline->tick(base + tick); });
+    ReportSignal* signal = options_.report_signal;
+    loop_.start(loop_options, [pipeline, base, signal](int64_t tick, int64_t /*t_us*/) {
+        pipeline->tick(base + tick);
+        if (signal != nullptr && pipeline->reports().size_approx() != 0) signal->reports_ready();
+    });
 }
 
 void DeviceRuntime::stop() { loop_.stop(); }

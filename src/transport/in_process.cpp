@@ -4,11 +4,14 @@
 // transports' semantics exactly: frames arrive whole and in order; a closed end sees
 // "disconnected" at once, its peer only after it has received every frame sent before the
 // close (a USB unplug loses nothing already delivered to the host controller). A mutex and
-// a condition variable are enough: this is never on the device's real-time loop.
+// a condition variable are enough: this is never on the device's real-time loop. An end's
+// reader may also have a doorbell rung when a frame arrives for it (doorbell.hpp): the
+// simulated device's service thread sleeps on one that its loop rings too.
 #include <condition_variable>
 #include <deque>
 #include <mutex>
 
+#include "feel/transport/doorbell.hpp"
 #include "feel/transport/transport.hpp"
 #include "socket_util.hpp"
 
@@ -20,10 +23,12 @@ struct SharedPair {
     std::condition_variable arrived;  // a frame was queued or the pair was closed
     std::deque<Frame> to_host;
     std::deque<Frame> to_device;
+    std::shared_ptr<Doorbell> host_bell;    // rung when a frame arrives for the host's end
+    std::shared_ptr<Doorbell> device_bell;  // ... for the device's end
     bool closed = false;  // either end closed: no more sends, receivers drain then stop
 };
 
-class InProcessConnection final : public Connection {
+class InProcessConnection final : public Connection, public BellOnArrival {
 public:
     InProcessConnection(std::shared_ptr<SharedPair> shared, bool is_host, std::string name)
         : shared_(std::move(shared)), is_host_(is_host), name_(std::move(name)) {}
@@ -38,12 +43,23 @@ public:
                                         std::to_string(frame.payload.size()) + " bytes is too large for " +
                                         name_ + " (allowed 0.." + std::to_string(kMaxFramePayload) + " bytes)");
         }
+        std::shared_ptr<Doorbell> bell;
         {
             std::lock_guard lock(shared_->mutex);
             if (shared_->closed) throw TransportError(TransportError::Kind::disconnected, name_ + " is closed");
             outbox().push_back(frame);
+            bell = peer_bell();  // a copy: the reader may drop its bell meanwhile
         }
         shared_->arrived.notify_all();
+        if (bell) bell->ring();
+    }
+
+    void ring_on_arrival(std::shared_ptr<Doorbell> bell) override {
+        {
+            std::lock_guard lock(shared_->mutex);
+            own_bell() = bell;
+        }
+        if (bell) bell->ring();
     }
 
     std::optional<Frame> receive(std::chrono::milliseconds timeout) override {
@@ -60,13 +76,19 @@ public:
     }
 
     void close() noexcept override {
+        std::shared_ptr<Doorbell> bells[2];
         {
             std::lock_guard lock(shared_->mutex);
             closed_here_ = true;
             shared_->closed = true;
             inbox().clear();  // nobody will read them: this end is gone
+            bells[0] = own_bell();
+            bells[1] = peer_bell();
         }
         shared_->arrived.notify_all();
+        for (const auto& b : bells) {
+            if (b) b->ring();
+        }
     }
 
     [[nodiscard]] std::string peer() const override { return name_; }
@@ -74,6 +96,8 @@ public:
 private:
     std::deque<Frame>& inbox() { return is_host_ ? shared_->to_host : shared_->to_device; }
     std::deque<Frame>& outbox() { return is_host_ ? shared_->to_device : shared_->to_host; }
+    std::shared_ptr<Doorbell>& own_bell() { return is_host_ ? shared_->host_bell : shared_->device_bell; }
+    std::shared_ptr<Doorbell>& peer_bell() { return is_host_ ? shared_->device_bell : shared_->host_bell; }
 
     std::shared_ptr<SharedPair> shared_;
     bool is_host_;

@@ -8,7 +8,7 @@
 //
 //   node studio/bench/browser-latency.mjs build/apps/feel/feel [moves]
 //   FEEL_CHROMIUM_ARGS="--flag --flag" ... tries Chromium flags on top of the harness's
-import { readFileSync, readdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { readFileSync, readdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 process.env.FEEL ??= resolve(process.argv[2] ?? 'build/apps/feel/feel');
@@ -156,6 +156,8 @@ if (tracer) {
   const done = new Promise((ok) => tracer.once('Tracing.tracingComplete', ok));
   await tracer.send('Tracing.end');
   await done;
+  // TRACE_OUT=FILE: the raw events too, for a closer look (e.g. chrome://tracing)
+  if (process.env.TRACE_OUT) writeFileSync(process.env.TRACE_OUT, JSON.stringify({ traceEvents }));
   const threads = new Map(); // pid:tid -> name
   for (const e of traceEvents) if (e.ph === 'M' && e.name === 'thread_name') threads.set(`${e.pid}:${e.tid}`, e.args.name);
   const sums = new Map();

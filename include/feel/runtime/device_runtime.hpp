@@ -37,12 +37,25 @@
 
 namespace feel::runtime {
 
+// Told by the loop's thread after each tick that leaves reports in the queue for the host
+// to take, so that whoever takes them need not poll for them (the peripheral's service
+// thread sleeps until then: peripheral.cpp). Called on the real-time loop: it must never
+// block, lock, allocate or throw.
+class ReportSignal {
+public:
+    virtual void reports_ready() noexcept = 0;
+
+protected:
+    ~ReportSignal() = default;
+};
+
 // What the loop thread asks of the system (RealtimeLoopOptions, realtime_loop.hpp); the
 // loop falls back cleanly where it is refused.
 struct DeviceRuntimeOptions {
     bool realtime_priority = true;  // try SCHED_FIFO
     int32_t fifo_priority = 80;     // 1..99
     bool lock_memory = true;        // try mlockall
+    ReportSignal* report_signal = nullptr;  // not owned; outlives the runtime's loop
 };
 
 struct DeviceRuntimeStats {

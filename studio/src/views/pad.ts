@@ -87,6 +87,7 @@ export class Pad {
   latencies: LatencySample[] = [];
   lastHops: PointerHops | null = null; // the newest hops, for the latency bench's diagnosis
   private drawPending = false;
+  private rect: DOMRect | null = null; // the canvas's place during a drag
 
   constructor(
     root: HTMLElement,
@@ -103,6 +104,7 @@ export class Pad {
     root.replaceChildren(h('h2', {}, 'Handle'), this.canvas, h('div', { class: 'pad-tools' }, grip, h('span', { id: 'readout' })));
     this.canvas.addEventListener('pointerdown', (e) => {
       this.dragging = true;
+      this.rect = this.canvas.getBoundingClientRect();
       this.canvas.setPointerCapture(e.pointerId);
       this.move(e);
     });
@@ -111,7 +113,11 @@ export class Pad {
     const moveEvent = 'onpointerrawupdate' in window ? 'pointerrawupdate' : 'pointermove';
     this.canvas.addEventListener(moveEvent, (e) => this.dragging && this.move(e as PointerEvent));
     this.canvas.addEventListener('pointerup', () => (this.dragging = false));
+    // the page moved under a drag: read the canvas's place again at the next move
+    window.addEventListener('scroll', () => (this.rect = null), { capture: true, passive: true });
+    window.addEventListener('resize', () => (this.rect = null));
   }
+
 
   setGrip(g: string): void {
     (document.getElementById('grip') as HTMLSelectElement).value = g;
@@ -124,7 +130,9 @@ export class Pad {
   }
 
   private move(e: PointerEvent): void {
-    const r = this.canvas.getBoundingClientRect();
+    // Read once per drag, not at each move: reading it after the page changed forces a
+    // style and layout pass before the pointer's message can leave.
+    const r = (this.rect ??= this.canvas.getBoundingClientRect());
     const s = (kSize - 2 * kMargin) / 20000;
     const px = ((e.clientX - r.left) * kSize) / r.width;
     const py = ((e.clientY - r.top) * this.canvas.height) / r.height;
