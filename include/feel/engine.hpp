@@ -321,7 +321,9 @@ public:
     [[nodiscard]] EffectState state(EffectId id) const noexcept;
     // State and progress of one effect; state free for a stale handle.
     [[nodiscard]] EffectStatus status(EffectId id) const noexcept;
-    // Copies the effect's parameters into `out` (what update() merges into).
+    // Copies the effect's parameters into `out` (what update() merges into). The device keeps
+    // only what the effect reads: the other types' blocks, an envelope without has_envelope
+    // and a trigger's index without a trigger come back as their defaults.
     Error params(EffectId id, EffectParams& out) const noexcept;
 
     // Changes the fields of `field_mask` (effect_field::k*) to those of `params`. The merged

@@ -55,7 +55,7 @@ void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     const EngineConfig& config = *c.config;
     // Single precision (issue 14); what is per tick rather than per block is computed once.
     FrictionState& state = c.state->friction;

@@ -104,7 +104,7 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
 }  // namespace
 
 void control_law_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     ControlLawState& st = c.state->law;
     const int32_t n = p.axis_count;
     if (!c.state->prepared) {
