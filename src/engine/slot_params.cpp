@@ -40,12 +40,14 @@ int condition_blocks(const EffectParams& p) noexcept {
 }
 
 // The block a curve was made from (curve_of): the floats of integers within ±10000 are
-// exact, and a slope is -coefficient / 10000 rounded twice in float, within 3e-3 of it
-// after × 10000, so the nearest integer is the coefficient.
+// exact, and a slope is -coefficient / 10000 rounded twice in float; times 10000, rounded
+// once more, it is within 3e-3 of the coefficient, so the nearest integer is the
+// coefficient. (Float, not double: the board has no double unit.)
 ConditionBlock block_of_curve(const ConditionCurve& c, OffsetMode mode) noexcept {
+    constexpr float kScale = static_cast<float>(kFullScale);
     ConditionBlock b;
-    b.pos_coefficient = static_cast<int32_t>(std::lround(-static_cast<double>(c.pos_slope) * kFullScale));
-    b.neg_coefficient = static_cast<int32_t>(std::lround(-static_cast<double>(c.neg_slope) * kFullScale));
+    b.pos_coefficient = static_cast<int32_t>(std::lround(-c.pos_slope * kScale));
+    b.neg_coefficient = static_cast<int32_t>(std::lround(-c.neg_slope * kScale));
     b.offset = static_cast<int32_t>(c.offset);
     b.pos_saturation = static_cast<int32_t>(c.pos_cap);
     b.neg_saturation = static_cast<int32_t>(c.neg_cap);
@@ -61,7 +63,7 @@ SlotParams slot_params(const EffectParams& p, const DynamicBlock* dynamic_block)
     // Every value is within its range (validated), so each narrowing keeps it exactly.
     s.type = p.type;
     s.duration_us = static_cast<int32_t>(p.duration_us);
-    s.start_delay_us = static_cast<int32_t>(p.start_delay_us);
+    s.start_delay_us = p.start_delay_us;
     s.gain = static_cast<int16_t>(p.gain);
     s.iterations = static_cast<int16_t>(p.iterations);
     s.axis_count = static_cast<int8_t>(p.axis_count);

@@ -59,9 +59,11 @@ struct SlotParams {
     // narrowest type that holds its range (validate_effect has checked them): times of at
     // most 65e6 µs, or kInfiniteUs (-1), in 32 bits; levels, gains and counts in 16 or 8.
     // Arithmetic promotes them to int as it did the host's int32 fields; a product of two
-    // that may pass 2^31 (a duration times the iterations) widens one to int64 first.
+    // that may pass 2^31 (a duration times the iterations) widens one to int64 first. The
+    // start delay stays 64-bit: the tick subtracts it from a 64-bit time at every effect,
+    // and its 4 bytes fill what the union's 8-byte alignment would pad.
+    int64_t start_delay_us = 0;
     int32_t duration_us = kInfiniteUs;
-    int32_t start_delay_us = 0;
     int32_t trigger_repeat_interval_us = 0;
     Direction direction{};
     SlotEnvelope envelope{};
