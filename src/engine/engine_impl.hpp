@@ -28,7 +28,7 @@ struct DynamicRecord {
 struct Slot {
     SlotParams params{};  // the header and its type's block (slot_params.hpp)
     // What the tick needs of params every tick, worked out once per command (prepare_slot).
-    // Fields widest first, so that the slot has no padding (issue 14's RAM).
+    // Fields widest first, so that the slot pads little (issue 14's RAM).
     float direction[kMaxAxes] = {};       // force per unit value on each device axis
     float direction_gain[kMaxAxes] = {};  // direction · gain_factor, for scalar waves
     float start_position[kMaxAxes] = {};  // sensed position when the effect began playing

@@ -13,8 +13,8 @@
 // they read an EffectParams. The conversions run at create and update, after validation
 // (every value is then within its range); the tick never converts. Converting back gives
 // the host's parameters with what the effect never reads at its defaults: the other types'
-// blocks, an envelope without has_envelope, a trigger's index without a trigger
-// (Engine::params documents it).
+// blocks, an envelope without has_envelope, a trigger's index without a trigger, the
+// condition blocks beyond the effect's axes (Engine::params documents it).
 #pragma once
 
 #include <cstdint>
