@@ -321,7 +321,10 @@ public:
     [[nodiscard]] EffectState state(EffectId id) const noexcept;
     // State and progress of one effect; state free for a stale handle.
     [[nodiscard]] EffectStatus status(EffectId id) const noexcept;
-    // Copies the effect's parameters into `out` (what update() merges into).
+    // Copies the effect's parameters into `out` (what update() merges into). The device keeps
+    // only what the effect reads: the other types' blocks, an envelope without has_envelope,
+    // a trigger's index without a trigger and the condition blocks beyond the effect's axes
+    // come back as their defaults.
     Error params(EffectId id, EffectParams& out) const noexcept;
 
     // Changes the fields of `field_mask` (effect_field::k*) to those of `params`. The merged

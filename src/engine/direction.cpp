@@ -31,7 +31,7 @@ void clear(float factors[kMaxAxes]) noexcept {
 }
 
 // The force is opposite to the "from" vector, spread over the effect's axes in order.
-void from_vector(const EffectParams& params, const double* from, int n, float factors[kMaxAxes]) noexcept {
+void from_vector(const SlotParams& params, const double* from, int n, float factors[kMaxAxes]) noexcept {
     double norm = 0;
     for (int i = 0; i < n; ++i) norm += from[i] * from[i];
     norm = std::sqrt(norm);
@@ -57,7 +57,7 @@ void polar_factors_turns(float turns, float factors[kMaxAxes]) noexcept {
     factors[axis_index(Axis::y)] = -cos_turns(turns);
 }
 
-void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noexcept {
+void direction_factors(const SlotParams& params, float factors[kMaxAxes]) noexcept {
     clear(factors);
     const Direction& d = params.direction;
     switch (d.kind) {

@@ -15,12 +15,13 @@
 #pragma once
 
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 
 namespace feel::detail {
 
 // Fills factors[device axis] so that force on that axis = factors[axis] · value.
 // Assumes validate_effect() accepted the params. Axes the effect does not use get 0.
-void direction_factors(const EffectParams& params, float factors[kMaxAxes]) noexcept;
+void direction_factors(const SlotParams& params, float factors[kMaxAxes]) noexcept;
 
 // The factors for a compass angle (whole hundredths of a degree, any int32) on x, y.
 // Double precision with libm, exact at the cardinal points: once per command.

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 
 namespace feel::detail {
 
@@ -22,10 +23,10 @@ struct ClockReading {
     int32_t iteration = 0;   // 0-based iteration (playing only)
 };
 
-[[nodiscard]] ClockReading read_clock(const EffectParams& params, int64_t since_start_us) noexcept;
+[[nodiscard]] ClockReading read_clock(const SlotParams& params, int64_t since_start_us) noexcept;
 // The same with the iteration count of this play (Engine::start may override the effect's).
 // Inline: the tick reads every playing effect's clock.
-[[nodiscard]] inline ClockReading read_clock(const EffectParams& params, int32_t iterations,
+[[nodiscard]] inline ClockReading read_clock(const SlotParams& params, int32_t iterations,
                                              int64_t since_start_us) noexcept {
     ClockReading r;
     const int64_t t = since_start_us - params.start_delay_us;
@@ -47,6 +48,6 @@ struct ClockReading {
 }
 
 // The total time from start to finish, or kInfiniteUs.
-[[nodiscard]] int64_t total_length_us(const EffectParams& params) noexcept;
+[[nodiscard]] int64_t total_length_us(const SlotParams& params) noexcept;
 
 }  // namespace feel::detail

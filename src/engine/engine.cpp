@@ -86,7 +86,6 @@ void detail::prepare_slot(Slot& s) noexcept {
     if (is_periodic(s.params.type) || is_sweep(s.params.type)) s.waveform = waveform_of(s.params.type);
     s.reads_acceleration = s.params.type == EffectType::inertia || s.params.type == EffectType::dynamic_inertia;
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
-    for (int i = 0; i < kMaxAxes; ++i) s.curves[i] = curve_of(s.params.conditions[i]);
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
     s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
     s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
@@ -153,9 +152,9 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     }
 
     Slot& s = m.slots[index];
-    s.params = params;
+    m.acquire_memory(s, memory);
+    Impl::store_params(s, params);
     s.state = EffectState::stopped;
-    s.start_t_us = 0;
     s.began_playing = false;
     s.iterations_override = 0;
     s.completed_iterations = 0;
@@ -164,7 +163,6 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.last_end = PlayEnd::none;
     s.pool_bytes = bytes;
     m.pool_used_bytes += bytes;
-    m.acquire_memory(s, memory);
     detail::prepare_slot(s);
     m.reset_memory(s);
     if (index >= m.slot_end) m.slot_end = index + 1;
@@ -250,16 +248,10 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // still (docs/conditions.md, "Stiction balances the engine's push").
     float vibration[kMaxAxes] = {};
     int32_t playing = 0;
-    if (m.paused) {
-        // Pause freezes every effect's clock (§2.2 device control): each running effect's
-        // start moves forward by the time that passed, so its elapsed time stands still and
-        // it resumes exactly where it was. Pending effects wait for the first running tick.
-        // Nothing renders, so conditions and dynamics keep their state too.
-        for (int32_t i = 0; i < m.slot_end; ++i) {
-            Slot& s = m.slots[i];
-            if (s.state == EffectState::delayed || s.state == EffectState::playing) s.start_t_us += dt_us;
-        }
-    }
+    // Pause freezes every effect's clock (§2.2 device control): the loop below, which
+    // advances each running effect's time by the tick's length, is skipped, so its elapsed
+    // time stands still and it resumes exactly where it was. Pending effects wait for the
+    // first running tick. Nothing renders, so conditions and dynamics keep their state too.
     const int32_t slot_end = m.paused ? 0 : m.slot_end;
     // What every condition sees alike this tick; the loop fills in each one's own part.
     detail::ConditionContext condition;
@@ -278,9 +270,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
-        if (s.state == EffectState::pending) s.start_t_us = in.t_us;
-
-        s.elapsed_us = in.t_us - s.start_t_us;
+        s.elapsed_us = s.state == EffectState::pending ? 0 : s.elapsed_us + dt_us;
         const int32_t iterations = s.play_iterations();
         const detail::ClockReading clock = detail::read_clock(s.params, iterations, s.elapsed_us);
         if (clock.phase == ClockPhase::finished) {
@@ -349,7 +339,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.direction = s.direction;
             condition.tau_us = clock.tau_us;
             condition.state = s.condition_memory;
-            condition.curves = s.curves;
+            condition.curves = s.params.curved.curves;
             s.render_condition(condition, force);
         } else {
             const detail::WaveInput wave{&s.params, s.direction,
@@ -386,7 +376,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.direction = s.direction;
             condition.tau_us = m.last_slots[k].tau_us;
             condition.state = s.condition_memory;
-            condition.curves = s.curves;
+            condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);
             if (axes == 2) {  // the common device, unrolled

@@ -34,7 +34,7 @@ Classification by_duration(int64_t duration_us) noexcept {
 
 // A force profile loops when its duration outlasts the samples (they repeat from the first
 // frame) or when it plays several iterations; its period is the length of one loop.
-Classification classify_profile(const EffectParams& p) noexcept {
+Classification classify_profile(const detail::SlotParams& p) noexcept {
     const CustomBlock& c = p.custom;
     const int64_t loop_us = static_cast<int64_t>(c.sample_count / c.channels) * c.sample_period_us;
     if (p.duration_us == kInfiniteUs || p.duration_us > loop_us) {
@@ -44,7 +44,7 @@ Classification classify_profile(const EffectParams& p) noexcept {
     return by_duration(p.duration_us);
 }
 
-Classification classify(const EffectParams& p) noexcept {
+Classification classify(const detail::SlotParams& p) noexcept {
     if (is_periodic(p.type) || is_sweep(p.type)) {
         return {DisturbanceClass::periodic, p.periodic.period_us};
     }
@@ -73,8 +73,7 @@ void Engine::activity(EngineActivity& out) const noexcept {
         // `playing` is what the last tick found: the effect put force on the handle then.
         if (s.state != EffectState::playing) continue;
         if (effect_class(s.params.type) != EffectClass::wave) continue;
-        const detail::ClockReading clock = detail::read_clock(s.params, s.play_iterations(),
-                                                                  m.previous_t_us - s.start_t_us);
+        const detail::ClockReading clock = detail::read_clock(s.params, s.play_iterations(), s.elapsed_us);
         if (clock.phase != detail::ClockPhase::playing) continue;
 
         float force[kMaxAxes] = {};

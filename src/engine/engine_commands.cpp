@@ -113,7 +113,7 @@ EffectStatus Engine::status(EffectId id) const noexcept {
 Error Engine::params(EffectId id, EffectParams& out) const noexcept {
     const Slot* s = impl_->find(id);
     if (!s) return no_such_effect();
-    out = s->params;
+    out = detail::effect_params(s->params);
     return {};
 }
 
@@ -138,7 +138,7 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
     }
 
     // The merged parameters are checked as a whole, with the samples they would play.
-    EffectParams merged = s->params;
+    EffectParams merged = detail::effect_params(s->params);
     merge_fields(merged, params, field_mask);
     const std::span<const int16_t> merged_samples =
         new_samples ? samples
@@ -161,7 +161,7 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
     }
 
     // Nothing can fail from here on.
-    s->params = merged;
+    Impl::store_params(*s, merged);
     m.pool_used_bytes += bytes - s->pool_bytes;
     s->pool_bytes = bytes;
     m.prepare(*s);

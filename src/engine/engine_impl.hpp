@@ -17,33 +17,23 @@
 namespace feel {
 namespace detail {
 
-// A dynamic's memory between ticks: its simulated mass and its interim reports' schedule.
+// A dynamic's memory: its parameters' block (SlotParams::dynamic points here), and between
+// ticks its simulated mass and its interim reports' schedule.
 struct DynamicRecord {
+    DynamicBlock block{};
     DynamicState state{};
     int64_t next_interim_us = 0;  // when the next interim report is due
 };
 
 struct Slot {
-    EffectParams params{};
-    float direction[kMaxAxes] = {};  // force per unit value on each device axis
-    // What the tick needs of params every tick, worked out once per command (prepare_slot):
-    EffectClass cls = EffectClass::wave;
-    bool reads_acceleration = false;  // inertia, or Dynamic Inertia
-    float gain_factor = 0.0f;         // params.gain / kFullScale
-    Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
-    bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
-    // Two flags of the clock and the commands below, kept here where they fill the padding
-    // after the flags above (16 bytes a slot less: issue 14's RAM).
-    bool began_playing = false;            // start_position is set
-    PlayEnd last_end = PlayEnd::none;      // how the last play ended
-    float direction_gain[kMaxAxes] = {}; // direction · gain_factor, for those
-    detail::ConditionCurve curves[kMaxAxes] = {};  // params.conditions (condition.hpp)
+    SlotParams params{};  // the header and its type's block (slot_params.hpp)
+    // What the tick needs of params every tick, worked out once per command (prepare_slot).
+    // Fields widest first, so that the slot pads little (issue 14's RAM).
+    float direction[kMaxAxes] = {};       // force per unit value on each device axis
+    float direction_gain[kMaxAxes] = {};  // direction · gain_factor, for scalar waves
+    float start_position[kMaxAxes] = {};  // sensed position when the effect began playing
+    float gain_factor = 0.0f;             // params.gain / kFullScale
     detail::ConditionLaw render_condition = nullptr;  // conditions: condition_renderer(params)
-    // Friction and texture render after every other effect of the tick: their stiction holds
-    // against what the others push with this tick (ConditionContext::others_force).
-    bool renders_last = false;
-    EffectState state = EffectState::free;
-    uint16_t generation = 0;
     // The effect's memory between ticks, if its type keeps any (memory_kind): its record in
     // the engine's pool of its kind (Engine::Impl::dynamic_pool, ::condition_pool), held
     // from create to destroy; null for the others. The live member follows cls.
@@ -51,15 +41,28 @@ struct Slot {
         detail::ConditionState* condition_memory = nullptr;
         detail::DynamicRecord* dynamic_memory;
     };
-    int64_t start_t_us = 0;
-    float start_position[kMaxAxes] = {};   // sensed position when the effect began playing
 
-    // Commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
-    int32_t iterations_override = 0;       // this play's count from start(id, n, solo); 0 = the effect's
+    // The clock, the commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
+    // The effect time of the current or last play, advanced by the tick's length at every
+    // tick it runs (0 at its first: the same integer as that tick's time minus its start,
+    // and pause, which freezes it, needs no start time to move).
+    int64_t elapsed_us = 0;
     int32_t completed_iterations = 0;      // of the current or last play, set by the tick
-    int64_t elapsed_us = 0;                // effect time of the current or last play, set by the tick
     uint32_t starts = 0;                   // times started since created
     int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
+    int16_t iterations_override = 0;       // this play's count from start(id, n, solo); 0 = the effect's
+    uint16_t generation = 0;
+
+    EffectClass cls = EffectClass::wave;
+    bool reads_acceleration = false;     // inertia, or Dynamic Inertia
+    Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
+    bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
+    // Friction and texture render after every other effect of the tick: their stiction holds
+    // against what the others push with this tick (ConditionContext::others_force).
+    bool renders_last = false;
+    EffectState state = EffectState::free;
+    bool began_playing = false;          // start_position is set
+    PlayEnd last_end = PlayEnd::none;    // how the last play ended
 
     // The iteration count of the current play: Engine::start's override, else the effect's.
     // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
@@ -136,7 +139,7 @@ struct Engine::Impl {
         s.state = EffectState::pending;
         s.began_playing = false;
         reset_memory(s);
-        s.iterations_override = iterations_override;
+        s.iterations_override = static_cast<int16_t>(iterations_override);  // validated: -1..255
         s.completed_iterations = 0;
         s.elapsed_us = 0;
         s.last_end = PlayEnd::none;
@@ -162,6 +165,13 @@ struct Engine::Impl {
         return e;
     }
 
+    // Stores valid parameters in a slot holding its record (a dynamic's block into the record).
+    static void store_params(detail::Slot& s, const EffectParams& p) noexcept {
+        const bool dynamic = effect_class(p.type) == EffectClass::dynamic;
+        if (dynamic) s.dynamic_memory->block = p.dynamic;
+        s.params = detail::slot_params(p, dynamic ? &s.dynamic_memory->block : nullptr);
+    }
+
     // Takes a record of the slot's kind for a slot being created (free_records said there is one).
     void acquire_memory(detail::Slot& s, detail::MemoryKind kind) noexcept {
         if (kind == detail::MemoryKind::dynamic) {
@@ -171,10 +181,11 @@ struct Engine::Impl {
         }
     }
 
-    // Starts the slot's memory afresh (cls must be set: prepare_slot).
+    // Starts the slot's memory afresh (cls must be set: prepare_slot); a dynamic's block stays.
     static void reset_memory(const detail::Slot& s) noexcept {
         if (s.cls == EffectClass::dynamic) {
-            *s.dynamic_memory = detail::DynamicRecord{};
+            s.dynamic_memory->state = detail::DynamicState{};
+            s.dynamic_memory->next_interim_us = 0;
         } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
             *s.condition_memory = detail::ConditionState{};
         }
@@ -234,7 +245,7 @@ struct Engine::Impl {
             }
         }
         int64_t& next_interim_us = s.dynamic_memory->next_interim_us;
-        const bool interim_due = s.params.dynamic.interim_reporting && t_us >= next_interim_us;
+        const bool interim_due = s.params.dynamic->interim_reporting && t_us >= next_interim_us;
         if (!interim_due && !r.finished) return;
         DynamicReport report;
         report.effect = EffectId{index, s.generation};

@@ -19,6 +19,7 @@
 #include <cstdint>
 
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 
 namespace feel::detail {
 
@@ -26,7 +27,7 @@ namespace feel::detail {
 // tau_us of a play lasting duration_us (kInfiniteUs for endless).
 // Single precision (issue 14): levels are within ±10000, times stay integer µs. Inline, as
 // the rest of this header: every wave with an envelope calls it every tick.
-[[nodiscard]] inline float envelope_level(const Envelope& env, float steady, int64_t tau_us,
+[[nodiscard]] inline float envelope_level(const SlotEnvelope& env, float steady, int64_t tau_us,
                                           int64_t duration_us) noexcept {
     float level = steady;
     if (env.settle_time_us > 0 && tau_us < env.settle_time_us) {
@@ -46,7 +47,7 @@ namespace feel::detail {
 }
 
 // Applies the envelope to a signed value: sign(value) · envelope_level(|value|).
-[[nodiscard]] inline float shape_by_envelope(const Envelope& env, float value, int64_t tau_us,
+[[nodiscard]] inline float shape_by_envelope(const SlotEnvelope& env, float value, int64_t tau_us,
                                              int64_t duration_us) noexcept {
     if (value < 0) return -envelope_level(env, -value, tau_us, duration_us);
     return envelope_level(env, value, tau_us, duration_us);

@@ -151,6 +151,34 @@ TEST_F(EngineCommands, UpdateOnlyChangesTheFieldsOfTheMask) {
     EXPECT_EQ(now, expected);
 }
 
+// A slot keeps a spring's blocks as the curves its tick reads (src/engine/slot_params.hpp):
+// every coefficient, offset, saturation and deadband of the primer's ranges reads back as given.
+TEST_F(EngineCommands, ParamsGiveBackEveryConditionValueAsCreated) {
+    for (int32_t v = -10'000; v <= 10'000; ++v) {
+        EffectParams p = constant_on_x(0, kInfiniteUs);
+        p.type = EffectType::spring;
+        p.conditions[0] = {v, -v, v, v < 0 ? -v : v, 10'000 - (v < 0 ? -v : v), v < 0 ? -v : v, OffsetMode::relative};
+        const CreateResult r = engine_->create(p);
+        ASSERT_TRUE(r.error.ok()) << v << ": " << r.error.message();
+        EffectParams now;
+        ASSERT_TRUE(engine_->params(r.id, now).ok());
+        ASSERT_EQ(now, p) << "coefficient " << v;
+        ASSERT_TRUE(engine_->destroy(r.id).ok());
+    }
+}
+
+// What an effect never reads is not kept (Engine::params): another type's block, an
+// envelope without has_envelope, a trigger's index without a trigger.
+TEST_F(EngineCommands, ParamsGiveBackWhatAnEffectDoesNotReadAsDefaults) {
+    EffectParams p = constant_on_x(3000, kInfiniteUs);
+    p.periodic.magnitude = 7000;
+    p.envelope.impulse_level = 9000;
+    p.trigger.index = 77;
+    EffectParams now;
+    ASSERT_TRUE(engine_->params(create(p), now).ok());
+    EXPECT_EQ(now, constant_on_x(3000, kInfiniteUs));
+}
+
 TEST_F(EngineCommands, ALongerDurationExtendsAPlayAndAShorterOneEndsIt) {
     const EffectId a = play(constant_on_x(1000, 100'000));
     for (int n = 0; n < 50; ++n) tick();  // 50 ms in

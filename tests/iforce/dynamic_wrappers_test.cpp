@@ -24,6 +24,11 @@
 namespace feel::iforce {
 namespace {
 
+// The engine's mapping of host parameters, stored as a slot stores them.
+int32_t tether_laws_of(const EffectParams& p, const EngineConfig& c, detail::TetherLaw laws[kMaxAxes]) {
+    return detail::tether_laws(detail::slot_params(p, &p.dynamic), c, laws);
+}
+
 using test::engine_accepts;
 
 // A control law on x and y, one block per axis, as §8.5 fills didynamic[0] and [1].
@@ -45,7 +50,7 @@ void expect_same_law(const EffectParams& named, const EffectParams& reference) {
     const EngineConfig config;  // the joystick's scales; any config maps both alike
     detail::TetherLaw a[kMaxAxes];
     detail::TetherLaw b[kMaxAxes];
-    ASSERT_EQ(detail::tether_laws(named, config, a), detail::tether_laws(reference, config, b));
+    ASSERT_EQ(tether_laws_of(named, config, a), tether_laws_of(reference, config, b));
     for (int i = 0; i < named.axis_count; ++i) {
         SCOPED_TRACE(i);
         EXPECT_DOUBLE_EQ(a[i].mass, b[i].mass);
@@ -120,7 +125,7 @@ TEST(DynamicWrappers, DynamicLiquidMapsDensitySettleAndViscosity) {
     ASSERT_TRUE(engine_accepts(p));
     const EngineConfig c;
     detail::TetherLaw law[kMaxAxes];
-    ASSERT_EQ(detail::tether_laws(p, c, law), 2);
+    ASSERT_EQ(tether_laws_of(p, c, law), 2);
     for (int i = 0; i < 2; ++i) {
         EXPECT_DOUBLE_EQ(law[i].mass, 4000.0 / 10000 * c.dynamic_mass_ref);       // Density -> Mass
         EXPECT_DOUBLE_EQ(law[i].k_pos, 1500.0 / 10000 * c.dynamic_stiffness_ref);  // Settle -> KPos
@@ -138,7 +143,7 @@ TEST(DynamicWrappers, DynamicInertiaMapsInertiaAndPlay) {
     ASSERT_TRUE(engine_accepts(p));
     const EngineConfig c;
     detail::TetherLaw law[kMaxAxes];
-    detail::tether_laws(p, c, law);
+    tether_laws_of(p, c, law);
     for (int i = 0; i < 2; ++i) {
         EXPECT_DOUBLE_EQ(law[i].mass, 7000.0 / 10000 * c.dynamic_mass_ref);  // Inertia -> Mass
         EXPECT_DOUBLE_EQ(law[i].length, 400);                                // Play -> Length
@@ -154,7 +159,7 @@ TEST(DynamicWrappers, DynamicCenterDriftMapsStiffness) {
     ASSERT_TRUE(engine_accepts(p));
     const EngineConfig c;
     detail::TetherLaw law[kMaxAxes];
-    detail::tether_laws(p, c, law);
+    tether_laws_of(p, c, law);
     for (int i = 0; i < 2; ++i) {
         EXPECT_DOUBLE_EQ(law[i].k_pos, 3000.0 / 10000 * c.dynamic_stiffness_ref);  // Stiffness -> KPos
         EXPECT_DOUBLE_EQ(law[i].k_neg, law[i].k_pos);

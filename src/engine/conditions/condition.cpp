@@ -26,7 +26,7 @@ void no_condition(const ConditionContext&, float*) noexcept {}
 
 }  // namespace
 
-ConditionLaw condition_renderer(const EffectParams& params) noexcept {
+ConditionLaw condition_renderer(const SlotParams& params) noexcept {
     if (is_directed_condition(params)) {
         switch (params.type) {
             case EffectType::spring: return directed<spring_condition>;

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 #include "feel/engine.hpp"
 #include "conditions/contact_state.hpp"
 #include "conditions/friction_state.hpp"
@@ -22,20 +23,8 @@ struct ConditionState {
     ContactState contact{};
 };
 
-// A Condition Struct block (§6.6.a) as the tick reads it: its integer fields as floats, the
-// coefficients already divided by 10000 and negated (condition_math.hpp). Worked out once
-// per command (curve_of), not per tick.
-struct ConditionCurve {
-    float pos_slope = 0.0f;  // -pos_coefficient / 10000
-    float neg_slope = 0.0f;  // -neg_coefficient / 10000
-    float pos_cap = 0.0f;    // pos_saturation
-    float neg_cap = 0.0f;    // neg_saturation
-    float band = 0.0f;       // deadband
-    float offset = 0.0f;
-};
-
 struct ConditionContext {
-    const EffectParams* params = nullptr;
+    const SlotParams* params = nullptr;
     const EngineConfig* config = nullptr;
     const float* position = nullptr;        // [kMaxAxes] sensed, normalized ±10000
     const float* velocity = nullptr;        // [kMaxAxes] estimated, position units/s
@@ -46,7 +35,7 @@ struct ConditionContext {
     int64_t tau_us = 0;                     // time since the effect began playing
     ConditionState* state = nullptr;        // this effect's state, persists across ticks
     float* reported_position = nullptr;     // [kMaxAxes] clipping walls overwrite their axis
-    const ConditionCurve* curves = nullptr; // [kMaxAxes] params.conditions as curves
+    const ConditionCurve* curves = nullptr; // [kMaxAxes] the blocks as curves (params->curved)
     float velocity_scale = 0.0f;            // kFullScale / velocity_ref: velocity to the ±10000 scale
     float acceleration_scale = 0.0f;        // kFullScale / acceleration_ref
     int axes = kMaxAxes;                    // the device's axes: forces beyond them are 0
@@ -81,7 +70,7 @@ using ConditionLaw = void (*)(const ConditionContext&, float*);
 // The function that renders a condition of these params, chosen once per command so that
 // the tick calls it directly: it adds the condition's force (±10000 units, before effect and
 // device gain) into force[].
-[[nodiscard]] ConditionLaw condition_renderer(const EffectParams& params) noexcept;
+[[nodiscard]] ConditionLaw condition_renderer(const SlotParams& params) noexcept;
 
 // A spring, damper, inertia or friction with a direction (is_directed_condition): `law`, the
 // family's function, rendered on the line of the direction and applied along it.

@@ -16,7 +16,7 @@ bool is_angle_element(EffectType type) noexcept {
 
 }  // namespace
 
-void element_direction(const EffectParams& params, float u[kMaxAxes]) noexcept {
+void element_direction(const SlotParams& params, float u[kMaxAxes]) noexcept {
     const EffectType type = params.type;
     if (type != EffectType::axis_wall && type != EffectType::axis_barrier && !is_angle_element(type)) return;
     for (int a = 0; a < kMaxAxes; ++a) u[a] = 0.0f;

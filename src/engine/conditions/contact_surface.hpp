@@ -60,7 +60,7 @@ inline constexpr float kSurfaceSlipSpeed = 0.1f;       // fraction of EngineConf
 // direction of the block's angle on x, y. Worked out once per command (prepare_slot puts it
 // in the slot's direction, which the tick hands the element as ConditionContext::direction);
 // any other type's factors are left alone.
-void element_direction(const EffectParams& params, float u[kMaxAxes]) noexcept;
+void element_direction(const SlotParams& params, float u[kMaxAxes]) noexcept;
 
 // The stiffness of a wall or barrier of this hardness (-10000..10000): hardness/10000 of
 // EngineConfig::wall_stiffness, in force units per position unit.

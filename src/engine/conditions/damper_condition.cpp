@@ -13,7 +13,7 @@
 namespace feel::detail {
 
 void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionCurve& b = c.curves[i];

@@ -83,7 +83,7 @@ void remember_law(FrictionBlockLaw& law, const FrictionState& state, int32_t pos
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     // Single precision (issue 14); what is per tick or per command rather than per block
     // and tick is worked out once (remember_tick, remember_law), and the context is read
     // once (the state's stores could alias it).

@@ -23,13 +23,13 @@ float spring_center(OffsetMode mode, const ConditionCurve& b, float start) noexc
 }  // namespace
 
 void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     if (p.type == EffectType::angle_spring) {
         float u[kMaxAxes];
         condition_line(c, u);
         const ConditionCurve& b = c.curves[0];
         const float s = along(u, c.position);
-        const float center = spring_center(p.conditions[0].offset_mode, b, along(u, c.start_position));
+        const float center = spring_center(p.curved.offset_modes[0], b, along(u, c.start_position));
         const float f = condition_response(b, s - center);
         for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
         return;
@@ -37,7 +37,7 @@ void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = device_axis(c, i);
         const ConditionCurve& b = c.curves[i];
-        const float center = spring_center(p.conditions[i].offset_mode, b, c.start_position[a]);
+        const float center = spring_center(p.curved.offset_modes[i], b, c.start_position[a]);
         force[a] += condition_response(b, c.position[a] - center);
     }
 }

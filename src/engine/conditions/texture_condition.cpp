@@ -43,7 +43,7 @@
 namespace feel::detail {
 
 void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     const TextureBlock& t = p.texture;
     FrictionState& state = c.state->friction;
     float u[kMaxAxes] = {};

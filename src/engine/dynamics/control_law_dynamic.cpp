@@ -144,7 +144,7 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
 // none of the general loop's state is kept alive across it.
 [[gnu::noinline, maybe_unused]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
                                   float force[kMaxAxes], DynamicResult& result) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = axis_index(p.axes[i]);
         const float handle_velocity = c.velocity[a];
@@ -161,7 +161,7 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
 }  // namespace
 
 void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
-    const EffectParams& p = *c.params;
+    const SlotParams& p = *c.params;
     ControlLawState& st = c.state->law;
     const int32_t n = p.axis_count;
     if (!c.state->prepared) {

@@ -69,7 +69,7 @@ TetherLaw spring_law(double mass, double k) noexcept {
 // On one axis the intensity's sign is the direction: positive kicks toward +, like a
 // positive constant force on that axis. On x, y, z the spherical direction aims it
 // (direction_factors, as for a wave).
-double kick_velocity(const EffectParams& p, const EngineConfig& c, int i, int32_t angle, int32_t intensity) noexcept {
+double kick_velocity(const SlotParams& p, const EngineConfig& c, int i, int32_t angle, int32_t intensity) noexcept {
     if (p.axis_count == 1) return dynamic_velocity(c, intensity);
     float push[kMaxAxes] = {};
     if (p.direction.kind == DirectionKind::spherical) {
@@ -82,8 +82,8 @@ double kick_velocity(const EffectParams& p, const EngineConfig& c, int i, int32_
 
 }  // namespace
 
-int32_t tether_laws(const EffectParams& p, const EngineConfig& c, TetherLaw laws[kMaxAxes]) noexcept {
-    const DynamicBlock& d = p.dynamic;
+int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[kMaxAxes]) noexcept {
+    const DynamicBlock& d = *p.dynamic;
     for (int i = 0; i < p.axis_count; ++i) {
         TetherLaw& law = laws[i];
         switch (p.type) {

@@ -17,6 +17,7 @@
 #include "dynamics/ball_state.hpp"
 #include "dynamics/control_law_state.hpp"
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 #include "feel/engine.hpp"
 
 namespace feel::detail {
@@ -44,7 +45,7 @@ struct DynamicState {
 };
 
 struct DynamicContext {
-    const EffectParams* params = nullptr;
+    const SlotParams* params = nullptr;
     const EngineConfig* config = nullptr;
     const float* position = nullptr;        // [kMaxAxes] handle, sensed, position units
     const float* velocity = nullptr;        // [kMaxAxes] handle, estimated, position units/s

@@ -128,7 +128,7 @@ struct Paddle {
 }  // namespace
 
 void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
-    const Paddle paddle(c.params->dynamic, *c.config);
+    const Paddle paddle(*c.params->dynamic, *c.config);
     ball_tick(paddle, kPlane, 2, c, force);
     const BallMotion& ball = c.state->ball.now;
     report_ball(ball, c, kPlane, 2, result);

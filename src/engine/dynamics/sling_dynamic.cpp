@@ -76,8 +76,8 @@ struct Sling {
     mutable double air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
     mutable double air_factor = 1;
 
-    Sling(const EffectParams& p, const EngineConfig& config) noexcept {
-        const DynamicBlock& d = p.dynamic;
+    Sling(const SlotParams& p, const EngineConfig& config) noexcept {
+        const DynamicBlock& d = *p.dynamic;
         mass = dynamic_mass(config, d.ball_mass);
         stiffness = dynamic_stiffness(config, d.string_compliance);
         length = d.string_length;

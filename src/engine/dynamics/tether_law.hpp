@@ -26,6 +26,7 @@
 
 #include "dynamics/control_law_state.hpp"
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 #include "feel/engine.hpp"
 
 namespace feel::detail {
@@ -115,6 +116,6 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& 
 // Dynamic Struct, scaled by the config. Returns the effect's axis count. The effect must
 // be a control-law dynamic (recoil, impact, liquid, inertia, center drift, control law)
 // that validate_effect() accepted.
-int32_t tether_laws(const EffectParams& params, const EngineConfig& config, TetherLaw laws[kMaxAxes]) noexcept;
+int32_t tether_laws(const SlotParams& params, const EngineConfig& config, TetherLaw laws[kMaxAxes]) noexcept;
 
 }  // namespace feel::detail

@@ -5,7 +5,7 @@
 
 namespace feel::detail {
 
-float constant_wave(const EffectParams& p, int64_t tau_us) noexcept {
+float constant_wave(const SlotParams& p, int64_t tau_us) noexcept {
     const float m = static_cast<float>(p.constant.magnitude);
     return p.has_envelope ? shape_by_envelope(p.envelope, m, tau_us, p.duration_us) : m;
 }
@@ -14,7 +14,7 @@ float constant_wave(const EffectParams& p, int64_t tau_us) noexcept {
 // define its shape. feel renders it as one smooth pop: a half sine of the magnitude over the
 // duration, M·sin(π·τ/duration), so it starts and ends at zero force and has no step to ring
 // the mechanism. The validator requires a finite duration.
-float smart_pop_wave(const EffectParams& p, int64_t tau_us) noexcept {
+float smart_pop_wave(const SlotParams& p, int64_t tau_us) noexcept {
     const float progress = static_cast<float>(tau_us) / static_cast<float>(p.duration_us);
     return static_cast<float>(p.constant.magnitude) * sin_turns(0.5f * progress);
 }

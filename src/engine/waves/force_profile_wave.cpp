@@ -19,17 +19,17 @@ const int16_t* frame_at(const CustomBlock& c, const int16_t* samples, int64_t ta
     return samples + frame * c.channels;
 }
 
-float shaped(const EffectParams& p, float v, int64_t tau_us) noexcept {
+float shaped(const SlotParams& p, float v, int64_t tau_us) noexcept {
     return p.has_envelope ? shape_by_envelope(p.envelope, v, tau_us, p.duration_us) : v;
 }
 
 }  // namespace
 
-float force_profile_value(const EffectParams& p, const int16_t* samples, int64_t tau_us) noexcept {
+float force_profile_value(const SlotParams& p, const int16_t* samples, int64_t tau_us) noexcept {
     return shaped(p, frame_at(p.custom, samples, tau_us)[0], tau_us);
 }
 
-void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
+void force_profile_wave(const SlotParams& p, const int16_t* samples, const float* direction,
                         int64_t tau_us, float force[kMaxAxes]) noexcept {
     const CustomBlock& c = p.custom;
     if (c.channels == 1) {

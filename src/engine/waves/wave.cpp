@@ -13,14 +13,14 @@ void add_along(const float* direction, int axes, float value, float force[kMaxAx
 
 }  // namespace
 
-bool is_scalar_wave(const EffectParams& p) noexcept {
+bool is_scalar_wave(const SlotParams& p) noexcept {
     if (is_sweep(p.type)) return false;
     if (p.type == EffectType::force_profile) return p.custom.channels == 1;
     return effect_class(p.type) == EffectClass::wave;
 }
 
 float scalar_wave_value(const WaveInput& in) noexcept {
-    const EffectParams& p = *in.params;
+    const SlotParams& p = *in.params;
     switch (p.type) {
         case EffectType::vector_force:
         case EffectType::constant: return constant_wave(p, in.tau_us);
@@ -32,7 +32,7 @@ float scalar_wave_value(const WaveInput& in) noexcept {
 }
 
 void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
-    const EffectParams& p = *in.params;
+    const SlotParams& p = *in.params;
     if (is_sweep(p.type)) {
         float swept[kMaxAxes];
         polar_factors_turns(sweep_turns(p, in.tau_us), swept);

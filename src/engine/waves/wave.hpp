@@ -8,12 +8,13 @@
 #include <cstdint>
 
 #include "feel/effect.hpp"
+#include "slot_params.hpp"
 #include "feel/effect_type.hpp"
 
 namespace feel::detail {
 
 struct WaveInput {
-    const EffectParams* params = nullptr;
+    const SlotParams* params = nullptr;
     const float* direction = nullptr;     // factors per device axis (direction.hpp)
     const int16_t* samples = nullptr;     // force_profile only
     int64_t tau_us = 0;                   // time into this play
@@ -27,23 +28,23 @@ void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 // Most waves push along their fixed direction: force = value · direction. These two let the
 // tick add value · (direction · gain), worked out once per command, instead. True for every
 // wave type but the sweeps (their direction turns) and force profiles of several channels.
-[[nodiscard]] bool is_scalar_wave(const EffectParams& p) noexcept;
+[[nodiscard]] bool is_scalar_wave(const SlotParams& p) noexcept;
 // The value of such a wave (±10000 units, before gains).
 [[nodiscard]] float scalar_wave_value(const WaveInput& in) noexcept;
 
 // One scalar per wave family; the envelope is applied inside when the effect has one.
 // Single precision (issue 14): forces are within ±10000, time is integer µs.
-[[nodiscard]] float constant_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] float smart_pop_wave(const EffectParams& p, int64_t tau_us) noexcept;
-[[nodiscard]] float periodic_wave(const EffectParams& p, Waveform waveform, int64_t tau_us) noexcept;
-[[nodiscard]] float ramp_wave(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float constant_wave(const SlotParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float smart_pop_wave(const SlotParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noexcept;
+[[nodiscard]] float ramp_wave(const SlotParams& p, int64_t tau_us) noexcept;
 // The compass direction of a sweep at τ, in turns clockwise from north (may be any value;
 // direction.hpp's polar_factors_turns takes it).
-[[nodiscard]] float sweep_turns(const EffectParams& p, int64_t tau_us) noexcept;
+[[nodiscard]] float sweep_turns(const SlotParams& p, int64_t tau_us) noexcept;
 // A one-channel force profile's value at τ.
-[[nodiscard]] float force_profile_value(const EffectParams& p, const int16_t* samples, int64_t tau_us) noexcept;
+[[nodiscard]] float force_profile_value(const SlotParams& p, const int16_t* samples, int64_t tau_us) noexcept;
 // Adds a force profile's channels into force[].
-void force_profile_wave(const EffectParams& p, const int16_t* samples, const float* direction,
+void force_profile_wave(const SlotParams& p, const int16_t* samples, const float* direction,
                         int64_t tau_us, float force[kMaxAxes]) noexcept;
 
 }  // namespace feel::detail
