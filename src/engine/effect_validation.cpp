@@ -50,7 +50,34 @@
 namespace feel {
 namespace {
 
-using namespace detail::field_rules;
+// Named one by one, not `using namespace`: in a unity batch a whole namespace would clash
+// with the engine's other k-names (effect_field::kGain).
+using detail::field_rules::FieldRule;
+using detail::field_rules::kChoice;
+using detail::field_rules::kChoices;
+using detail::field_rules::kRanges;
+using detail::field_rules::kOffsetModeChoice;
+using detail::field_rules::kBarrierRules;
+using detail::field_rules::kBarrierSurfaceRules;
+using detail::field_rules::kCenterDriftRules;
+using detail::field_rules::kConditionRules;
+using detail::field_rules::kConstantRules;
+using detail::field_rules::kControlLawRules;
+using detail::field_rules::kCustomRules;
+using detail::field_rules::kEnvelopeRules;
+using detail::field_rules::kImpactRules;
+using detail::field_rules::kInertiaRules;
+using detail::field_rules::kLiquidRules;
+using detail::field_rules::kPaddleRules;
+using detail::field_rules::kPeriodicRules;
+using detail::field_rules::kRampRules;
+using detail::field_rules::kRecoilRules;
+using detail::field_rules::kSlingRules;
+using detail::field_rules::kSweepRules;
+using detail::field_rules::kTextureRules;
+using detail::field_rules::kTimingRules;
+using detail::field_rules::kWallRules;
+using detail::field_rules::kWallSurfaceRules;
 
 // A field path built in place, e.g. Path("conditions").index(1).add(".deadband").
 // Its parts are C strings: on the Cortex-M4 at -Os a string_view made of a literal is an
