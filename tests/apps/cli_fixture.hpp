@@ -90,7 +90,9 @@ inline format::SensationFile sample_file() {
     hum.duration_us = kInfiniteUs;
     hum.axis_count = 1;
     hum.periodic.magnitude = 3000;
-    hum.periodic.period_us = 20'000;
+    // 23 ms: no divisor of `feel monitor`'s 200 ms, so its samples cannot all fall on the
+    // sine's zeros (a 20 ms period did, whenever the effect started on a sample's phase).
+    hum.periodic.period_us = 23'000;
     file.sensations.push_back({"hum", std::nullopt, false, {{hum, {}, {}}}});
 
     EffectParams a;
