@@ -36,9 +36,12 @@
 // while the device's socket is full) and, given a token, sends its `hello` first.
 //
 // Threads. One thread may send while another receives on the same Connection; close() may
-// be called from any thread and wakes a blocked receive(). Nothing here is real-time safe:
-// transports run on the host's I/O thread and on the device's "USB side" service thread,
-// never on the device's 1 kHz loop (which only sees the runtime's SPSC queues).
+// be called from any thread and wakes a blocked receive(). Nothing declared in this header is
+// real-time safe: transports run on the host's I/O thread and on the device's "USB side"
+// service thread, never on the device's 1 kHz loop (which only sees the runtime's SPSC
+// queues). The one exception nearby is Doorbell::ring (doorbell.hpp), which the loop calls
+// after a tick that leaves reports: an atomic add and, only while the reader sleeps, a
+// FUTEX_WAKE; it never blocks, locks or allocates.
 #pragma once
 
 #include <chrono>
