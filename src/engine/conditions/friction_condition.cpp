@@ -80,6 +80,15 @@ void remember_law(FrictionBlockLaw& law, const FrictionState& state, int32_t pos
     law.limits = guard_limits(law.magnitude, pos, neg);
 }
 
+// The lean way (friction_condition below) is a second copy of a block's work, about 1.3 KB
+// of Thumb code: a build for size (the Cortex-M4F firmware, -Os, whose flash is over its
+// goal) leaves it out, and every block takes the general way, which gives the same force.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kLeanWay = false;
+#else
+inline constexpr bool kLeanWay = true;
+#endif
+
 // What every block of one friction shares at a tick: the context's values, read once (the
 // state's stores could alias it).
 struct EffectTick {
@@ -94,7 +103,7 @@ struct EffectTick {
 
 // One block of any friction: a velocity offset, a deadband, negative coefficients, a line
 // that is not a device axis, the first tick. Returns the block's force.
-[[gnu::noinline]] float render_block(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+[[gnu::always_inline]] inline float render_block(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
                                      FrictionBlock& block, int a) noexcept {
     const ConditionContext& c = *e.context;
     const StopGuardTick& guard = state.guard_tick;
@@ -160,6 +169,21 @@ struct EffectTick {
     return f;
 }
 
+// The same out of line, for the lean loop's rare other block (the first tick, a NaN): the
+// lean loop keeps its registers.
+[[gnu::noinline]] float render_block_out_of_line(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+                                                 FrictionBlock& block, int a) noexcept {
+    return render_block(e, state, b, block, a);
+}
+
+// The block's law, worked out again when its coefficients changed.
+[[gnu::always_inline]] inline void keep_law(FrictionBlockLaw& law, const FrictionState& state,
+                                            const ConditionBlock& b) noexcept {
+    if (((law.pos_coefficient ^ b.pos_coefficient) | (law.neg_coefficient ^ b.neg_coefficient)) != 0) {
+        remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
+    }
+}
+
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
@@ -182,24 +206,35 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     // The common friction (issue 14, friction's fifth pass): on the device's axes, with the
     // engine's observers, the others' force known, the guard on and a tick to damp over.
     // Its blocks take the lean way below unless one of them needs more (render_block).
-    const bool lean = c.observers != nullptr && e.others_known && e.guarding && e.dt_s > 0;
+    const bool lean = kLeanWay && c.observers != nullptr && e.others_known && e.guarding && e.dt_s > 0;
     const int blocks = p.axis_count;
+    if (!lean) {
+        // A friction with a direction, or without the guard (no device_mass): every block
+        // the general way, inline.
+        for (int i = 0; i < blocks; ++i) {
+            const int a = axis_index(p.axes[i]);
+            const ConditionBlock& b = p.conditions[i];
+            FrictionBlock& block = state.block[i];
+            keep_law(block.law, state, b);
+            force[a] += render_block(e, state, b, block, a);
+        }
+        state.others_known = e.others_known;
+        return;
+    }
     for (int i = 0; i < blocks; ++i) {
         const int a = axis_index(p.axes[i]);
         const ConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
         FrictionBlockLaw& law = block.law;
-        if (((law.pos_coefficient ^ b.pos_coefficient) | (law.neg_coefficient ^ b.neg_coefficient)) != 0) {
-            remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
-        }
+        keep_law(law, state, b);
         Bristle& bristle = block.bristle;
         const float position = c.position[a];
         // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
         // finite only where the position and the deflection are.)
         const float dx = position - bristle.anchor;
-        if (!lean || (b.offset | b.deadband) != 0 || !law.limits.resists || !(law.inverse_presliding > 0) ||
-            !bristle.primed || !std::isfinite(dx + bristle.deflection)) {
-            force[a] += render_block(e, state, b, block, a);
+        if ((b.offset | b.deadband) != 0 || !law.limits.resists || !(law.inverse_presliding > 0) || !bristle.primed ||
+            !std::isfinite(dx + bristle.deflection)) {
+            force[a] += render_block_out_of_line(e, state, b, block, a);
             continue;
         }
         // The lean way: render_block's steps with what it tests known (a still surface, no
