@@ -89,6 +89,19 @@ inline constexpr bool kLeanWay = false;
 inline constexpr bool kLeanWay = true;
 #endif
 
+// Static friction on a block at rest whose others' push changed to `pushed` (hold_with_others,
+// friction_model.hpp), its bristle at deflection z. Returns the new deflection.
+[[gnu::always_inline]] inline float hold_at_rest(FrictionBlock& block, float z, float pushed, float pos, float neg,
+                                                 float pos_limit, float neg_limit) noexcept {
+    const float bristle_force = -(z >= 0 ? pos : neg) * z;
+    const float limit = z >= 0 ? pos_limit : neg_limit;
+    const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
+    // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
+    const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
+    hold_with_others(block.bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
+    return block.bristle.deflection;
+}
+
 // What every block of one friction shares at a tick: the context's values, read once (the
 // state's stores could alias it).
 struct EffectTick {
@@ -128,13 +141,7 @@ struct EffectTick {
         const float pushed = others * e.inverse_gain;
         // (pushed == block.others: the push did not change, hold_with_others does nothing.)
         if (at_rest && pushed != block.others && (e.held_before || first) && law.limits.resists) {
-            const float bristle_force = -(z >= 0 ? pos : neg) * z;
-            const float limit = z >= 0 ? pos_limit : neg_limit;
-            const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-            // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
-            const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
-            hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
-            z = bristle.deflection;
+            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
         }
         block.others = pushed;
     }
@@ -249,12 +256,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const float pos = law.pos, neg = law.neg;
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
         if (at_rest && pushed != block.others && e.held_before) {
-            const float bristle_force = -(z >= 0 ? pos : neg) * z;
-            const float limit = z >= 0 ? pos_limit : neg_limit;
-            const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-            const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
-            hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
-            z = bristle.deflection;
+            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
         }
         block.others = pushed;
         const bool toward_positive = z >= 0;
