@@ -80,101 +80,201 @@ void remember_law(FrictionBlockLaw& law, const FrictionState& state, int32_t pos
     law.limits = guard_limits(law.magnitude, pos, neg);
 }
 
+// The lean way (friction_condition below) is a second copy of a block's work, about 1.3 KB
+// of Thumb code: a build for size (the Cortex-M4F firmware, -Os, whose flash is over its
+// goal) leaves it out, and every block takes the general way, which gives the same force.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kLeanWay = false;
+#else
+inline constexpr bool kLeanWay = true;
+#endif
+
+// Static friction on a block at rest whose others' push changed to `pushed` (hold_with_others,
+// friction_model.hpp), its bristle at deflection z. Returns the new deflection.
+[[gnu::always_inline]] inline float hold_at_rest(FrictionBlock& block, float z, float pushed, float pos, float neg,
+                                                 float pos_limit, float neg_limit) noexcept {
+    const float bristle_force = -(z >= 0 ? pos : neg) * z;
+    const float limit = z >= 0 ? pos_limit : neg_limit;
+    const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
+    // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
+    const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
+    hold_with_others(block.bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
+    return block.bristle.deflection;
+}
+
+// What every block of one friction shares at a tick: the context's values, read once (the
+// state's stores could alias it).
+struct EffectTick {
+    const ConditionContext* context = nullptr;
+    float dt_s = 0.0f;
+    float output_gain = 0.0f;   // the effect's gain times the device's
+    float inverse_gain = 0.0f;  // 1/output_gain where the others' force is known, else 0
+    bool others_known = false;  // the others' force is known and the gain not 0
+    bool held_before = false;   // it was known at the last tick too
+    bool guarding = false;      // the stop guard is on and the engine's last force known
+};
+
+// One block of any friction: a velocity offset, a deadband, negative coefficients, a line
+// that is not a device axis, the first tick. Returns the block's force.
+[[gnu::always_inline]] inline float render_block(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+                                     FrictionBlock& block, int a) noexcept {
+    const ConditionContext& c = *e.context;
+    const StopGuardTick& guard = state.guard_tick;
+    Bristle& bristle = block.bristle;
+    const FrictionBlockLaw& law = block.law;
+    const float dt_s = e.dt_s;
+    const float position = c.position[a];
+    const float pos = law.pos, neg = law.neg;
+    const bool still_surface = b.offset == 0;
+    const float surface_speed =
+        still_surface ? 0.0f : static_cast<float>(b.offset) * c.config->velocity_ref / static_cast<float>(kFullScale);
+    // At its first tick the friction has held nothing yet (its state is zeroed at start):
+    // it takes the other effects' push at once from there.
+    const bool first = !bristle.primed;
+    const bool at_rest = (first || position == bristle.anchor) && still_surface;
+    float z = advance(bristle, position, surface_speed * dt_s, law.inverse_presliding);
+    const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
+    const float others = c.others_force != nullptr    ? c.others_force[a]
+                         : c.applied_force != nullptr ? c.applied_force[a] - block.guard.own
+                                                      : 0.0f;
+    if (e.others_known) {
+        const float pushed = others * e.inverse_gain;
+        // (pushed == block.others: the push did not change, hold_with_others does nothing.)
+        if (at_rest && pushed != block.others && (e.held_before || first) && law.limits.resists) {
+            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
+        }
+        block.others = pushed;
+    }
+    const bool toward_positive = z >= 0;
+    float f = -(toward_positive ? pos : neg) * z;
+    const AxisObservers* const observers = c.observers;
+    const bool on_axis = observers != nullptr && still_surface;
+    if (law.inverse_presliding > 0 && dt_s > 0) {
+        // The fade depends on the axis' velocity alone: the engine's, once per axis (issue 14).
+        f += on_axis ? bristle_damping_faded(law.damping, z, observers->damped_velocity[a], observers->damped_way[a],
+                                             observers->fade[a])
+                     : bristle_damping(law.stiffness, z, c.velocity[a] - surface_speed, state.inverse_fade_speed);
+    }
+    if (b.deadband > 0) {
+        f *= deadband_gate((c.velocity[a] - surface_speed) * c.velocity_scale, static_cast<float>(b.deadband));
+    }
+    const float limit = toward_positive ? pos_limit : neg_limit;
+    f = f > limit ? limit : (f < -limit ? -limit : f);
+    if (e.guarding && still_surface && b.deadband == 0) {
+        // A free handle coming to rest gets only what stops it (stop_guard.hpp).
+        StopGuard& g = block.guard;
+        // The engine's observer of the axis, shared by every friction on it (issue 14).
+        const float guarded =
+            observers != nullptr
+                ? guard_stop(g, observers->view[a], bristle, guard, position, others, f, law.limits, pos, neg)
+                : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others, f, law.magnitude, pos,
+                                     neg);
+        const float side = guarded >= 0 ? neg_limit : pos_limit;
+        f = guarded > side ? side : (guarded < -side ? -side : guarded);
+        remember_output(g, f, e.output_gain);
+    }
+    return f;
+}
+
+// The same out of line, for the lean loop's rare other block (the first tick, a NaN): the
+// lean loop keeps its registers.
+[[gnu::noinline]] float render_block_out_of_line(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+                                                 FrictionBlock& block, int a) noexcept {
+    return render_block(e, state, b, block, a);
+}
+
+// The block's law, worked out again when its coefficients changed.
+[[gnu::always_inline]] inline void keep_law(FrictionBlockLaw& law, const FrictionState& state,
+                                            const ConditionBlock& b) noexcept {
+    if (((law.pos_coefficient ^ b.pos_coefficient) | (law.neg_coefficient ^ b.neg_coefficient)) != 0) {
+        remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
+    }
+}
+
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const SlotParams& p = *c.params;
     // Single precision (issue 14); what is per tick or per command rather than per block
-    // and tick is worked out once (remember_tick, remember_law), and the context is read
-    // once (the state's stores could alias it).
+    // and tick is worked out once (remember_tick, remember_law).
     FrictionState& state = c.state->friction;
     if (state.tick_dt_s != c.dt_s) remember_tick(state, *c.config, c.dt_s);
-    const StopGuardTick& guard = state.guard_tick;
-    const float dt_s = static_cast<float>(c.dt_s);
-    const float velocity_ref = c.config->velocity_ref;
-    const float velocity_scale = c.velocity_scale;
-    const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
-    const float* const position_of = c.position;
-    const float* const velocity_of = c.velocity;
-    const float* const others_force = c.others_force;
-    const float* const applied_force = c.applied_force;
-    const AxisObservers* const observers = c.observers;
+    EffectTick e;
+    e.context = &c;
+    e.dt_s = static_cast<float>(c.dt_s);
+    e.output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     // The others' force is kept in this friction's units (before its gain and the device's),
     // so that a gain change, which scales the friction too, is not taken for a push easing.
-    const bool others_known = others_force != nullptr && output_gain != 0;
-    const float inverse_gain = others_known ? 1.0f / output_gain : 0.0f;
-    const bool held_before = state.others_known;
+    e.others_known = c.others_force != nullptr && e.output_gain != 0;
+    e.inverse_gain = e.others_known ? 1.0f / e.output_gain : 0.0f;
+    e.held_before = state.others_known;
     // The stop guard's preconditions that hold for every block of this tick.
-    const bool guarding = guard.on && applied_force != nullptr;
-    const bool damping_on = dt_s > 0;
+    e.guarding = state.guard_tick.on && c.applied_force != nullptr;
+    // The common friction (issue 14, friction's fifth pass): on the device's axes, with the
+    // engine's observers, the others' force known, the guard on and a tick to damp over.
+    // Its blocks take the lean way below unless one of them needs more (render_block).
+    const bool lean = kLeanWay && c.observers != nullptr && e.others_known && e.guarding && e.dt_s > 0;
     const int blocks = p.axis_count;
+    if (!lean) {
+        // A friction with a direction, or without the guard (no device_mass): every block
+        // the general way, inline.
+        for (int i = 0; i < blocks; ++i) {
+            const int a = axis_index(p.axes[i]);
+            const ConditionBlock& b = p.conditions[i];
+            FrictionBlock& block = state.block[i];
+            keep_law(block.law, state, b);
+            force[a] += render_block(e, state, b, block, a);
+        }
+        state.others_known = e.others_known;
+        return;
+    }
     for (int i = 0; i < blocks; ++i) {
         const int a = axis_index(p.axes[i]);
         const ConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
-        Bristle& bristle = block.bristle;
         FrictionBlockLaw& law = block.law;
-        if (law.pos_coefficient != b.pos_coefficient || law.neg_coefficient != b.neg_coefficient) {
-            remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
+        keep_law(law, state, b);
+        Bristle& bristle = block.bristle;
+        const float position = c.position[a];
+        // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
+        // finite only where the position and the deflection are.)
+        const float dx = position - bristle.anchor;
+        if ((b.offset | b.deadband) != 0 || !law.limits.resists || !(law.inverse_presliding > 0) || !bristle.primed ||
+            !std::isfinite(dx + bristle.deflection)) {
+            force[a] += render_block_out_of_line(e, state, b, block, a);
+            continue;
         }
-        const float position = position_of[a];
+        // The lean way: render_block's steps with what it tests known (a still surface, no
+        // deadband, a resisting friction with a presliding zone, the bristle primed, the
+        // position and the deflection finite, the observers, the others' force and the guard
+        // there), bit for bit the same force.
+        const bool at_rest = position == bristle.anchor;
+        bristle.anchor = position;
+        float z = move_bristle<true>(bristle, dx, law.inverse_presliding);
+        const float others = c.others_force[a];
+        const float pushed = others * e.inverse_gain;
         const float pos = law.pos, neg = law.neg;
-        const bool still_surface = b.offset == 0;
-        const float surface_speed =
-            still_surface ? 0.0f : static_cast<float>(b.offset) * velocity_ref / static_cast<float>(kFullScale);
-        // At its first tick the friction has held nothing yet (its state is zeroed at start):
-        // it takes the other effects' push at once from there.
-        const bool first = !bristle.primed;
-        const bool at_rest = (first || position == bristle.anchor) && still_surface;
-        float z = advance(bristle, position, surface_speed * dt_s, law.inverse_presliding);
         const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
-        const float others = others_force != nullptr ? others_force[a]
-                             : applied_force != nullptr ? applied_force[a] - block.guard.own
-                                                        : 0.0f;
-        if (others_known) {
-            const float pushed = others * inverse_gain;
-            // (pushed == block.others: the push did not change, hold_with_others does nothing.)
-            if (at_rest && pushed != block.others && (held_before || first) && law.limits.resists) {
-                const float bristle_force = -(z >= 0 ? pos : neg) * z;
-                const float limit = z >= 0 ? pos_limit : neg_limit;
-                const float held = bristle_force > limit ? limit : (bristle_force < -limit ? -limit : bristle_force);
-                // (|z| = 1: z = ±1; |force| > limit: held != force, force being finite.)
-                const bool slipping = std::fabs(z) == 1.0f || std::fabs(bristle_force) > limit;
-                hold_with_others(bristle, bristle_force, held, slipping, block.others, pushed, pos, neg);
-                z = bristle.deflection;
-            }
-            block.others = pushed;
+        if (at_rest && pushed != block.others && e.held_before) {
+            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
         }
+        block.others = pushed;
         const bool toward_positive = z >= 0;
-        float f = -(toward_positive ? pos : neg) * z;
-        const bool on_axis = observers != nullptr && still_surface;
-        if (law.inverse_presliding > 0 && damping_on) {
-            // The fade depends on the axis' velocity alone: the engine's, once per axis (issue 14).
-            f += on_axis ? bristle_damping_faded(law.damping, z, observers->damped_velocity[a],
-                                                 observers->damped_way[a], observers->fade[a])
-                         : bristle_damping(law.stiffness, z, velocity_of[a] - surface_speed, state.inverse_fade_speed);
-        }
-        if (b.deadband > 0) {
-            f *= deadband_gate((velocity_of[a] - surface_speed) * velocity_scale, static_cast<float>(b.deadband));
-        }
+        const AxisObservers& observers = *c.observers;
+        float f = -(toward_positive ? pos : neg) * z + bristle_damping_faded(law.damping, z, observers.damped_velocity[a],
+                                                                            observers.damped_way[a], observers.fade[a]);
         const float limit = toward_positive ? pos_limit : neg_limit;
         f = f > limit ? limit : (f < -limit ? -limit : f);
-        if (guarding && still_surface && b.deadband == 0) {
-            // A free handle coming to rest gets only what stops it (stop_guard.hpp).
-            StopGuard& g = block.guard;
-            // The engine's observer of the axis, shared by every friction on it (issue 14).
-            const float guarded =
-                observers != nullptr
-                    ? guard_stop(g, observers->view[a], bristle, guard, position, others, f, law.limits, pos, neg)
-                    : guard_stop_on_line(g, bristle, guard, position, applied_force[a], others, f, law.magnitude,
-                                         pos, neg);
-            const float side = guarded >= 0 ? neg_limit : pos_limit;
-            f = guarded > side ? side : (guarded < -side ? -side : guarded);
-            remember_output(g, f, output_gain);
-        }
+        StopGuard& g = block.guard;
+        // (A copy: the guard's stores to g cannot then be taken for stores to the view.)
+        const ObserverView view = observers.view[a];
+        const float guarded = guard_stop(g, view, bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
+        const float side = guarded >= 0 ? neg_limit : pos_limit;
+        f = guarded > side ? side : (guarded < -side ? -side : guarded);
+        remember_output(g, f, e.output_gain);
         force[a] += f;
     }
-    state.others_known = others_known;
+    state.others_known = e.others_known;
 }
 
 }  // namespace feel::detail

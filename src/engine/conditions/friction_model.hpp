@@ -123,22 +123,13 @@ struct PreslidingRule {
     return std::exp(-u);
 }
 
-// Moves the bristle with the handle now at `position` (along the bristle's line, position
-// units), less `slip` (how far the surface itself moved since the last tick, for a
-// friction with a velocity offset), over a presliding distance 1/inverse_presliding
-// (inverse_presliding 0: none, the bristle flips at once). Returns the new deflection z.
-// Single precision (issue 14): z is kept in float anyway, and a step's travel is a few
-// counts.
-[[nodiscard]] inline float advance(Bristle& b, float position, float slip, float inverse_presliding) noexcept {
-    if (!b.primed || !std::isfinite(position)) {
-        if (std::isfinite(position)) {
-            b.anchor = position;
-            b.primed = true;
-        }
-        return b.deflection;
-    }
-    const float dx = position - b.anchor - slip;
-    b.anchor = position;
+// Moves a primed bristle by the handle's travel dx (position units) over a presliding
+// distance 1/inverse_presliding (0: none, the bristle flips at once). Returns the new
+// deflection z. Single precision (issue 14): z is kept in float anyway, and a step's travel
+// is a few counts. kFinite: the caller knows dx and z finite, and so is the new z (e^-u is
+// in [0, 1] for any u >= 0, inf included), so the check for a non-finite z is left out.
+template <bool kFinite = false>
+[[nodiscard, gnu::always_inline]] inline float move_bristle(Bristle& b, float dx, float inverse_presliding) noexcept {
     float z = b.deflection;
     // Fully slid in the direction of travel, the exact update leaves z at ±1 (the common case
     // while sliding): no exponential. dx = 0 (or NaN) leaves z as it is.
@@ -149,9 +140,26 @@ struct PreslidingRule {
         if (z == -1.0f) return z;
         z = inverse_presliding > 0 ? -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding) : -1.0f;
     }
-    if (!std::isfinite(z)) z = 0.0f;  // a non-finite slip or hold: forget rather than output NaN
+    if (!kFinite && !std::isfinite(z)) z = 0.0f;  // a non-finite slip or hold: forget rather than output NaN
     b.deflection = z;
     return z;
+}
+
+// Moves the bristle with the handle now at `position` (along the bristle's line, position
+// units), less `slip` (how far the surface itself moved since the last tick, for a
+// friction with a velocity offset), over a presliding distance 1/inverse_presliding
+// (inverse_presliding 0: none, the bristle flips at once). Returns the new deflection z.
+[[nodiscard]] inline float advance(Bristle& b, float position, float slip, float inverse_presliding) noexcept {
+    if (!b.primed || !std::isfinite(position)) {
+        if (std::isfinite(position)) {
+            b.anchor = position;
+            b.primed = true;
+        }
+        return b.deflection;
+    }
+    const float dx = position - b.anchor - slip;
+    b.anchor = position;
+    return move_bristle(b, dx, inverse_presliding);
 }
 
 // Sets the bristle to the deflection whose force is `hold` (force units; -c·z with c =

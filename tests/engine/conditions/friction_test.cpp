@@ -9,8 +9,12 @@
 // follows the documented rule: Z = f/K with K = 2b/T (the device's passivity bound),
 // at least f/1000 and at most 200/(2·sensor_step). A small LuGre microdamping acts while
 // the bristle deflects at low speed (bristle_model.hpp).
+#include <cstdint>
+#include <cstring>
+
 #include "bristle_model.hpp"
 #include "condition_fixture.hpp"
+#include "conditions/friction_model.hpp"
 
 namespace feel::test {
 namespace {
@@ -263,6 +267,68 @@ TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
     constant.constant.magnitude = 7000;
     play(constant);
     EXPECT_NEAR(tick_at(0).force[0], 7000.0, 1.0);
+}
+
+TEST_F(Friction, ANonFiniteSensorReadingMovesNoBristle) {
+    // A reading that is not a position (NaN, inf) is no travel: Dahl's z moves only with the
+    // handle, so once the handle reads where it was and the velocity estimate is at rest
+    // again, the force is the one it held before, to the bit, and never NaN meanwhile. (The
+    // common friction's lean way, friction_condition.cpp, leaves such a tick to the general
+    // one.)
+    play(condition(EffectType::friction, {Axis::x, Axis::y}, {block(5000, 5000), block(4000, 4000)}));
+    for (int k = 0; k < 200; ++k) tick_at(-3000 + 7.0 * k, 2000 - 3.0 * k);
+    const double x = -3000 + 7.0 * 200, y = 2000 - 3.0 * 200;
+    for (int k = 0; k < 700; ++k) tick_at(x, y);
+    const TickOutput before = tick_at(x, y);
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const double bad : {kNaN, inf, -inf}) {
+        const TickOutput out = tick_at(bad, bad);
+        EXPECT_TRUE(std::isfinite(out.force[0]) && std::isfinite(out.force[1]));
+    }
+    TickOutput after{};
+    for (int k = 0; k < 700; ++k) {
+        after = tick_at(x, y);
+        ASSERT_TRUE(std::isfinite(after.force[0]) && std::isfinite(after.force[1])) << k;
+    }
+    EXPECT_EQ(after.force[0], before.force[0]);
+    EXPECT_EQ(after.force[1], before.force[1]);
+    const double Z = presliding(5000);
+    const double z0 = bristle(0, 7.0 * 200, Z);
+    EXPECT_NEAR(after.force[0], -5000 * z0, 0.5);
+    // And the bristle still moves with the handle from where it was: back by 700 units it
+    // has turned (the microdamping adds about 40 at this speed).
+    TickOutput back{};
+    for (int k = 1; k <= 100; ++k) back = tick_at(x - 7.0 * k, y);
+    EXPECT_NEAR(back.force[0], -5000 * bristle(z0, -700, Z), 100);
+}
+
+TEST(BristleExponential, IsWithinTwoFloatUlpsOfTheExponentialOverItsPolynomial) {
+    // The bristle's e^-u (friction_model.hpp, exp_of_travel) is a polynomial below u = 1/4
+    // and std::exp beyond. Against the exponential in double: within 1.3e-7 (2 float ulps
+    // near 1) on floats spread over every binade of [0, 1/4) (every 1021st float and the
+    // last 4096 below 1/4), and continuous where it hands over to std::exp.
+    double worst = 0;
+    auto check = [&worst](float u) {
+        worst = std::max(worst, std::fabs(static_cast<double>(feel::detail::exp_of_travel(u)) -
+                                          std::exp(-static_cast<double>(u))));
+    };
+    const float end = 0.25f;
+    uint32_t end_bits = 0;
+    std::memcpy(&end_bits, &end, sizeof end);
+    for (uint32_t bits = 0; bits < end_bits; bits += 1021) {
+        float u = 0;
+        std::memcpy(&u, &bits, sizeof u);
+        check(u);
+    }
+    float u = end;
+    for (int k = 0; k < 4096; ++k) check(u = std::nextafter(u, 0.0f));
+    EXPECT_LE(worst, 1.3e-7);
+    EXPECT_EQ(feel::detail::exp_of_travel(0.0f), 1.0f);
+    EXPECT_NEAR(feel::detail::exp_of_travel(std::nextafter(end, 0.0f)), feel::detail::exp_of_travel(end), 2e-7);
+    for (const float far : {0.25f, 0.5f, 1.0f, 4.0f, 30.0f}) {
+        EXPECT_NEAR(feel::detail::exp_of_travel(far), std::exp(-static_cast<double>(far)), 1e-7) << far;
+    }
+    EXPECT_EQ(feel::detail::exp_of_travel(std::numeric_limits<float>::infinity()), 0.0f);
 }
 
 }  // namespace
