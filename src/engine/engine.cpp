@@ -43,6 +43,23 @@ constexpr bool oscillates(EffectType t) noexcept {
 static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_sine) &&
               !oscillates(EffectType::force_profile) && !oscillates(EffectType::smart_pop));
 
+// The first slot in [from, end) holding a Dynamic Sling that plays this tick, or -1, with
+// its clock: the tick loop's own test (its state, its clock after this tick's dt_us), made
+// ahead of the loop reaching it so that two slings can render together
+// (detail::render_sling_pair).
+int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t dt_us,
+                           detail::ClockReading& clock) noexcept {
+    for (int32_t j = from; j < end; ++j) {
+        const Slot& t = slots[j];
+        if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
+        if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
+        const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
+        clock = detail::read_clock(t.params, t.play_iterations(), elapsed_us);
+        if (clock.phase == ClockPhase::playing) return j;
+    }
+    return -1;
+}
+
 }  // namespace
 
 Error detail::check_engine_config(const EngineConfig& c) noexcept {
@@ -267,6 +284,11 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     int32_t last_count = 0;
+    // Two playing slings render together (render_sling_pair): the first renders both, and
+    // the second's force and result wait here until the loop reaches its slot.
+    int32_t paired_sling = -1;
+    float paired_force[kMaxAxes] = {};
+    detail::DynamicResult paired_result;
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
@@ -321,7 +343,31 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
-            detail::render_dynamic(dynamic, force, result);
+            detail::ClockReading other_clock;
+            int32_t other = -1;
+            if (i == paired_sling) {
+                for (int a = 0; a < kMaxAxes; ++a) force[a] = paired_force[a];
+                result = paired_result;
+            } else if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling &&
+                       (other = next_playing_sling(m.slots.get(), i + 1, slot_end, dt_us, other_clock)) >= 0) {
+                Slot& t = m.slots[other];
+                // A sling reads no start position; the loop sets it when it reaches t.
+                const detail::DynamicContext second{&t.params,
+                                                    &m.config,
+                                                    in.position,
+                                                    velocity,
+                                                    acceleration,
+                                                    t.began_playing ? t.start_position : in.position,
+                                                    dt_s,
+                                                    other_clock.tau_us,
+                                                    &t.dynamic_memory->state};
+                for (float& f : paired_force) f = 0.0f;
+                paired_result = {};
+                detail::render_sling_pair(dynamic, second, force, paired_force, result, paired_result);
+                paired_sling = other;
+            } else {
+                detail::render_dynamic(dynamic, force, result);
+            }
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;
