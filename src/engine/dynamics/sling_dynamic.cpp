@@ -125,6 +125,12 @@ struct Sling {
         for (int i = 0; i < n; ++i) a[i] = pull * r[i];
     }
 
+    // Verlet steps over h_total seconds for the fastest rate in play, rad/s.
+    static int step_count(double rate, double h_total) noexcept {
+        return static_cast<int>(
+            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
+    }
+
     // The ball's angular rate about the handle when the string is at its length, rad/s:
     // what the steps must resolve besides the string's own radial rate. With L = 0 the
     // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
@@ -250,10 +256,23 @@ struct Sling {
         bool idle = true;
         for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && run.acc[i] == 0;
         if (idle) return;
-        const double rate = std::max(std::sqrt(rate_squared), turning_rate(n, r, relative));
-        run.steps = static_cast<int>(
-            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
-        run.h = h_total / run.steps;
+        // The steps the string's own rate asks for depend on the advance's length alone;
+        // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
+        // not a select, so that the processor predicts it and starts stepping without
+        // waiting for the turning rate's square roots and division, then the count's
+        // division, rounding and conversions (about a hundred cycles on the ball's chain).
+        // The same numbers either way: max(ω, turning) is ω.
+        const double omega = std::sqrt(rate_squared);
+        const int string_steps = step_count(omega, h_total);
+        const double string_h = h_total / string_steps;
+        const double turning = turning_rate(n, r, relative);
+        if (turning <= omega) [[likely]] {
+            run.steps = string_steps;
+            run.h = string_h;
+        } else {
+            run.steps = step_count(std::max(omega, turning), h_total);
+            run.h = h_total / run.steps;
+        }
         run.half_h = 0.5 * run.h;
         run.half_drag = air_over_half_step(run.h);
     }
