@@ -81,7 +81,7 @@ struct SlingPairing {
         return;
     }
     detail::ClockReading clock;
-    const int32_t other = next_playing_sling(slots, i + 1, end, dt_us, clock);
+    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i + 1, end, dt_us, clock);
     if (other < 0) {
         detail::render_dynamic(c, force, result);
         return;

@@ -78,6 +78,9 @@ inline constexpr bool kPairSlings = true;
 #endif
 void render_sling_pair(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
                        float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept;
+// A sling whose ball rests on a slack string beside a handle sensed where it was last tick:
+// its tick moves nothing and pulls nothing (sling_dynamic.cpp), so there is no chain to pair.
+[[nodiscard]] bool sling_rests(const DynamicContext& c) noexcept;
 
 // The models, one file each.
 void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;

@@ -316,6 +316,21 @@ struct Sling {
     }
 };
 
+void rest_sling(const DynamicContext& c, DynamicResult& result) noexcept {
+    const SlotParams& p = *c.params;
+    BallState& ball = c.state->ball;
+    int axes[kMaxAxes] = {};
+    for (int i = 0; i < p.axis_count; ++i) {
+        axes[i] = axis_index(p.axes[i]);
+        ball.handle[axes[i]] = c.position[axes[i]];  // the same value; as ball_expected_path writes it
+        ball.handle_velocity[axes[i]] = c.velocity[axes[i]];
+    }
+    report_ball(ball.now, c, axes, p.axis_count, result);
+    result.finished = false;
+}
+
+}  // namespace
+
 // A ball at rest on a slack string beside a handle sensed where it was last tick: both of
 // the tick's advances would be idle (Sling::begin: the handle's line has slope 0, the ball
 // no velocity, the string no pull), the ball stays where it is and the reaction is 0 (ball_tick
@@ -337,21 +352,6 @@ bool sling_rests(const DynamicContext& c) noexcept {
     // The string is slack (Sling::acceleration's test, on the same r): no pull.
     return !(std::sqrt(r2) > static_cast<double>(p.dynamic->string_length));
 }
-
-void rest_sling(const DynamicContext& c, DynamicResult& result) noexcept {
-    const SlotParams& p = *c.params;
-    BallState& ball = c.state->ball;
-    int axes[kMaxAxes] = {};
-    for (int i = 0; i < p.axis_count; ++i) {
-        axes[i] = axis_index(p.axes[i]);
-        ball.handle[axes[i]] = c.position[axes[i]];  // the same value; as ball_expected_path writes it
-        ball.handle_velocity[axes[i]] = c.velocity[axes[i]];
-    }
-    report_ball(ball.now, c, axes, p.axis_count, result);
-    result.finished = false;
-}
-
-}  // namespace
 
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
     if (sling_rests(c)) {

@@ -369,9 +369,10 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
                 ASSERT_EQ(rb1.mass_velocity[ax], rb2.mass_velocity[ax]) << "case " << (&k - cases) << " tick " << i;
                 ASSERT_EQ(alone_a.ball.now.position[ax], together_a.ball.now.position[ax])
                     << "case " << (&k - cases) << " tick " << i;
-                if (b_plays)  // before its first tick b's ball is not the live member of its state
+                if (b_plays) {  // before its first tick b's ball is not the live member of its state
                     ASSERT_EQ(alone_b.ball.now.velocity[ax], together_b.ball.now.velocity[ax])
                         << "case " << (&k - cases) << " tick " << i;
+                }
             }
         }
         // The motion was real: both balls were swung out beyond their strings.
