@@ -43,6 +43,66 @@ constexpr bool oscillates(EffectType t) noexcept {
 static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_sine) &&
               !oscillates(EffectType::force_profile) && !oscillates(EffectType::smart_pop));
 
+// The first slot in [from, end) holding a Dynamic Sling that plays this tick, or -1, with
+// its clock: the tick loop's own test (its state, its clock after this tick's dt_us), made
+// ahead of the loop reaching it so that two slings can render together
+// (detail::render_sling_pair).
+int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t dt_us,
+                           detail::ClockReading& clock) noexcept {
+    for (int32_t j = from; j < end; ++j) {
+        const Slot& t = slots[j];
+        if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
+        if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
+        const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
+        clock = detail::read_clock(t.params, t.play_iterations(), elapsed_us);
+        if (clock.phase == ClockPhase::playing) return j;
+    }
+    return -1;
+}
+
+// Two playing slings render together (detail::render_sling_pair): the first renders both,
+// and the second's force and result wait here until the tick's loop reaches its slot, so
+// the forces are summed in slot order as ever.
+struct SlingPairing {
+    int32_t waiting = -1;  // the slot whose force and result wait, or -1
+    float force[kMaxAxes] = {};
+    detail::DynamicResult result;
+};
+
+// The sling in slot i (context c) into force and result: what waits for it, or it and the
+// next playing sling together, or it alone. Out of line, so that the tick's loop over every
+// slot keeps its registers (inline, this cost the loop about 10 instructions a slot).
+[[gnu::noinline]] void render_sling(SlingPairing& pairing, Slot* slots, int32_t i, int32_t end, int64_t dt_us,
+                                    const detail::DynamicContext& c, float force[kMaxAxes],
+                                    detail::DynamicResult& result) noexcept {
+    if (i == pairing.waiting) {
+        for (int a = 0; a < kMaxAxes; ++a) force[a] = pairing.force[a];
+        result = pairing.result;
+        return;
+    }
+    detail::ClockReading clock;
+    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i + 1, end, dt_us, clock);
+    if (other < 0) {
+        detail::render_dynamic(c, force, result);
+        return;
+    }
+    Slot& t = slots[other];
+    // A sling reads no start position; the loop sets t's when it reaches t.
+    const detail::DynamicContext second{&t.params,
+                                        c.config,
+                                        c.position,
+                                        c.velocity,
+                                        c.acceleration,
+                                        t.began_playing ? t.start_position : c.position,
+                                        c.dt_s,
+                                        clock.tau_us,
+                                        &t.dynamic_memory->state};
+    for (float& f : pairing.force) f = 0.0f;
+    pairing.result = {};
+    detail::render_sling_pair(c, second, force, pairing.force, result, pairing.result);
+    pairing.waiting = other;
+}
+
 }  // namespace
 
 Error detail::check_engine_config(const EngineConfig& c) noexcept {
@@ -267,6 +327,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     int32_t last_count = 0;
+    SlingPairing pairing;
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = m.slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
@@ -321,7 +382,11 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
-            detail::render_dynamic(dynamic, force, result);
+            if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling) {
+                render_sling(pairing, m.slots.get(), i, slot_end, dt_us, dynamic, force, result);
+            } else {
+                detail::render_dynamic(dynamic, force, result);
+            }
             m.report_dynamic(s, static_cast<uint16_t>(i), in.t_us, result, velocity, out);
             if (result.finished) {
                 s.state = EffectState::stopped;

@@ -26,4 +26,15 @@ void render_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResul
     }
 }
 
+void render_sling_pair(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
+                       float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
+    double ball_force_a[kMaxAxes] = {};
+    double ball_force_b[kMaxAxes] = {};
+    sling_pair_dynamic(a, b, ball_force_a, ball_force_b, result_a, result_b);
+    for (int i = 0; i < kMaxAxes; ++i) {
+        force_a[i] += static_cast<float>(ball_force_a[i]);
+        force_b[i] += static_cast<float>(ball_force_b[i]);
+    }
+}
+
 }  // namespace feel::detail

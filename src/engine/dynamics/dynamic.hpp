@@ -66,9 +66,27 @@ struct DynamicResult {
 
 void render_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 
+// Two Dynamic Slings rendered together: the same forces, results and states, bit for bit,
+// as render_dynamic on a and then on b, in about the time of one (their Verlet steps are
+// latency chains that overlap when interleaved: sling_dynamic.cpp). The engine pairs the
+// slings of a tick when kPairSlings; a build for size (the Cortex-M4F image, in order and
+// without overlap) renders them one by one.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kPairSlings = false;
+#else
+inline constexpr bool kPairSlings = true;
+#endif
+void render_sling_pair(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
+                       float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept;
+// A sling whose ball rests on a slack string beside a handle sensed where it was last tick:
+// its tick moves nothing and pulls nothing (sling_dynamic.cpp), so there is no chain to pair.
+[[nodiscard]] bool sling_rests(const DynamicContext& c) noexcept;
+
 // The models, one file each.
 void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, double force_a[kMaxAxes],
+                        double force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept;
 void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
 
 }  // namespace feel::detail

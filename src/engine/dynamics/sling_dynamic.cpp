@@ -65,6 +65,16 @@ constexpr double kMaxPhasePerStep = 0.025;
 // where h·ω stays below Verlet's stability limit of 2 for advances up to kBallMaxAdvanceS.
 constexpr int kMaxSteps = 1024;
 
+// The axes a run of Verlet steps holds: as many as a compile-time count says, else all.
+template <typename Count>
+struct AxisCapacity {
+    static constexpr int value = kMaxAxes;
+};
+template <int N>
+struct AxisCapacity<std::integral_constant<int, N>> {
+    static constexpr int value = N;
+};
+
 struct Sling {
     double mass = 1;          // m, force units per (position unit/s²)
     double stiffness = 0;     // k, force units per position unit
@@ -102,20 +112,30 @@ struct Sling {
     // Count is the number of the effect's axes: an int, or a compile-time constant for the
     // common two (advance says why).
     template <typename Count>
-    void acceleration(Count n, const double r[kMaxAxes], double a[kMaxAxes]) const noexcept {
+    void acceleration(Count n, const double* r, double* a) const noexcept {
         double r2 = 0;
         for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
         const double distance = std::sqrt(r2);
         // −k·(|r| − L)/|r| per unit of r, when taut. L = 0: −k·r, smooth through r = 0.
-        const double pull = distance > length ? -rate_squared * (1.0 - length / distance) : 0.0;
+        // The ratio is computed either way (inf or NaN at r = 0, then not used) so that the
+        // choice is a select, not a branch on the step's chain that a string going slack
+        // and taut would make the processor mispredict.
+        const double ratio = length / distance;
+        const double pull = distance > length ? -rate_squared * (1.0 - ratio) : 0.0;
         for (int i = 0; i < n; ++i) a[i] = pull * r[i];
+    }
+
+    // Verlet steps over h_total seconds for the fastest rate in play, rad/s.
+    static int step_count(double rate, double h_total) noexcept {
+        return static_cast<int>(
+            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
     }
 
     // The ball's angular rate about the handle when the string is at its length, rad/s:
     // what the steps must resolve besides the string's own radial rate. With L = 0 the
     // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
     template <typename Count>
-    double turning_rate(Count n, const double r[kMaxAxes], const double relative_velocity[kMaxAxes]) const noexcept {
+    double turning_rate(Count n, const double* r, const double* relative_velocity) const noexcept {
         if (length <= 0) return 0.0;
         double r2 = 0;
         double v2 = 0;
@@ -154,64 +174,135 @@ struct Sling {
     template <typename Count>
     void advance_axes(Count n, BallMotion& ball, const BallHandlePath& handle, double h_total,
                       double impulse[kMaxAxes]) const noexcept {
-        double q[kMaxAxes] = {};
-        double v[kMaxAxes] = {};
-        double r[kMaxAxes] = {};
-        double relative[kMaxAxes] = {};
-        double kicks[kMaxAxes] = {};  // Σ h·(string acceleration), the string's Δv
-        double from[kMaxAxes] = {};   // the handle's path, per effect axis
-        double path_velocity[kMaxAxes] = {};
+        VerletRun<Count> run(n);
+        begin(run, ball, handle, h_total);
+        for (int step = 0; step < run.steps; ++step) take_step(run, step);
+        finish(run, ball, impulse);
+    }
+
+    // Two slings' balls advanced together (advance_pair in ball_tick.hpp): each takes
+    // exactly the steps it takes alone, in lockstep while both have steps left. A Verlet
+    // step is one chain of dependent operations (a square root, then a division, then the
+    // kick the next position needs), about 75 cycles of latency for a few instructions;
+    // two independent chains side by side overlap in the processor, so the pair costs
+    // about what one ball costs. The same operations on each ball, so the same bits.
+    static void advance_pair(const Sling& a, BallMotion& ball_a, const BallHandlePath& handle_a, double h_a,
+                             double impulse_a[kMaxAxes], const Sling& b, BallMotion& ball_b,
+                             const BallHandlePath& handle_b, double h_b, double impulse_b[kMaxAxes]) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+        if (a.count == 2 && b.count == 2) {
+            using Two = std::integral_constant<int, 2>;
+            VerletRun<Two> run_a(Two{});
+            VerletRun<Two> run_b(Two{});
+            a.begin(run_a, ball_a, handle_a, h_a);
+            b.begin(run_b, ball_b, handle_b, h_b);
+            const int together = std::min(run_a.steps, run_b.steps);
+            int step = 0;
+            for (; step < together; ++step) {
+                a.take_step(run_a, step);
+                b.take_step(run_b, step);
+            }
+            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a, s);
+            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b, s);
+            a.finish(run_a, ball_a, impulse_a);
+            b.finish(run_b, ball_b, impulse_b);
+            return;
+        }
+#endif
+        a.advance(ball_a, handle_a, h_a, impulse_a);
+        b.advance(ball_b, handle_b, h_b, impulse_b);
+    }
+
+    // A ball between begin and finish: its state per effect axis, and the steps it takes.
+    // Sized for the count (two axes: 2), and set by begin, not zeroed: both runs of a pair
+    // then stay in registers (zeroing six axes' worth took a `rep stos` of 336 bytes each).
+    template <typename Count>
+    struct VerletRun {
+        static constexpr int kCapacity = AxisCapacity<Count>::value;
+        explicit VerletRun(Count count) noexcept : n(count) {}
+        Count n;
+        double q[kCapacity];
+        double v[kCapacity];
+        double acc[kCapacity];    // the string's acceleration at q
+        double kicks[kCapacity];  // Σ h·(string acceleration), the string's Δv
+        double from[kCapacity];   // the handle's path, per effect axis
+        double path_velocity[kCapacity];
+        int steps = 0;
+        double h = 0;
+        double half_h = 0;
+        double half_drag = 1;
+    };
+
+    template <typename Count>
+    [[gnu::always_inline]] inline void begin(VerletRun<Count>& run, const BallMotion& ball, const BallHandlePath& handle,
+               double h_total) const noexcept {
+        const Count n = run.n;
+        double r[VerletRun<Count>::kCapacity];
+        double relative[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
             const int a = axes[i];
-            q[i] = ball.position[a];
-            v[i] = ball.velocity[a];
-            from[i] = handle.from[a];
-            path_velocity[i] = handle.velocity[a];
-            r[i] = q[i] - from[i];
-            relative[i] = v[i] - path_velocity[i];
+            run.kicks[i] = 0;
+            run.q[i] = ball.position[a];
+            run.v[i] = ball.velocity[a];
+            run.from[i] = handle.from[a];
+            run.path_velocity[i] = handle.velocity[a];
+            r[i] = run.q[i] - run.from[i];
+            relative[i] = run.v[i] - run.path_velocity[i];
         }
+        acceleration(n, r, run.acc);
         // A ball at rest on a slack string beside a still handle stays exactly where it is
-        // (every Verlet step maps it to itself): no steps, no impulse.
+        // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
+        // ball back as it was and mass·0).
         bool idle = true;
-        for (int i = 0; i < n; ++i) idle = idle && v[i] == 0 && path_velocity[i] == 0;
-        if (idle) {
-            double acc[kMaxAxes] = {};
-            acceleration(n, r, acc);
-            for (int i = 0; i < n; ++i) idle = idle && acc[i] == 0;
-            if (idle) {
-                for (int i = 0; i < n; ++i) impulse[axes[i]] = 0;
-                return;
-            }
+        for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && run.acc[i] == 0;
+        if (idle) return;
+        // The steps the string's own rate asks for depend on the advance's length alone;
+        // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
+        // not a select, so that the processor predicts it and starts stepping without
+        // waiting for the turning rate's square roots and division, then the count's
+        // division, rounding and conversions (about a hundred cycles on the ball's chain).
+        // The same numbers either way: max(ω, turning) is ω.
+        const double omega = std::sqrt(rate_squared);
+        const int string_steps = step_count(omega, h_total);
+        const double string_h = h_total / string_steps;
+        const double turning = turning_rate(n, r, relative);
+        if (turning <= omega) [[likely]] {
+            run.steps = string_steps;
+            run.h = string_h;
+        } else {
+            run.steps = step_count(std::max(omega, turning), h_total);
+            run.h = h_total / run.steps;
         }
-        const double rate = std::max(std::sqrt(rate_squared), turning_rate(n, r, relative));
-        const int steps = static_cast<int>(
-            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
-        const double h = h_total / steps;
-        const double half_h = 0.5 * h;
-        const double half_drag = air_over_half_step(h);
+        run.half_h = 0.5 * run.h;
+        run.half_drag = air_over_half_step(run.h);
+    }
 
-        double acc[kMaxAxes] = {};
-        acceleration(n, r, acc);
-        for (int step = 0; step < steps; ++step) {
-            const double t_end = (step + 1) * h;
-            for (int i = 0; i < n; ++i) {
-                const double kick = half_h * acc[i];
-                v[i] = v[i] * half_drag + kick;
-                kicks[i] += kick;
-                q[i] += h * v[i];
-                r[i] = q[i] - (from[i] + path_velocity[i] * t_end);
-            }
-            acceleration(n, r, acc);
-            for (int i = 0; i < n; ++i) {
-                const double kick = half_h * acc[i];
-                v[i] = (v[i] + kick) * half_drag;
-                kicks[i] += kick;
-            }
-        }
+    template <typename Count>
+    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run, int step) const noexcept {
+        const Count n = run.n;
+        const double t_end = (step + 1) * run.h;
+        double r[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
-            ball.position[axes[i]] = q[i];
-            ball.velocity[axes[i]] = v[i];
-            impulse[axes[i]] = mass * kicks[i];
+            const double kick = run.half_h * run.acc[i];
+            run.v[i] = run.v[i] * run.half_drag + kick;
+            run.kicks[i] += kick;
+            run.q[i] += run.h * run.v[i];
+            r[i] = run.q[i] - (run.from[i] + run.path_velocity[i] * t_end);
+        }
+        acceleration(n, r, run.acc);
+        for (int i = 0; i < n; ++i) {
+            const double kick = run.half_h * run.acc[i];
+            run.v[i] = (run.v[i] + kick) * run.half_drag;
+            run.kicks[i] += kick;
+        }
+    }
+
+    template <typename Count>
+    [[gnu::always_inline]] inline void finish(const VerletRun<Count>& run, BallMotion& ball, double impulse[kMaxAxes]) const noexcept {
+        for (int i = 0; i < run.n; ++i) {
+            ball.position[axes[i]] = run.q[i];
+            ball.velocity[axes[i]] = run.v[i];
+            impulse[axes[i]] = mass * run.kicks[i];
         }
     }
 
@@ -225,13 +316,68 @@ struct Sling {
     }
 };
 
+void rest_sling(const DynamicContext& c, DynamicResult& result) noexcept {
+    const SlotParams& p = *c.params;
+    BallState& ball = c.state->ball;
+    int axes[kMaxAxes] = {};
+    for (int i = 0; i < p.axis_count; ++i) {
+        axes[i] = axis_index(p.axes[i]);
+        ball.handle[axes[i]] = c.position[axes[i]];  // the same value; as ball_expected_path writes it
+        ball.handle_velocity[axes[i]] = c.velocity[axes[i]];
+    }
+    report_ball(ball.now, c, axes, p.axis_count, result);
+    result.finished = false;
+}
+
 }  // namespace
 
+// A ball at rest on a slack string beside a handle sensed where it was last tick: both of
+// the tick's advances would be idle (Sling::begin: the handle's line has slope 0, the ball
+// no velocity, the string no pull), the ball stays where it is and the reaction is 0 (ball_tick
+// would add −0/T to a force of +0, which leaves +0). Only the handle's velocity is taken
+// over; the rest of the tick, the Sling's units and both advances' set-up, is skipped. A
+// sling left hanging beside a handle at rest costs this much.
+bool sling_rests(const DynamicContext& c) noexcept {
+    const DynamicState& state = *c.state;
+    if (!state.initialized || !(c.dt_s > 0)) return false;
+    const SlotParams& p = *c.params;
+    const BallState& ball = state.ball;
+    double r2 = 0;
+    for (int i = 0; i < p.axis_count; ++i) {
+        const int a = axis_index(p.axes[i]);
+        if (ball.now.velocity[a] != 0 || c.position[a] != ball.handle[a]) return false;
+        const double r = ball.now.position[a] - c.position[a];
+        r2 += r * r;
+    }
+    // The string is slack (Sling::acceleration's test, on the same r): no pull.
+    return !(std::sqrt(r2) > static_cast<double>(p.dynamic->string_length));
+}
+
 void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
+    if (sling_rests(c)) {
+        rest_sling(c, result);
+        return;
+    }
     const Sling sling(*c.params, *c.config);
     ball_tick(sling, sling.axes, sling.count, c, force);
     report_ball(c.state->ball.now, c, sling.axes, sling.count, result);
     result.finished = false;
+}
+
+void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, double force_a[kMaxAxes],
+                        double force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
+    if (sling_rests(a) || sling_rests(b)) {  // nothing to overlap
+        sling_dynamic(a, force_a, result_a);
+        sling_dynamic(b, force_b, result_b);
+        return;
+    }
+    const Sling sling_a(*a.params, *a.config);
+    const Sling sling_b(*b.params, *b.config);
+    ball_tick_pair(sling_a, a, force_a, sling_b, b, force_b);
+    report_ball(a.state->ball.now, a, sling_a.axes, sling_a.count, result_a);
+    report_ball(b.state->ball.now, b, sling_b.axes, sling_b.count, result_b);
+    result_a.finished = false;
+    result_b.finished = false;
 }
 
 }  // namespace feel::detail

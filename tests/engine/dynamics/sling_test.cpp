@@ -313,6 +313,73 @@ TEST(Sling, TheOrderOfTheAxesDoesNotMatter) {
     }
 }
 
+// Two slings rendered together (sling_pair_dynamic: their Verlet steps interleaved) move,
+// pull and report exactly as each rendered alone: a sling's ball knows nothing of another.
+// Different strings (different step counts), one axis beside two, a start a few ticks
+// later, stalls and repeated timestamps, and stretches of a still handle where a ball left
+// at rest takes the short way.
+TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
+    struct Case {
+        EffectParams a, b;
+    };
+    EffectParams one_axis = sling_params(1500, 800, 9000, 200);
+    one_axis.axis_count = 1;
+    const Case cases[] = {{sling_params(2000, 1500, 3000, 500), sling_params(2000, 1500, 3000, 500)},
+                          {sling_params(500, 0, 10000, 0), sling_params(9000, 2500, 1000, 3000)},
+                          {one_axis, sling_params(4000, 1200, 6000, 100)}};
+    const EngineConfig config{};
+    for (const Case& k : cases) {
+        const detail::SlotParams pa = detail::slot_params(k.a, &k.a.dynamic);
+        const detail::SlotParams pb = detail::slot_params(k.b, &k.b.dynamic);
+        detail::DynamicState alone_a{}, alone_b{}, together_a{}, together_b{};
+        float position[kMaxAxes] = {}, velocity[kMaxAxes] = {};
+        const float acceleration[kMaxAxes] = {};
+        const float start[kMaxAxes] = {};
+        for (int i = 0; i < 3000; ++i) {
+            const double t = i * kBallTickS;
+            const bool still = (i / 400) % 3 == 2;  // 400 ticks of every 1200 the hand holds still
+            if (!still) {
+                position[0] = static_cast<float>(std::round(4000 * std::cos(7 * t) + 300 * std::sin(90 * t)));
+                position[1] = static_cast<float>(std::round(4000 * std::sin(7 * t)));
+                velocity[0] = static_cast<float>(-28000 * std::sin(7 * t));
+                velocity[1] = static_cast<float>(28000 * std::cos(7 * t));
+            } else {
+                velocity[0] = velocity[1] = 0;
+            }
+            const double dt = i == 0 ? 0 : i % 97 == 0 ? 0.25 : i % 89 == 0 ? 0 : kBallTickS;
+            const bool b_plays = i >= 5;
+            using Context = detail::DynamicContext;
+            const Context a1{&pa, &config, position, velocity, acceleration, start, dt, 0, &alone_a};
+            const Context b1{&pb, &config, position, velocity, acceleration, start, dt, 0, &alone_b};
+            const Context a2{&pa, &config, position, velocity, acceleration, start, dt, 0, &together_a};
+            const Context b2{&pb, &config, position, velocity, acceleration, start, dt, 0, &together_b};
+            double fa1[kMaxAxes] = {}, fb1[kMaxAxes] = {}, fa2[kMaxAxes] = {}, fb2[kMaxAxes] = {};
+            detail::DynamicResult ra1, rb1, ra2, rb2;
+            detail::sling_dynamic(a1, fa1, ra1);
+            if (b_plays) {
+                detail::sling_dynamic(b1, fb1, rb1);
+                detail::sling_pair_dynamic(a2, b2, fa2, fb2, ra2, rb2);
+            } else {
+                detail::sling_dynamic(a2, fa2, ra2);
+            }
+            for (int ax = 0; ax < kMaxAxes; ++ax) {
+                ASSERT_EQ(fa1[ax], fa2[ax]) << "case " << (&k - cases) << " tick " << i << " axis " << ax;
+                ASSERT_EQ(fb1[ax], fb2[ax]) << "case " << (&k - cases) << " tick " << i << " axis " << ax;
+                ASSERT_EQ(ra1.mass_position[ax], ra2.mass_position[ax]) << "case " << (&k - cases) << " tick " << i;
+                ASSERT_EQ(rb1.mass_velocity[ax], rb2.mass_velocity[ax]) << "case " << (&k - cases) << " tick " << i;
+                ASSERT_EQ(alone_a.ball.now.position[ax], together_a.ball.now.position[ax])
+                    << "case " << (&k - cases) << " tick " << i;
+                if (b_plays) {  // before its first tick b's ball is not the live member of its state
+                    ASSERT_EQ(alone_b.ball.now.velocity[ax], together_b.ball.now.velocity[ax])
+                        << "case " << (&k - cases) << " tick " << i;
+                }
+            }
+        }
+        // The motion was real: both balls were swung out beyond their strings.
+        EXPECT_GT(std::fabs(alone_a.ball.now.position[0]) + std::fabs(alone_b.ball.now.position[0]), 100.0);
+    }
+}
+
 // Random parameters across their whole ranges, and a random hand: jumps across the
 // travel, jitter, stalls, repeated timestamps. Nothing may become NaN or infinite. (The
 // force is the mean pull over the coming tick, along a string that turns during it, so it
