@@ -110,7 +110,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     const int blocks = p.axis_count;
     for (int i = 0; i < blocks; ++i) {
         const int a = axis_index(p.axes[i]);
-        const ConditionBlock& b = p.conditions[i];
+        const SlotConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
         Bristle& bristle = block.bristle;
         FrictionBlockLaw& law = block.law;
