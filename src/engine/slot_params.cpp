@@ -89,7 +89,8 @@ static_assert(holds<int16_t>(range::kCartesianComponent));
 template <class To, class From>
 void copy_dynamic_fields(EffectType t, int axes, const From& from, To& to) noexcept {
 #define FEEL_COPY(field) to.field = static_cast<decltype(to.field)>(from.field);
-#define FEEL_COPY_LAW(field) to.control_law[i].field = static_cast<decltype(to.control_law[i].field)>(from.control_law[i].field);
+#define FEEL_COPY_LAW(field) \
+    to.control_law[i].field = static_cast<decltype(to.control_law[i].field)>(from.control_law[i].field);
     switch (t) {
         case EffectType::dynamic_recoil: FEEL_RECOIL_FIELDS(FEEL_COPY) break;
         case EffectType::dynamic_impact: FEEL_IMPACT_FIELDS(FEEL_COPY) break;
@@ -110,28 +111,18 @@ void copy_dynamic_fields(EffectType t, int axes, const From& from, To& to) noexc
 #undef FEEL_COPY
 }
 
-SlotConditionBlock slot_condition_block(const ConditionBlock& b) noexcept {
-    SlotConditionBlock s;
-    s.pos_coefficient = static_cast<int16_t>(b.pos_coefficient);
-    s.neg_coefficient = static_cast<int16_t>(b.neg_coefficient);
-    s.offset = static_cast<int16_t>(b.offset);
-    s.pos_saturation = static_cast<int16_t>(b.pos_saturation);
-    s.neg_saturation = static_cast<int16_t>(b.neg_saturation);
-    s.deadband = static_cast<int16_t>(b.deadband);
-    s.offset_mode = b.offset_mode;
-    return s;
-}
-
-ConditionBlock condition_block(const SlotConditionBlock& s) noexcept {
-    ConditionBlock b;
-    b.pos_coefficient = s.pos_coefficient;
-    b.neg_coefficient = s.neg_coefficient;
-    b.offset = s.offset;
-    b.pos_saturation = s.pos_saturation;
-    b.neg_saturation = s.neg_saturation;
-    b.deadband = s.deadband;
-    b.offset_mode = s.offset_mode;
-    return b;
+// A friction's block between its forms (the host's int32 fields, the slot's int16).
+template <class To, class From>
+To condition_block(const From& from) noexcept {
+    To to;
+    to.pos_coefficient = static_cast<decltype(to.pos_coefficient)>(from.pos_coefficient);
+    to.neg_coefficient = static_cast<decltype(to.neg_coefficient)>(from.neg_coefficient);
+    to.offset = static_cast<decltype(to.offset)>(from.offset);
+    to.pos_saturation = static_cast<decltype(to.pos_saturation)>(from.pos_saturation);
+    to.neg_saturation = static_cast<decltype(to.neg_saturation)>(from.neg_saturation);
+    to.deadband = static_cast<decltype(to.deadband)>(from.deadband);
+    to.offset_mode = from.offset_mode;
+    return to;
 }
 
 // The values of a direction its kind reads (effect_validation.cpp checks exactly these).
@@ -185,6 +176,15 @@ To custom_block(const From& from) noexcept {
     return to;
 }
 
+#undef FEEL_CONTROL_LAW_FIELDS
+#undef FEEL_PADDLE_FIELDS
+#undef FEEL_SLING_FIELDS
+#undef FEEL_CENTER_DRIFT_FIELDS
+#undef FEEL_INERTIA_FIELDS
+#undef FEEL_LIQUID_FIELDS
+#undef FEEL_IMPACT_FIELDS
+#undef FEEL_RECOIL_FIELDS
+
 }  // namespace
 
 SlotDynamicBlock slot_dynamic_block(const EffectParams& p) noexcept {
@@ -226,7 +226,9 @@ SlotParams slot_params(const EffectParams& p, const SlotDynamicBlock* dynamic_bl
             }
             break;
         case Block::conditions:
-            for (int i = 0; i < condition_blocks(p); ++i) s.conditions[i] = slot_condition_block(p.conditions[i]);
+            for (int i = 0; i < condition_blocks(p); ++i) {
+                s.conditions[i] = condition_block<SlotConditionBlock>(p.conditions[i]);
+            }
             break;
         case Block::periodic: s.periodic = periodic_block<SlotPeriodicBlock>(p.periodic); break;
         case Block::constant: s.constant = p.constant; break;
@@ -265,7 +267,9 @@ EffectParams effect_params(const SlotParams& s) noexcept {
             }
             break;
         case Block::conditions:
-            for (int i = 0; i < condition_blocks(p); ++i) p.conditions[i] = condition_block(s.conditions[i]);
+            for (int i = 0; i < condition_blocks(p); ++i) {
+                p.conditions[i] = condition_block<ConditionBlock>(s.conditions[i]);
+            }
             break;
         case Block::periodic: p.periodic = periodic_block<PeriodicBlock>(s.periodic); break;
         case Block::constant: p.constant = s.constant; break;
