@@ -44,7 +44,7 @@ struct Slot {
     // The clock: the effect time of the current or last play, advanced by the tick's length
     // at every tick it runs (0 at its first: the same integer as that tick's time minus its
     // start, and pause, which freezes it, needs no start time to move). Next to params
-    // (8-aligned on the board, 104 bytes) so that the slot pads nothing before it.
+    // (96 bytes on the board, a multiple of 8) so that the slot pads nothing before it.
     int64_t elapsed_us = 0;
     // What the tick needs of params every tick, worked out once per command (prepare_slot).
     // Fields widest first, so that the slot pads little (issue 14's RAM).
