@@ -323,8 +323,9 @@ public:
     [[nodiscard]] EffectStatus status(EffectId id) const noexcept;
     // Copies the effect's parameters into `out` (what update() merges into). The device keeps
     // only what the effect reads: the other types' blocks, an envelope without has_envelope,
-    // a trigger's index without a trigger and the condition blocks beyond the effect's axes
-    // come back as their defaults.
+    // a trigger's index without a trigger, the condition blocks beyond the effect's axes, a
+    // dynamic block's fields of the other dynamics (and a control law's beyond the effect's
+    // axes) and the direction values its kind does not read come back as their defaults.
     Error params(EffectId id, EffectParams& out) const noexcept;
 
     // Changes the fields of `field_mask` (effect_field::k*) to those of `params`. The merged

@@ -59,25 +59,25 @@ void polar_factors_turns(float turns, float factors[kMaxAxes]) noexcept {
 
 void direction_factors(const SlotParams& params, float factors[kMaxAxes]) noexcept {
     clear(factors);
-    const Direction& d = params.direction;
+    const SlotDirection& d = params.direction;
     switch (d.kind) {
         case DirectionKind::none:
             factors[axis_index(params.axes[0])] = 1.0f;
             return;
         case DirectionKind::polar:
-            polar_factors(d.value[0], factors);
+            polar_factors(d.value(0), factors);
             return;
         case DirectionKind::cartesian:
         case DirectionKind::moments: {
-            const double from[3] = {static_cast<double>(d.value[0]), static_cast<double>(d.value[1]),
-                                    static_cast<double>(d.value[2])};
+            const double from[3] = {static_cast<double>(d.value(0)), static_cast<double>(d.value(1)),
+                                    static_cast<double>(d.value(2))};
             from_vector(params, from, params.axis_count < 3 ? params.axis_count : 3, factors);
             return;
         }
         case DirectionKind::spherical: {
             double sin_az = 0, cos_az = 0, sin_el = 0, cos_el = 0;
-            sin_cos(d.value[0], sin_az, cos_az);
-            sin_cos(d.value[1], sin_el, cos_el);
+            sin_cos(d.value(0), sin_az, cos_az);
+            sin_cos(d.value(1), sin_el, cos_el);
             const double from[3] = {sin_el * cos_az, sin_el * sin_az, cos_el};
             // Spherical directions are over x, y, z by definition, whatever the axis order.
             factors[axis_index(Axis::x)] = static_cast<float>(-from[0]);

@@ -180,7 +180,7 @@ const EngineConfig& Engine::config() const noexcept { return impl_->config; }
 
 CreateResult Engine::create(const EffectParams& params, std::span<const int16_t> samples) noexcept {
     Impl& m = *impl_;
-    if (m.config_error) return {{}, m.config_error};
+    if (m.config_invalid) return {{}, detail::check_engine_config(m.config)};
     if (Error e = validate_effect(params, samples)) return {{}, e};
     for (int i = 0; i < params.axis_count; ++i) {
         if (axis_index(params.axes[i]) >= m.config.axis_count) {
@@ -221,7 +221,6 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.elapsed_us = 0;
     s.starts = 0;
     s.last_end = PlayEnd::none;
-    s.pool_bytes = bytes;
     m.pool_used_bytes += bytes;
     detail::prepare_slot(s);
     m.reset_memory(s);
@@ -269,7 +268,7 @@ int32_t Engine::gain() const noexcept { return impl_->device_gain; }
 
 void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     Impl& m = *impl_;
-    const int axes = m.config_error ? 0 : m.config.axis_count;
+    const int axes = m.config_invalid ? 0 : m.config.axis_count;
 
     // The handle's motion as the conditions see it: sensed position, estimated velocity
     // and acceleration. The reported position starts as the sensed one; clipping walls
@@ -478,7 +477,17 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
 bool Engine::pop_report(DynamicReport& report) noexcept {
     Impl& m = *impl_;
     if (m.report_count == 0) return false;
-    report = m.reports[m.report_head];
+    const detail::QueuedReport& queued = m.reports[m.report_head];
+    report = DynamicReport{};
+    report.effect = queued.effect;
+    report.kind = queued.kind;
+    report.t_us = queued.t_us;
+    report.axis_count = queued.axis_count;
+    for (int i = 0; i < kMaxAxes; ++i) {
+        report.position[i] = queued.position[i];
+        report.velocity[i] = queued.velocity[i];
+        report.handle_velocity[i] = queued.handle_velocity[i];
+    }
     m.report_head = (m.report_head + 1) % m.report_capacity;
     --m.report_count;
     return true;

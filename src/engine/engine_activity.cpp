@@ -35,7 +35,7 @@ Classification by_duration(int64_t duration_us) noexcept {
 // A force profile loops when its duration outlasts the samples (they repeat from the first
 // frame) or when it plays several iterations; its period is the length of one loop.
 Classification classify_profile(const detail::SlotParams& p) noexcept {
-    const CustomBlock& c = p.custom;
+    const detail::SlotCustomBlock& c = p.custom;
     const int64_t loop_us = static_cast<int64_t>(c.sample_count / c.channels) * c.sample_period_us;
     if (p.duration_us == kInfiniteUs || p.duration_us > loop_us) {
         return {DisturbanceClass::periodic, loop_us};
@@ -63,7 +63,7 @@ void Engine::activity(EngineActivity& out) const noexcept {
         for (float& f : per_class) f = 0.0f;
     }
     // Paused or with the actuators off, the tick put no force on the handle.
-    if (!m.have_previous || m.config_error || m.paused || !m.actuators_enabled) return;
+    if (!m.have_previous || m.config_invalid || m.paused || !m.actuators_enabled) return;
 
     const int axes = m.config.axis_count;
     constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);

@@ -147,7 +147,8 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
     if (Error e = validate_effect(merged, merged_samples)) return e;
     if (Error e = check_device_axes(merged, m.config.axis_count)) return e;
     const int32_t bytes = effect_pool_bytes(merged);
-    const int32_t free_after_release = m.pool_total_bytes - m.pool_used_bytes + s->pool_bytes;
+    const int32_t held = detail::slot_pool_bytes(s->params);
+    const int32_t free_after_release = m.pool_total_bytes - m.pool_used_bytes + held;
     if (bytes > free_after_release) return detail::pool_full_error(bytes, free_after_release);
     if (new_samples) {
         // The effect's own samples are released first, so the new ones fit if the free
@@ -162,8 +163,7 @@ Error Engine::update(EffectId id, const EffectParams& params, uint32_t field_mas
 
     // Nothing can fail from here on.
     Impl::store_params(*s, merged);
-    m.pool_used_bytes += bytes - s->pool_bytes;
-    s->pool_bytes = bytes;
+    m.pool_used_bytes += bytes - held;
     m.prepare(*s);
     if (restart) m.begin_play(*s, 0);
     return {};

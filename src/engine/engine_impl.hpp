@@ -20,13 +20,32 @@ namespace detail {
 // A dynamic's memory: its parameters' block (SlotParams::dynamic points here), and between
 // ticks its simulated mass and its interim reports' schedule.
 struct DynamicRecord {
-    DynamicBlock block{};
+    SlotDynamicBlock block{};
     DynamicState state{};
     int64_t next_interim_us = 0;  // when the next interim report is due
 };
 
+// A dynamic report as the engine's queue holds it (Engine::pop_report widens it to the
+// host's DynamicReport): the kind and the axis count (1..kMaxAxes) in the bytes the host's
+// record pads after its id, so a report takes 40 bytes instead of 48 on 2 axes (issue 14:
+// RAM on a Cortex-M4F). Every value is the host record's, exactly.
+struct QueuedReport {
+    EffectId effect{};
+    DynamicReport::Kind kind = DynamicReport::Kind::interim;
+    int8_t axis_count = 0;
+    int64_t t_us = 0;
+    float position[kMaxAxes] = {};
+    float velocity[kMaxAxes] = {};
+    float handle_velocity[kMaxAxes] = {};
+};
+
 struct Slot {
     SlotParams params{};  // the header and its type's block (slot_params.hpp)
+    // The clock: the effect time of the current or last play, advanced by the tick's length
+    // at every tick it runs (0 at its first: the same integer as that tick's time minus its
+    // start, and pause, which freezes it, needs no start time to move). Next to params
+    // (96 bytes on the board, a multiple of 8) so that the slot pads nothing before it.
+    int64_t elapsed_us = 0;
     // What the tick needs of params every tick, worked out once per command (prepare_slot).
     // Fields widest first, so that the slot pads little (issue 14's RAM).
     float direction[kMaxAxes] = {};       // force per unit value on each device axis
@@ -42,14 +61,10 @@ struct Slot {
         detail::DynamicRecord* dynamic_memory;
     };
 
-    // The clock, the commands and the parameter memory (engine_commands.cpp, pool_cost.cpp).
-    // The effect time of the current or last play, advanced by the tick's length at every
-    // tick it runs (0 at its first: the same integer as that tick's time minus its start,
-    // and pause, which freezes it, needs no start time to move).
-    int64_t elapsed_us = 0;
+    // The commands (engine_commands.cpp). The parameter memory an effect holds is not kept:
+    // it is slot_pool_bytes(params) (pool_cost.cpp).
     int32_t completed_iterations = 0;      // of the current or last play, set by the tick
     uint32_t starts = 0;                   // times started since created
-    int32_t pool_bytes = 0;                // parameter memory this effect holds (effect_pool_bytes)
     int16_t iterations_override = 0;       // this play's count from start(id, n, solo); 0 = the effect's
     uint16_t generation = 0;
 
@@ -108,6 +123,9 @@ void prepare_slot(Slot& s) noexcept;
 // 0 the bytes of max_effects of the largest effect plus max_samples samples), in bytes.
 [[nodiscard]] int64_t pool_capacity_bytes(const EngineConfig& c) noexcept;
 
+// The parameter memory a slot's effect holds: effect_pool_bytes of its parameters.
+[[nodiscard]] int32_t slot_pool_bytes(const SlotParams& params) noexcept;
+
 // The device_full error of an effect that needs `needed` bytes where `free_bytes` are free:
 // value = needed, allowed = 0..free_bytes, for a host that wants the numbers.
 [[nodiscard]] Error pool_full_error(int32_t needed, int32_t free_bytes) noexcept;
@@ -117,20 +135,20 @@ void prepare_slot(Slot& s) noexcept;
 struct Engine::Impl {
     explicit Impl(const EngineConfig& c)
         : config(c),
-          config_error(detail::check_engine_config(c)),
-          slot_count(config_error ? 0 : c.max_effects),
+          config_invalid(static_cast<bool>(detail::check_engine_config(c))),
+          slot_count(config_invalid ? 0 : c.max_effects),
           slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
-          dynamic_pool(config_error ? 0 : detail::dynamics_capacity(c)),
-          condition_pool(config_error ? 0 : detail::stateful_conditions_capacity(c)),
+          dynamic_pool(config_invalid ? 0 : detail::dynamics_capacity(c)),
+          condition_pool(config_invalid ? 0 : detail::stateful_conditions_capacity(c)),
           // Only friction and texture render last, and each holds a condition's memory.
           last_slots(new LastSlot[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
-          samples(config_error ? 0 : c.max_samples, slot_count),
-          report_capacity(config_error ? 1 : c.report_capacity),
-          reports(new DynamicReport[static_cast<size_t>(report_capacity)]) {
+          samples(config_invalid ? 0 : c.max_samples, slot_count),
+          report_capacity(config_invalid ? 1 : c.report_capacity),
+          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
-        interim_period_us = config_error ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
-        pool_total_bytes = config_error ? 0 : static_cast<int32_t>(detail::pool_capacity_bytes(c));
+        interim_period_us = config_invalid ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
+        pool_total_bytes = config_invalid ? 0 : static_cast<int32_t>(detail::pool_capacity_bytes(c));
     }
 
     // Puts a slot at the beginning of a new play (start, a restarting update, a reflex): it
@@ -168,7 +186,7 @@ struct Engine::Impl {
     // Stores valid parameters in a slot holding its record (a dynamic's block into the record).
     static void store_params(detail::Slot& s, const EffectParams& p) noexcept {
         const bool dynamic = effect_class(p.type) == EffectClass::dynamic;
-        if (dynamic) s.dynamic_memory->block = p.dynamic;
+        if (dynamic) s.dynamic_memory->block = detail::slot_dynamic_block(p);
         s.params = detail::slot_params(p, dynamic ? &s.dynamic_memory->block : nullptr);
     }
 
@@ -187,7 +205,7 @@ struct Engine::Impl {
             s.dynamic_memory->state = detail::DynamicState{};
             s.dynamic_memory->next_interim_us = 0;
         } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
-            *s.condition_memory = detail::ConditionState{};
+            s.condition_memory->start_fresh(s.params.type);
         }
     }
 
@@ -206,8 +224,7 @@ struct Engine::Impl {
             condition_pool.release(s.condition_memory);
         }
         s.condition_memory = nullptr;
-        pool_used_bytes -= s.pool_bytes;
-        s.pool_bytes = 0;
+        pool_used_bytes -= slot_pool_bytes(s.params);
         s.state = EffectState::free;
         ++s.generation;
         while (slot_end > 0 && slots[slot_end - 1].state == EffectState::free) --slot_end;
@@ -224,7 +241,7 @@ struct Engine::Impl {
 
     // The report queue: a ring the tick writes and the host drains (single thread for now;
     // the device runtime puts a lock-free SPSC queue between them).
-    void push_report(const DynamicReport& r) noexcept {
+    void push_report(const detail::QueuedReport& r) noexcept {
         if (report_count == report_capacity) {
             ++reports_dropped;
             return;
@@ -247,7 +264,7 @@ struct Engine::Impl {
         int64_t& next_interim_us = s.dynamic_memory->next_interim_us;
         const bool interim_due = s.params.dynamic->interim_reporting && t_us >= next_interim_us;
         if (!interim_due && !r.finished) return;
-        DynamicReport report;
+        detail::QueuedReport report;
         report.effect = EffectId{index, s.generation};
         report.kind = r.finished ? DynamicReport::Kind::final : DynamicReport::Kind::interim;
         report.t_us = t_us;
@@ -275,7 +292,9 @@ struct Engine::Impl {
     }
 
     EngineConfig config;
-    Error config_error;
+    // The config was refused: every create fails with check_engine_config(config), worked
+    // out again when asked (the config never changes) rather than kept (88 bytes).
+    bool config_invalid;
     int32_t slot_count;
     std::unique_ptr<detail::Slot[]> slots;
     // The effects' memory between ticks, by kind (record_pool.hpp; Slot::condition_memory,
@@ -294,7 +313,7 @@ struct Engine::Impl {
     detail::MotionEstimator motion;
     int64_t interim_period_us = 1000;  // between interim reports (EngineConfig::interim_report_hz)
     int32_t report_capacity;
-    std::unique_ptr<DynamicReport[]> reports;
+    std::unique_ptr<detail::QueuedReport[]> reports;
     int32_t report_head = 0;
     int32_t report_count = 0;
     uint64_t reports_dropped = 0;

@@ -198,7 +198,7 @@ bool fit_parabola(const AxisWindow& w, int r, int n, float band, float& curvatur
 // sawtooth, which a middle-sized window can fail while both a short and a long one pass;
 // the long one is the better estimate, and for steady motion this order needs one fit.
 template <typename Fit>
-int adaptive_window(const AxisWindow& w, const int* rung_n, int rung_count, int min_n, float band, Fit fit,
+int adaptive_window(const AxisWindow& w, const uint8_t* rung_n, int rung_count, int min_n, float band, Fit fit,
                     float& value) noexcept {
     for (int r = rung_count - 1; r >= 0; --r) {
         const int n = rung_n[r];
@@ -589,12 +589,12 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     p.steady_interval_us = max_n >= 1 && steady_run_ >= max_n ? steady_interval_us_ : 0;
     p.rung_count = 0;
     for (int n : kLadder) {
-        if (n < max_n) p.rung_n[p.rung_count++] = n;
+        if (n < max_n) p.rung_n[p.rung_count++] = static_cast<uint8_t>(n);
     }
-    p.rung_n[p.rung_count++] = max_n;
+    p.rung_n[p.rung_count++] = static_cast<uint8_t>(max_n);
     for (int r = 0, k = -1; r < p.rung_count; ++r) {
         while (k + 1 < kLadderSize && kLadder[k + 1] <= p.rung_n[r]) ++k;
-        p.rung_ladder[r] = k >= kFirstSummed ? k : -1;
+        p.rung_ladder[r] = static_cast<int8_t>(k >= kFirstSummed ? k : -1);
     }
     float sum[5] = {};
     int i = 0;

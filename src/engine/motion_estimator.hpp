@@ -50,6 +50,7 @@ public:
     static constexpr int kLadder[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96};
     static constexpr int kLadderSize = static_cast<int>(sizeof kLadder / sizeof kLadder[0]);
     static constexpr int kRungs = kLadderSize + 1;
+    static_assert(kHistory - 1 <= UINT8_MAX && kLadderSize <= INT8_MAX, "TimePattern keeps rungs in bytes");
     // Positions enter the running sums as integers of 1/fixed_scale_ position unit: the
     // power of two that makes a unit at most 1/kFixedPerCount of a sensor count (exact for
     // the device profiles' quantized positions; far inside the fit's band in any case),
@@ -105,8 +106,9 @@ private:
     struct TimePattern {
         int max_n = 0;               // samples 0..max_n are within kMaxWindowUs of the newest
         int rung_count = 0;          // windows tried: rung_n[0..rung_count-1], the last max_n
-        int rung_n[kRungs] = {};     // their lengths, ascending
-        int rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
+        // Bytes (issue 14's RAM): a length is at most kHistory - 1 = 127, an index at most 12.
+        uint8_t rung_n[kRungs] = {};     // their lengths, ascending
+        int8_t rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
         float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
         // u_i = -age_i / kMaxWindowUs, in [-1, 0]. The fits square it where they need u_i²
         // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).

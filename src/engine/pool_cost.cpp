@@ -16,7 +16,8 @@ namespace feel {
 
 namespace {
 
-int32_t type_specific_bytes(const EffectParams& p) noexcept {
+template <class Params>
+int32_t type_specific_bytes(const Params& p) noexcept {
     if (is_periodic(p.type)) return pool_cost::kPeriodic;
     if (is_sweep(p.type)) return pool_cost::kAdvancedPeriodic;
     switch (p.type) {
@@ -44,11 +45,17 @@ int32_t type_specific_bytes(const EffectParams& p) noexcept {
     return 0;
 }
 
+// Of an EffectParams or a slot's SlotParams (the same field names).
+template <class Params>
+int32_t parameter_bytes(const Params& p) noexcept {
+    return pool_cost::kEffect + (p.has_envelope ? pool_cost::kEnvelope : 0) + type_specific_bytes(p);
+}
+
 }  // namespace
 
-int32_t effect_pool_bytes(const EffectParams& params) noexcept {
-    return pool_cost::kEffect + (params.has_envelope ? pool_cost::kEnvelope : 0) + type_specific_bytes(params);
-}
+int32_t effect_pool_bytes(const EffectParams& params) noexcept { return parameter_bytes(params); }
+
+int32_t detail::slot_pool_bytes(const SlotParams& params) noexcept { return parameter_bytes(params); }
 
 int64_t detail::pool_capacity_bytes(const EngineConfig& c) noexcept {
     if (c.pool_bytes != 0) return c.pool_bytes;

@@ -44,6 +44,102 @@ struct CurvedConditions {
     OffsetMode offset_modes[kMaxAxes];
 };
 
+// A friction's block (§6.6.a) in a slot: every field within ±10000, in 16 bits (14 bytes
+// where the host's ConditionBlock takes 28). Friction reads its blocks as integers.
+struct SlotConditionBlock {
+    int16_t pos_coefficient = 0;
+    int16_t neg_coefficient = 0;
+    int16_t offset = 0;
+    int16_t pos_saturation = kFullScale;
+    int16_t neg_saturation = kFullScale;
+    int16_t deadband = 0;
+    OffsetMode offset_mode = OffsetMode::absolute;
+};
+
+// A periodic's or sweep's block (§6.6.b, §6.6.i) in a slot: the period (at most 65e6 µs) in
+// 32 bits, so that no member of the union needs 8-byte alignment; the rest as the host's.
+struct SlotPeriodicBlock {
+    int32_t magnitude = 0;
+    int32_t offset = 0;
+    int32_t period_us = 1;
+    int32_t phase = 0;
+    int32_t sweep_start_angle = 0;
+    int32_t sweep_end_angle = 0;
+    SweepSense sweep_sense = SweepSense::clockwise;
+};
+
+// A force profile's block (§6.6.d) in a slot: the sample period (at most 65e6 µs) in 32 bits.
+struct SlotCustomBlock {
+    int32_t channels = 1;
+    int32_t sample_period_us = 1;
+    int32_t sample_count = 0;
+};
+
+// One axis of a Dynamic Control Law (§8.4) in a dynamic's record: every field within
+// 0..10000 or ±10000, in 16 bits.
+struct SlotControlLawBlock {
+    int16_t mass = 1;
+    int16_t k_pos = 1;
+    int16_t k_neg = 1;
+    int16_t b = 0;
+    int16_t vel_init = 0;
+    int16_t pos_init = 0;
+    int16_t half_cycles = 0;
+    int16_t length = 0;
+    int16_t drag = 0;
+    int16_t gravity = 0;
+};
+
+// A Dynamic Sensation's block (§8.4) in its record: DynamicBlock's fields by their names,
+// levels in int16 and angles (0..35999) in uint16, 92 bytes on 2 axes where the host's
+// takes 184. Only the fields of the effect's type are validated, so only they are kept
+// (slot_dynamic_block): another dynamic's fields read back as their defaults.
+struct SlotDynamicBlock {
+    uint16_t blast_direction = 0;
+    int16_t blast_intensity = 0;
+    int16_t blast_resonance = 1;
+    int16_t blast_decay = 0;
+    int16_t dynamic_mass = 1;
+    uint16_t impact_direction = 0;
+    int16_t impact_intensity = 0;
+    int16_t elasticity = 1;
+    int16_t collision_absorption = 0;
+    int16_t density = 1;
+    int16_t settle = 1;
+    int16_t viscosity = 0;
+    int16_t inertia = 1;
+    int16_t play = 0;
+    int16_t stiffness = 1;
+    int16_t drift_resistance = 0;
+    int16_t ball_mass = 1;
+    int16_t string_length = 0;
+    int16_t string_compliance = 1;
+    int16_t ball_damping = 0;
+    int16_t initial_velocity = 0;
+    uint16_t initial_velocity_direction = 0;
+    int16_t paddle_compliance = 1;
+    int16_t paddle_damping = 0;
+    int16_t gravity = 0;
+    SlotControlLawBlock control_law[kMaxAxes] = {};
+    bool interim_reporting = false;
+};
+
+// A direction (§6.5) in a slot: the values its kind reads, in 16 bits each (8 bytes where
+// the host's Direction takes 16). Angles (polar's, spherical's azimuth 0..35999 and
+// elevation 0..18000) are kept unsigned, a cartesian or moments vector's components
+// (±10000, one per axis of the effect up to 3) signed; value(i) gives either back. The
+// values a kind does not read (polar's second and third, spherical's third, components past
+// the effect's axes) are not validated, and not kept: they read back as 0.
+struct SlotDirection {
+    DirectionKind kind = DirectionKind::none;
+    uint16_t bits[3] = {0, 0, 0};
+
+    [[nodiscard]] constexpr int32_t value(int i) const noexcept {
+        return kind == DirectionKind::cartesian || kind == DirectionKind::moments ? static_cast<int16_t>(bits[i])
+                                                                                 : bits[i];
+    }
+};
+
 // An envelope (§4.2.a) in a slot: levels of at most 10000, times of at most 65e6 µs.
 struct SlotEnvelope {
     int32_t settle_time_us = 0;
@@ -59,13 +155,12 @@ struct SlotParams {
     // narrowest type that holds its range (validate_effect has checked them): times of at
     // most 65e6 µs, or kInfiniteUs (-1), in 32 bits; levels, gains and counts in 16 or 8.
     // Arithmetic promotes them to int as it did the host's int32 fields; a product of two
-    // that may pass 2^31 (a duration times the iterations) widens one to int64 first. The
-    // start delay stays 64-bit: the tick subtracts it from a 64-bit time at every effect,
-    // and its 4 bytes fill what the union's 8-byte alignment would pad.
-    int64_t start_delay_us = 0;
+    // that may pass 2^31 (a duration times the iterations) widens one to int64 first, and
+    // the tick's time minus the start delay is 64-bit as before (the delay widened).
+    int32_t start_delay_us = 0;
     int32_t duration_us = kInfiniteUs;
     int32_t trigger_repeat_interval_us = 0;
-    Direction direction{};
+    SlotDirection direction{};
     SlotEnvelope envelope{};
     int16_t gain = kFullScale;
     int16_t iterations = 1;  // 1..255, or kInfiniteIterations
@@ -78,24 +173,30 @@ struct SlotParams {
 
     // The type-specific block of `type` (§6.6), the only member written: the others are
     // not alive and must not be read.
+    // Its members need at most 4-byte alignment (32-bit periods), and the largest is a
+    // spring's curves (52 bytes on 2 axes).
     union {
-        CurvedConditions curved;              // spring, damper, inertia, angle_spring
-        ConditionBlock conditions[kMaxAxes];  // friction
-        PeriodicBlock periodic;               // periodics and sweeps
-        ConstantBlock constant;               // constant, vector_force, smart_pop
+        CurvedConditions curved;                  // spring, damper, inertia, angle_spring
+        SlotConditionBlock conditions[kMaxAxes];  // friction
+        SlotPeriodicBlock periodic;               // periodics and sweeps
+        ConstantBlock constant;                   // constant, vector_force, smart_pop
         RampBlock ramp;
-        CustomBlock custom;                   // force_profile
+        SlotCustomBlock custom;                   // force_profile
         TextureBlock texture;
-        WallBlock wall;                       // axis_wall, angle_wall
-        BarrierBlock barrier;                 // axis_barrier, angle_barrier
-        const DynamicBlock* dynamic;          // dynamics: the block in the effect's DynamicRecord
+        WallBlock wall;                           // axis_wall, angle_wall
+        BarrierBlock barrier;                     // axis_barrier, angle_barrier
+        const SlotDynamicBlock* dynamic;          // dynamics: the block in the effect's DynamicRecord
     };
 };
 
+// The stored form of a valid dynamic's block: the fields of p.type (of its axes' control
+// laws for dynamic_control_law), the others at their defaults.
+[[nodiscard]] SlotDynamicBlock slot_dynamic_block(const EffectParams& p) noexcept;
+
 // The stored form of valid parameters p. A dynamic's block is not copied: `dynamic` points
-// at `dynamic_block`, which must hold p.dynamic for as long as the result is read (the
-// engine passes its record's copy; a test may pass &p.dynamic).
-[[nodiscard]] SlotParams slot_params(const EffectParams& p, const DynamicBlock* dynamic_block) noexcept;
+// at `dynamic_block`, which must hold slot_dynamic_block(p) for as long as the result is
+// read (the engine passes its record's copy).
+[[nodiscard]] SlotParams slot_params(const EffectParams& p, const SlotDynamicBlock* dynamic_block) noexcept;
 
 // The host's form of stored parameters: every field as given at create or update, the
 // blocks of other types at their defaults.

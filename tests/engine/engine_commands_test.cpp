@@ -5,7 +5,10 @@
 //
 // Expected forces come from the effects' formulas: a ramp is start + (end - start)·τ/T
 // (§6.6.e), a constant is its magnitude, a profile holds each sample for its period.
+#include <algorithm>
 #include <array>
+#include <span>
+#include <vector>
 
 #include "engine_fixture.hpp"
 
@@ -164,6 +167,200 @@ TEST_F(EngineCommands, ParamsGiveBackEveryConditionValueAsCreated) {
         ASSERT_TRUE(engine_->params(r.id, now).ok());
         ASSERT_EQ(now, p) << "coefficient " << v;
         ASSERT_TRUE(engine_->destroy(r.id).ok());
+    }
+}
+
+// A slot keeps a friction's blocks in 16-bit fields (slot_params.hpp, SlotConditionBlock):
+// every value of the primer's ranges reads back as given.
+TEST_F(EngineCommands, ParamsGiveBackEveryFrictionValueAsCreated) {
+    for (int32_t v = -10'000; v <= 10'000; ++v) {
+        EffectParams p = constant_on_x(0, kInfiniteUs);
+        p.type = EffectType::friction;
+        p.axis_count = 2;
+        p.axes[1] = Axis::y;
+        const int32_t level = v < 0 ? -v : v;
+        p.conditions[0] = {v, -v, v, level, 10'000 - level, level, OffsetMode::absolute};
+        p.conditions[1] = {-v, v, -v, 10'000 - level, level, 10'000 - level, OffsetMode::absolute};
+        const CreateResult r = engine_->create(p);
+        ASSERT_TRUE(r.error.ok()) << v << ": " << r.error.message();
+        EffectParams now;
+        ASSERT_TRUE(engine_->params(r.id, now).ok());
+        ASSERT_EQ(now, p) << "value " << v;
+        ASSERT_TRUE(engine_->destroy(r.id).ok());
+    }
+}
+
+// The 32-bit times of a slot (the start delay, a period, a profile's sample period: 64-bit
+// in EffectParams) hold the primer's largest, 65e6 µs, and the smallest.
+TEST_F(EngineCommands, ParamsGiveBackTheLongestAndShortestTimes) {
+    for (const int64_t t : {int64_t{1}, kMaxTimeUs}) {
+        EffectParams wave = constant_on_x(0, kInfiniteUs);
+        wave.type = EffectType::sine;
+        wave.start_delay_us = t;
+        wave.periodic.period_us = t;
+        wave.periodic.magnitude = 5000;
+        const std::array<int16_t, 2> samples{100, -100};
+        EffectParams profile = constant_on_x(0, kInfiniteUs);
+        profile.type = EffectType::force_profile;
+        profile.start_delay_us = t;
+        profile.custom = {1, t, 2};
+        for (const EffectParams& p : {wave, profile}) {
+            const bool is_profile = p.type == EffectType::force_profile;
+            const CreateResult r = engine_->create(p, is_profile ? std::span<const int16_t>(samples)
+                                                                : std::span<const int16_t>());
+            ASSERT_TRUE(r.error.ok()) << t << ": " << r.error.message();
+            EffectParams now;
+            ASSERT_TRUE(engine_->params(r.id, now).ok());
+            EXPECT_EQ(now, p) << "time " << t;
+            ASSERT_TRUE(engine_->destroy(r.id).ok());
+        }
+    }
+}
+
+// A slot keeps a direction's values in 16 bits (slot_params.hpp, SlotDirection): every polar
+// and spherical angle and every cartesian and moments component the validator admits reads
+// back as given, and one past either end is refused.
+TEST_F(EngineCommands, ParamsGiveBackEveryDirectionValueAsCreated) {
+    reset(6);
+    const auto wave = [](DirectionKind kind, int32_t a, int32_t b, int32_t c) {
+        EffectParams p = constant_on_x(4000, kInfiniteUs);
+        p.axis_count = kind == DirectionKind::polar ? 2 : 3;
+        const bool rotations = kind == DirectionKind::moments;
+        p.axes[0] = rotations ? Axis::rx : Axis::x;
+        p.axes[1] = rotations ? Axis::ry : Axis::y;
+        p.axes[2] = rotations ? Axis::rz : Axis::z;
+        p.direction.kind = kind;
+        p.direction.value[0] = a;
+        if (kind != DirectionKind::polar) p.direction.value[1] = b;
+        if (kind == DirectionKind::cartesian || kind == DirectionKind::moments) p.direction.value[2] = c;
+        return p;
+    };
+    const auto round_trip = [&](const EffectParams& p) {
+        const CreateResult r = engine_->create(p);
+        ASSERT_TRUE(r.error.ok()) << r.error.message();
+        EffectParams now;
+        ASSERT_TRUE(engine_->params(r.id, now).ok());
+        ASSERT_EQ(now, p);
+        ASSERT_TRUE(engine_->destroy(r.id).ok());
+    };
+    for (int32_t angle = 0; angle <= 35'999; ++angle) {
+        ASSERT_NO_FATAL_FAILURE(round_trip(wave(DirectionKind::polar, angle, 0, 0))) << "polar " << angle;
+        ASSERT_NO_FATAL_FAILURE(round_trip(wave(DirectionKind::spherical, angle, angle % 18'001, 0)))
+            << "spherical " << angle;
+    }
+    for (int32_t v = -10'000; v <= 10'000; ++v) {
+        const int32_t other = 10'000 - (v < 0 ? -v : v);  // never all three 0
+        ASSERT_NO_FATAL_FAILURE(round_trip(wave(DirectionKind::cartesian, v, other, -v))) << "cartesian " << v;
+        ASSERT_NO_FATAL_FAILURE(round_trip(wave(DirectionKind::moments, -v, v, other))) << "moments " << v;
+    }
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::polar, 36'000, 0, 0)).error.ok());
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::polar, -1, 0, 0)).error.ok());
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::spherical, 0, 18'001, 0)).error.ok());
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::spherical, 0, -1, 0)).error.ok());
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::cartesian, 10'001, 0, 0)).error.ok());
+    EXPECT_FALSE(engine_->create(wave(DirectionKind::moments, 0, 0, -10'001)).error.ok());
+}
+
+// A dynamic's record keeps the fields of its type in 16 bits (slot_params.hpp,
+// SlotDynamicBlock): every value each field's range admits reads back as given, and one
+// past either end is refused, so the values tried are exactly the ones the validator admits.
+TEST_F(EngineCommands, ParamsGiveBackEveryDynamicValueAsCreated) {
+    struct Field {
+        const char* name;
+        int32_t& (*at)(EffectParams&);
+        Range range;
+    };
+    struct Type {
+        EffectType type;
+        std::vector<Field> fields;
+    };
+    using namespace range;
+    const std::vector<Type> types = {
+        {EffectType::dynamic_recoil,
+         {{"blast_direction", [](EffectParams& p) -> int32_t& { return p.dynamic.blast_direction; }, kAngle},
+          {"blast_intensity", [](EffectParams& p) -> int32_t& { return p.dynamic.blast_intensity; }, kSignedLevel},
+          {"dynamic_mass", [](EffectParams& p) -> int32_t& { return p.dynamic.dynamic_mass; }, kDynamicMass},
+          {"blast_resonance", [](EffectParams& p) -> int32_t& { return p.dynamic.blast_resonance; }, kDynamicStiffness},
+          {"blast_decay", [](EffectParams& p) -> int32_t& { return p.dynamic.blast_decay; }, kLevel}}},
+        {EffectType::dynamic_impact,
+         {{"impact_direction", [](EffectParams& p) -> int32_t& { return p.dynamic.impact_direction; }, kAngle},
+          {"impact_intensity", [](EffectParams& p) -> int32_t& { return p.dynamic.impact_intensity; }, kSignedLevel},
+          {"dynamic_mass", [](EffectParams& p) -> int32_t& { return p.dynamic.dynamic_mass; }, kDynamicMass},
+          {"elasticity", [](EffectParams& p) -> int32_t& { return p.dynamic.elasticity; }, kDynamicStiffness},
+          {"collision_absorption", [](EffectParams& p) -> int32_t& { return p.dynamic.collision_absorption; },
+           kLevel}}},
+        {EffectType::dynamic_liquid,
+         {{"density", [](EffectParams& p) -> int32_t& { return p.dynamic.density; }, kDynamicMass},
+          {"settle", [](EffectParams& p) -> int32_t& { return p.dynamic.settle; }, kDynamicStiffness},
+          {"viscosity", [](EffectParams& p) -> int32_t& { return p.dynamic.viscosity; }, kLevel}}},
+        {EffectType::dynamic_inertia,
+         {{"inertia", [](EffectParams& p) -> int32_t& { return p.dynamic.inertia; }, kDynamicMass},
+          {"play", [](EffectParams& p) -> int32_t& { return p.dynamic.play; }, kLevel}}},
+        {EffectType::dynamic_center_drift,
+         {{"stiffness", [](EffectParams& p) -> int32_t& { return p.dynamic.stiffness; }, kDynamicStiffness},
+          {"drift_resistance", [](EffectParams& p) -> int32_t& { return p.dynamic.drift_resistance; }, kLevel}}},
+        {EffectType::dynamic_sling,
+         {{"ball_mass", [](EffectParams& p) -> int32_t& { return p.dynamic.ball_mass; }, kDynamicMass},
+          {"string_length", [](EffectParams& p) -> int32_t& { return p.dynamic.string_length; }, kLevel},
+          {"string_compliance", [](EffectParams& p) -> int32_t& { return p.dynamic.string_compliance; },
+           kDynamicStiffness},
+          {"ball_damping", [](EffectParams& p) -> int32_t& { return p.dynamic.ball_damping; }, kLevel}}},
+        {EffectType::dynamic_paddle,
+         {{"ball_mass", [](EffectParams& p) -> int32_t& { return p.dynamic.ball_mass; }, kDynamicMass},
+          {"initial_velocity", [](EffectParams& p) -> int32_t& { return p.dynamic.initial_velocity; }, kSignedLevel},
+          {"initial_velocity_direction",
+           [](EffectParams& p) -> int32_t& { return p.dynamic.initial_velocity_direction; }, kAngle},
+          {"paddle_compliance", [](EffectParams& p) -> int32_t& { return p.dynamic.paddle_compliance; },
+           kDynamicStiffness},
+          {"paddle_damping", [](EffectParams& p) -> int32_t& { return p.dynamic.paddle_damping; }, kLevel},
+          {"gravity", [](EffectParams& p) -> int32_t& { return p.dynamic.gravity; }, kSignedLevel}}},
+        {EffectType::dynamic_control_law,
+         {{"mass", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].mass; }, kDynamicMass},
+          {"k_pos", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].k_pos; }, kDynamicStiffness},
+          {"k_neg", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].k_neg; }, kDynamicStiffness},
+          {"b", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].b; }, kLevel},
+          {"vel_init", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].vel_init; }, kSignedLevel},
+          {"pos_init", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].pos_init; }, kSignedLevel},
+          {"half_cycles", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].half_cycles; },
+           kHalfCycles},
+          {"length", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].length; }, kLevel},
+          {"drag", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].drag; }, kLevel},
+          {"gravity", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[0].gravity; }, kSignedLevel},
+          {"y: mass", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[1].mass; }, kDynamicMass},
+          {"y: vel_init", [](EffectParams& p) -> int32_t& { return p.dynamic.control_law[1].vel_init; },
+           kSignedLevel}}},
+    };
+    for (const Type& type : types) {
+        EffectParams base;
+        base.type = type.type;
+        base.axis_count = 2;
+        base.axes[0] = Axis::x;
+        base.axes[1] = Axis::y;
+        base.dynamic.interim_reporting = true;
+        int64_t values = 0;
+        for (const Field& f : type.fields) {
+            f.at(base) = static_cast<int32_t>(f.range.min);
+            values = std::max(values, f.range.max - f.range.min + 1);
+        }
+        for (const Field& f : type.fields) {  // the ends of the admitted range
+            for (const int64_t outside : {f.range.min - 1, f.range.max + 1}) {
+                EffectParams p = base;
+                f.at(p) = static_cast<int32_t>(outside);
+                EXPECT_FALSE(engine_->create(p).error.ok()) << f.name << " = " << outside;
+            }
+        }
+        for (int64_t k = 0; k < values; ++k) {  // every field through its whole range
+            EffectParams p = base;
+            for (const Field& f : type.fields) {
+                f.at(p) = static_cast<int32_t>(f.range.min + k % (f.range.max - f.range.min + 1));
+            }
+            const CreateResult r = engine_->create(p);
+            ASSERT_TRUE(r.error.ok()) << effect_type_name(type.type) << " " << k << ": " << r.error.message();
+            EffectParams now;
+            ASSERT_TRUE(engine_->params(r.id, now).ok());
+            ASSERT_EQ(now, p) << effect_type_name(type.type) << " " << k;
+            ASSERT_TRUE(engine_->destroy(r.id).ok());
+        }
     }
 }
 

@@ -26,7 +26,8 @@ namespace {
 
 // The engine's mapping of host parameters, stored as a slot stores them.
 int32_t tether_laws_of(const EffectParams& p, const EngineConfig& c, detail::TetherLaw laws[kMaxAxes]) {
-    return detail::tether_laws(detail::slot_params(p, &p.dynamic), c, laws);
+    const detail::SlotDynamicBlock block = detail::slot_dynamic_block(p);
+    return detail::tether_laws(detail::slot_params(p, &block), c, laws);
 }
 
 using test::engine_accepts;

@@ -18,9 +18,25 @@
 
 namespace feel::detail {
 
+// A condition's memory between ticks: friction's and texture's bristles, or a wall's or
+// barrier's contact ledger. A condition keeps one or the other (its type never changes), so
+// they share their bytes (issue 14: RAM on a Cortex-M4F); start_fresh makes the one of its
+// type the live member.
 struct ConditionState {
-    FrictionState friction{};
-    ContactState contact{};
+    ConditionState() noexcept : friction{} {}
+    union {
+        FrictionState friction;  // friction, texture
+        ContactState contact;    // axis_wall, angle_wall, axis_barrier, angle_barrier
+    };
+
+    // The memory of a condition of type t starting afresh (zeroed, as at create and start).
+    void start_fresh(EffectType t) noexcept {
+        if (t == EffectType::friction || t == EffectType::texture) {
+            friction = FrictionState{};
+        } else {
+            contact = ContactState{};
+        }
+    }
 };
 
 struct ConditionContext {

@@ -230,7 +230,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     }
     for (int i = 0; i < blocks; ++i) {
         const int a = axis_index(p.axes[i]);
-        const ConditionBlock& b = p.conditions[i];
+        const SlotConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
         FrictionBlockLaw& law = block.law;
         keep_law(law, state, b);

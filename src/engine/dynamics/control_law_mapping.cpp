@@ -83,7 +83,7 @@ double kick_velocity(const SlotParams& p, const EngineConfig& c, int i, int32_t 
 }  // namespace
 
 int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[kMaxAxes]) noexcept {
-    const DynamicBlock& d = *p.dynamic;
+    const SlotDynamicBlock& d = *p.dynamic;
     for (int i = 0; i < p.axis_count; ++i) {
         TetherLaw& law = laws[i];
         switch (p.type) {
@@ -114,7 +114,7 @@ int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[k
                 law.drag = static_cast<double>(d.drift_resistance) / kFullScale * c.dynamic_stiffness_ref * kDriftTime_s;
                 break;
             default: {  // dynamic_control_law: the block of this axis, as it is
-                const ControlLawBlock& b = d.control_law[i];
+                const SlotControlLawBlock& b = d.control_law[i];
                 law.mass = dynamic_mass(c, b.mass);
                 law.k_pos = dynamic_stiffness(c, b.k_pos);
                 law.k_neg = dynamic_stiffness(c, b.k_neg);

@@ -69,7 +69,7 @@ struct Paddle {
     double normal[2] = {};    // n on (x, y): faces the incoming ball
     double impact_speed = 0;  // |V|, position units/s, toward the paddle
 
-    Paddle(const DynamicBlock& d, const EngineConfig& config) noexcept {
+    Paddle(const SlotDynamicBlock& d, const EngineConfig& config) noexcept {
         contact.mass = dynamic_mass(config, d.ball_mass);
         contact.stiffness = dynamic_stiffness(config, d.paddle_compliance);
         contact.damping = dynamic_damping(config, d.paddle_damping);

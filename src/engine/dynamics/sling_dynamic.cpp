@@ -87,7 +87,7 @@ struct Sling {
     mutable double air_factor = 1;
 
     Sling(const SlotParams& p, const EngineConfig& config) noexcept {
-        const DynamicBlock& d = *p.dynamic;
+        const SlotDynamicBlock& d = *p.dynamic;
         mass = dynamic_mass(config, d.ball_mass);
         stiffness = dynamic_stiffness(config, d.string_compliance);
         length = d.string_length;

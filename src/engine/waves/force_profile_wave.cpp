@@ -13,7 +13,7 @@ namespace feel::detail {
 namespace {
 
 // The frame playing at τ.
-const int16_t* frame_at(const CustomBlock& c, const int16_t* samples, int64_t tau_us) noexcept {
+const int16_t* frame_at(const SlotCustomBlock& c, const int16_t* samples, int64_t tau_us) noexcept {
     const int64_t frames = c.sample_count / c.channels;
     const int64_t frame = (tau_us / c.sample_period_us) % frames;
     return samples + frame * c.channels;
@@ -31,7 +31,7 @@ float force_profile_value(const SlotParams& p, const int16_t* samples, int64_t t
 
 void force_profile_wave(const SlotParams& p, const int16_t* samples, const float* direction,
                         int64_t tau_us, float force[kMaxAxes]) noexcept {
-    const CustomBlock& c = p.custom;
+    const SlotCustomBlock& c = p.custom;
     if (c.channels == 1) {
         const float v = force_profile_value(p, samples, tau_us);
         for (int a = 0; a < kMaxAxes; ++a) force[a] += direction[a] * v;

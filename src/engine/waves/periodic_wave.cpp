@@ -8,7 +8,7 @@ namespace feel::detail {
 // offset + envelope(|magnitude|) · sign(magnitude) · source(p). The envelope shapes the
 // oscillation, not the baseline offset.
 float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noexcept {
-    const PeriodicBlock& b = p.periodic;
+    const SlotPeriodicBlock& b = p.periodic;
     const float source = waveform_value(waveform, cycle_fraction(tau_us, b.period_us, b.phase));
     const float magnitude = static_cast<float>(b.magnitude);
     const float amplitude =
@@ -20,7 +20,7 @@ float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noex
 // the short or the long way round as the sense says: clockwise increases the compass angle.
 // Equal start and end angles do not sweep.
 float sweep_turns(const SlotParams& p, int64_t tau_us) noexcept {
-    const PeriodicBlock& b = p.periodic;
+    const SlotPeriodicBlock& b = p.periodic;
     const float progress = static_cast<float>(tau_us) / static_cast<float>(p.duration_us);
     constexpr float kTurnsPerCentideg = 1.0f / 36000.0f;
     const float start = static_cast<float>(b.sweep_start_angle) * kTurnsPerCentideg;

@@ -107,7 +107,8 @@ public:
             started_ = true;
         }
         const float acceleration[kMaxAxes] = {};
-        const detail::SlotParams stored = detail::slot_params(params_, &params_.dynamic);
+        const detail::SlotDynamicBlock block = detail::slot_dynamic_block(params_);
+        const detail::SlotParams stored = detail::slot_params(params_, &block);
         const detail::DynamicContext c{&stored, &config_, position, velocity, acceleration, start_, dt_s, tau_us_, &state};
         model_(c, t.force, t.result);
         tau_us_ += static_cast<int64_t>(std::llround(dt_s * 1e6));
