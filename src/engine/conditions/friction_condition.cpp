@@ -116,7 +116,7 @@ struct EffectTick {
 
 // One block of any friction: a velocity offset, a deadband, negative coefficients, a line
 // that is not a device axis, the first tick. Returns the block's force.
-[[gnu::always_inline]] inline float render_block(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+[[gnu::always_inline]] inline float render_block(const EffectTick& e, FrictionState& state, const SlotConditionBlock& b,
                                      FrictionBlock& block, int a) noexcept {
     const ConditionContext& c = *e.context;
     const StopGuardTick& guard = state.guard_tick;
@@ -178,14 +178,14 @@ struct EffectTick {
 
 // The same out of line, for the lean loop's rare other block (the first tick, a NaN): the
 // lean loop keeps its registers.
-[[gnu::noinline]] float render_block_out_of_line(const EffectTick& e, FrictionState& state, const ConditionBlock& b,
+[[gnu::noinline]] float render_block_out_of_line(const EffectTick& e, FrictionState& state, const SlotConditionBlock& b,
                                                  FrictionBlock& block, int a) noexcept {
     return render_block(e, state, b, block, a);
 }
 
 // The block's law, worked out again when its coefficients changed.
 [[gnu::always_inline]] inline void keep_law(FrictionBlockLaw& law, const FrictionState& state,
-                                            const ConditionBlock& b) noexcept {
+                                            const SlotConditionBlock& b) noexcept {
     if (((law.pos_coefficient ^ b.pos_coefficient) | (law.neg_coefficient ^ b.neg_coefficient)) != 0) {
         remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
     }
@@ -220,7 +220,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         // the general way, inline.
         for (int i = 0; i < blocks; ++i) {
             const int a = axis_index(p.axes[i]);
-            const ConditionBlock& b = p.conditions[i];
+            const SlotConditionBlock& b = p.conditions[i];
             FrictionBlock& block = state.block[i];
             keep_law(block.law, state, b);
             force[a] += render_block(e, state, b, block, a);

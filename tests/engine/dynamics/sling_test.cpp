@@ -329,8 +329,10 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
                           {one_axis, sling_params(4000, 1200, 6000, 100)}};
     const EngineConfig config{};
     for (const Case& k : cases) {
-        const detail::SlotParams pa = detail::slot_params(k.a, &k.a.dynamic);
-        const detail::SlotParams pb = detail::slot_params(k.b, &k.b.dynamic);
+        const detail::SlotDynamicBlock block_a = detail::slot_dynamic_block(k.a);
+        const detail::SlotDynamicBlock block_b = detail::slot_dynamic_block(k.b);
+        const detail::SlotParams pa = detail::slot_params(k.a, &block_a);
+        const detail::SlotParams pb = detail::slot_params(k.b, &block_b);
         detail::DynamicState alone_a{}, alone_b{}, together_a{}, together_b{};
         float position[kMaxAxes] = {}, velocity[kMaxAxes] = {};
         const float acceleration[kMaxAxes] = {};
