@@ -25,13 +25,13 @@ namespace {
 
 using namespace std::chrono_literals;
 
-protocol::JoystickInputReport joystick(int16_t x) {
+protocol::JoystickInputReport joystick_at(int16_t x) {
     protocol::JoystickInputReport r;
     r.position[0] = x;
     return r;
 }
 
-protocol::DeviceStatusReport status(uint32_t number, int16_t force) {
+protocol::DeviceStatusReport status_of_round(uint32_t number, int16_t force) {
     protocol::DeviceStatusReport r;
     r.t_us = uint64_t{number} * 1000;
     r.report_number = number;
@@ -40,14 +40,14 @@ protocol::DeviceStatusReport status(uint32_t number, int16_t force) {
     return r;
 }
 
-protocol::EffectStatesReport states(uint32_t number) {
+protocol::EffectStatesReport states_of_round(uint32_t number) {
     protocol::EffectStatesReport r;
     r.report_number = number;
     return r;
 }
 
 // Rounds until one with device time `t_us` came (or a second passed).
-std::vector<InputState> rounds_until(InputSubscription& sub, int64_t t_us) {
+std::vector<InputState> rounds_through(InputSubscription& sub, int64_t t_us) {
     std::vector<InputState> all;
     const auto give_up = std::chrono::steady_clock::now() + 1s;
     while ((all.empty() || all.back().t_us < t_us) && std::chrono::steady_clock::now() < give_up) {
@@ -66,27 +66,27 @@ TEST(HostInputRounds, ARoundIsOneTicksJoystickStatusAndStatesInThatOrder) {
 
     // Round 1 without its joystick (lost, or not decodable yet), then a whole round 2: the
     // round published is round 2's own, as soon as its last page came (no round 3 yet).
-    fake.push(status(1, 111));
-    fake.push(states(1));
-    fake.push(joystick(200));
-    fake.push(status(2, 222));
-    fake.push(states(2));
-    std::vector<InputState> got = rounds_until(*sub, 2000);
+    fake.push(status_of_round(1, 111));
+    fake.push(states_of_round(1));
+    fake.push(joystick_at(200));
+    fake.push(status_of_round(2, 222));
+    fake.push(states_of_round(2));
+    std::vector<InputState> got = rounds_through(*sub, 2000);
     ASSERT_EQ(got.size(), 1u);
     EXPECT_EQ(got[0].t_us, 2000);
     EXPECT_FLOAT_EQ(got[0].position[0], 200.0f);
     EXPECT_FLOAT_EQ(got[0].force[0], 222.0f);
 
     // Round 3 lost its status, round 4's states are another round's: neither is a round.
-    fake.push(joystick(300));
-    fake.push(states(3));
-    fake.push(joystick(400));
-    fake.push(status(4, 444));
-    fake.push(states(5));
-    fake.push(joystick(600));
-    fake.push(status(6, 666));
-    fake.push(states(6));
-    got = rounds_until(*sub, 6000);
+    fake.push(joystick_at(300));
+    fake.push(states_of_round(3));
+    fake.push(joystick_at(400));
+    fake.push(status_of_round(4, 444));
+    fake.push(states_of_round(5));
+    fake.push(joystick_at(600));
+    fake.push(status_of_round(6, 666));
+    fake.push(states_of_round(6));
+    got = rounds_through(*sub, 6000);
     ASSERT_EQ(got.size(), 1u);
     EXPECT_EQ(got[0].t_us, 6000);
     EXPECT_FLOAT_EQ(got[0].position[0], 600.0f);
@@ -113,7 +113,7 @@ TEST(HostInputRounds, ASimulatedRoundShowsItsOwnTicksPosition) {
         taken_us = rig.device->hand_target_taken_us();
     }
     ASSERT_GE(taken_us, 0) << "the loop never took the target";
-    const std::vector<InputState> got = rounds_until(*sub, taken_us + 1000);
+    const std::vector<InputState> got = rounds_through(*sub, taken_us + 1000);
     const InputState* taking = nullptr;
     const InputState* next = nullptr;
     for (const InputState& s : got) {
