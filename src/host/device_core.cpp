@@ -502,13 +502,9 @@ void DeviceCore::on_joystick(const protocol::JoystickInputReport& r) {
         input.buttons = r.buttons;
         input.hats = r.hats;
         ++input.reports_received;
+        // A round opens with its joystick: a status before it was a round without one.
         round_has_joystick = true;
-        if (round_has_status) {
-            ++input_rounds;
-            publish_input_round();
-            round_has_joystick = round_has_status = false;
-            cv.notify_all();
-        }
+        round_has_status = false;
         // Host emulation of reflexes (§1.2.c): a press edge starts the effect, as the
         // device's reflex table would. Like the device, presses are ignored while paused.
         const Clock::time_point now = Clock::now();
@@ -573,6 +569,10 @@ void DeviceCore::on_device_status(const protocol::DeviceStatusReport& r) {
     input.loop_rate_hz = r.loop_rate_hz;
     input.measured_loop_hz = static_cast<double>(r.measured_rate_millihz) / 1000.0;
     input.overruns = r.overruns;
+    if (round_has_joystick) {
+        round_has_status = true;
+        round_report_number = r.report_number;
+    }
 }
 
 void DeviceCore::on_effect_states(const protocol::EffectStatesReport& r) {
@@ -594,13 +594,14 @@ void DeviceCore::on_effect_states(const protocol::EffectStatesReport& r) {
             state == runtime::ReportedEffectState::playing || state == runtime::ReportedEffectState::delayed;
     }
     if (r.page + 1 >= r.pages) {
-        round_has_status = true;
-        if (round_has_joystick) {
+        // The round's last page: published if its joystick and its own status came first;
+        // either way the next round starts afresh.
+        if (round_has_joystick && round_has_status && r.report_number == round_report_number) {
             ++input_rounds;
             publish_input_round();
-            round_has_joystick = round_has_status = false;
             cv.notify_all();
         }
+        round_has_joystick = round_has_status = false;
     }
 }
 

@@ -191,8 +191,14 @@ struct DeviceCore {
     InputState input{};
     uint64_t input_rounds = 0;       // complete state rounds (joystick + last status page)
     std::vector<std::shared_ptr<InputQueue>> input_queues;  // subscribe_input's, each round goes to all
-    bool round_has_joystick = false;
-    bool round_has_status = false;
+    // The state round being gathered. The device sends a round as Joystick Input, Device
+    // Status, then Effect States pages carrying the status's report number
+    // (docs/protocol.md); a round is published only when all three came in that order, so
+    // a frame lost before it (or a joystick that did not decode before the layout was
+    // known) cannot pair one tick's status with the next tick's joystick for good.
+    bool round_has_joystick = false;   // this round's Joystick Input came
+    bool round_has_status = false;     // its Device Status came after it
+    uint32_t round_report_number = 0;  // that status's report number
     std::map<uint64_t, std::shared_ptr<EffectRecord>> records;
     std::unordered_map<uint16_t, uint64_t> by_block;
     uint64_t next_key = 1;
