@@ -12,6 +12,9 @@ import { readFileSync, readdirSync, mkdtempSync, rmSync, writeFileSync } from 'n
 import { loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 process.env.FEEL ??= resolve(process.argv[2] ?? 'build/apps/feel/feel');
+// a page whose document the harness served (FEEL_DIST below) is not on the loopback for
+// Chromium's local network access checks, and its WebSocket to the server would be refused
+if (process.env.FEEL_DIST) process.env.FEEL_CHROMIUM_ARGS = `${process.env.FEEL_CHROMIUM_ARGS ?? ''} --disable-features=LocalNetworkAccessChecks`;
 const { launchBrowser, startStudio } = await import('../e2e/harness.mjs'); // after FEEL is set
 const moves = Number(process.argv[3] ?? 200);
 const tick = 100; // USER_HZ: /proc's CPU times are in 1/100 s
@@ -58,6 +61,15 @@ const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
 const studio = await startStudio(workspace);
 const browser = await launchBrowser();
 const page = await browser.newPage();
+// FEEL_DIST=DIR: the front end from a Vite build in DIR instead of the one embedded in the
+// binary (`npm run build -- --outDir DIR`: tries a page change without relinking `feel`)
+if (process.env.FEEL_DIST) {
+  await page.route(/\/(index\.html|assets\/.*)?$/, (route) => {
+    const path = new URL(route.request().url()).pathname;
+    const file = join(process.env.FEEL_DIST, path === '/' ? 'index.html' : path);
+    route.fulfill({ path: file, contentType: file.endsWith('.js') ? 'text/javascript' : file.endsWith('.css') ? 'text/css' : 'text/html' });
+  });
+}
 await page.goto(studio.url);
 await page.waitForFunction(() => Boolean(window.__studio?.store.state.hello) && window.__studio.frames() > 2);
 await page.click('#palette li[data-type="spring"]');
@@ -108,13 +120,15 @@ if (tracer) {
   tracer.on('Tracing.dataCollected', (d) => traceEvents.push(...d.value));
   await tracer.send('Tracing.start', {
     transferMode: 'ReportEvents',
-    traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc', 'gpu', 'blink', 'v8'] },
+    traceConfig: { includedCategories: [...(process.env.TRACE_INVALIDATIONS ? ['disabled-by-default-devtools.timeline.invalidationTracking'] : []), 'blink.user_timing', 'devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'viz', 'cc', 'gpu', 'blink', 'v8'] },
   });
 }
 const procs = [...processes(process.pid)];
 const before = new Map(procs.map((p) => [p.pid, stat(p.pid)]));
 const t0 = performance.now();
 await page.evaluate(() => (window.__studio.pad.latencies.length = 0));
+// where the moves begin on the page's clock, and (TRACE=1) on the trace's
+const markAt = await page.evaluate(() => performance.mark('feel-bench-moves').startTime);
 for (let i = 0; i < moves; ++i) {
   await page.mouse.move(at(i % 2 ? 6000 : -6000), box.y + box.height / 2);
   await page.waitForFunction((n) => window.__studio.pad.latencies.length > n, i, { timeout: 30000 });
@@ -171,6 +185,84 @@ if (tracer) {
   }
   console.log('trace (inclusive ms over the run, count), top 40:');
   for (const [k, [ms, n]] of [...sums].sort((a, b) => b[1][0] - a[1][0]).slice(0, 40)) console.log(`  ${ms.toFixed(0)} ms  ${n}  ${k}`);
+  waits(traceEvents, threads, lat);
+}
+// What the page's main thread did while a move's answering frame waited for it: for the
+// TRACE_SLOW (default 5) slowest moves, the main thread's tasks between the frame built at
+// the server and the page's paint, each with its costliest parts; and over all the moves,
+// the main thread's busy time within those waits by the kind of task.
+function waits(events, threads, latencies) {
+  const mark = events.find((e) => e.name === 'feel-bench-moves');
+  if (!mark) return console.log('no mark in the trace: the waits cannot be placed');
+  const shift = mark.ts - markAt * 1000; // trace µs = page ms * 1000 + shift
+  const tid = [...threads].find(([k, n]) => n === 'CrRendererMain' && k.startsWith(`${mark.pid}:`))?.[0];
+  const main = events.filter((e) => e.ph === 'X' && `${e.pid}:${e.tid}` === tid && e.dur !== undefined).sort((a, b) => a.ts - b.ts || b.dur - a.dur);
+  // nest them: a task's children are the events inside it
+  const tops = [];
+  const stack = [];
+  for (const e of main) {
+    e.kids = [];
+    while (stack.length && stack[stack.length - 1].ts + stack[stack.length - 1].dur <= e.ts) stack.pop();
+    if (stack.length) stack[stack.length - 1].kids.push(e);
+    else tops.push(e);
+    stack.push(e);
+  }
+  const label = (e) => e.args?.data?.type ?? e.args?.data?.functionName ?? e.args?.data?.url?.split('/').pop() ?? '';
+  const describe = (e, depth = 0) => {
+    const parts = e.kids.filter((k) => k.dur >= 300).sort((a, b) => b.dur - a.dur).slice(0, 4);
+    return parts.map((k) => `${' '.repeat(depth * 2)}      ${(k.dur / 1000).toFixed(1)} ${k.name}${label(k) ? ` (${label(k)})` : ''}\n${depth < 3 ? describe(k, depth + 1) : ''}`).join('');
+  };
+  // the kind of a task: its costliest leaf-ward chain's names, two deep
+  const kind = (e) => {
+    let k = e;
+    const names = [];
+    while (k.kids.length && names.length < 3) {
+      k = k.kids.reduce((a, b) => (b.dur > a.dur ? b : a));
+      names.push(k.name + (label(k) ? `(${label(k)})` : ''));
+    }
+    return names.join(' > ') || e.name;
+  };
+  const lat = latencies.filter((l) => l.builtToArrive !== undefined);
+  const byKind = new Map();
+  let waited = 0;
+  for (const l of lat) {
+    const built = (l.at + l.total - l.paint - l.builtToArrive) * 1000 + shift;
+    const arrived = (l.at + l.total - l.paint) * 1000 + shift;
+    waited += arrived - built;
+    for (const t of tops) {
+      const a = Math.max(t.ts, built), b = Math.min(t.ts + t.dur, arrived);
+      if (b <= a) continue;
+      const k = kind(t);
+      byKind.set(k, (byKind.get(k) ?? 0) + (b - a));
+    }
+  }
+  // the main thread's JavaScript by function (inclusive), and its frames
+  const fns = new Map();
+  for (const e of main) {
+    if (e.name !== 'FunctionCall' && e.name !== 'TimerFire' && e.name !== 'FireAnimationFrame') continue;
+    const d = e.args?.data ?? {};
+    const k = `${e.name} ${d.functionName ?? ''} ${d.url ? `${d.url.split('/').pop()}:${d.lineNumber}:${d.columnNumber}` : ''}`;
+    const v = fns.get(k) ?? [0, 0];
+    v[0] += e.dur / 1000;
+    v[1] += 1;
+    fns.set(k, v);
+  }
+  console.log('main thread by callback (inclusive ms, count), top 12:');
+  for (const [k, [ms, n]] of [...fns].sort((a, b) => b[1][0] - a[1][0]).slice(0, 12)) console.log(`  ${ms.toFixed(0)} ms  ${n}  ${k}`);
+  const bmf = main.filter((e) => e.name === 'ProxyMain::BeginMainFrame');
+  const busy = tops.reduce((a, t) => a + t.dur, 0) / 1000;
+  console.log(`main thread busy ${busy.toFixed(0)} ms; ${bmf.length} main frames, ${(bmf.reduce((a, e) => a + e.dur, 0) / 1000).toFixed(0)} ms`);
+  console.log(`main thread busy during the frames' waits (built -> onmessage, ${(waited / 1000).toFixed(0)} ms over ${lat.length} moves), by task kind:`);
+  for (const [k, us] of [...byKind].sort((a, b) => b[1] - a[1]).slice(0, 15)) console.log(`  ${(us / 1000).toFixed(1)} ms  ${k}`);
+  for (const l of [...lat].sort((a, b) => b.total - a.total).slice(0, Number(process.env.TRACE_SLOW ?? 5))) {
+    const built = (l.at + l.total - l.paint - l.builtToArrive) * 1000 + shift;
+    const painted = (l.at + l.total) * 1000 + shift;
+    console.log(`  move ${l.seq}: total ${l.total.toFixed(1)}, built->onmessage ${l.builtToArrive.toFixed(1)}, paint ${l.paint.toFixed(1)} ms; main thread's tasks from built (ms after it: start, length):`);
+    for (const t of tops) {
+      if (t.ts + t.dur <= built || t.ts >= painted || t.dur < 200) continue;
+      console.log(`    ${((t.ts - built) / 1000).toFixed(1)} +${(t.dur / 1000).toFixed(1)} ${t.name}\n${describe(t)}`.trimEnd());
+    }
+  }
 }
 if (cdp) {
   const { profile } = await cdp.send('Profiler.stop');

@@ -20,7 +20,7 @@
 // direction; on one axis it picks the axis. For a spring, CenterSpring and
 // SpringAtCurrentLocation (§8.2) set the centre to the travel's centre or to where the
 // handle is when the spring starts (offset_mode relative).
-import { h } from '../dom';
+import { h, liveText } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { type ConditionFamily, drawConditionIcon } from './condition_icon';
@@ -314,11 +314,11 @@ export function conditionEditor(store: Store, live: LiveFeed): GraphicEditor {
     }
     drawConditionIcon(icon.getContext('2d')!, kIconW, kH, family(), (st.input ?? 0) - num(b, 'offset'), st.travel, st.force);
     const f = (v: number) => Math.round(v).toString();
-    readout.textContent = st.input === null
+    liveText(readout, st.input === null
       ? st.note
       : `device: ${inputName()} ${f(st.input)} · force ${f(st.force)} · the curve says ${f(conditionForce(family(), b, st.input))}` +
         (b.offset_mode === 'relative' ? ' (the centre is relative: where the handle was at the start)' : '') +
-        (family() === 'friction' ? ' (at rest the bristle holds up to the coefficient: stiction)' : '');
+        (family() === 'friction' ? ' (at rest the bristle holds up to the coefficient: stiction)' : ''));
   }
 
   // The live dot moves with the curve redrawn under it (it is cheap), once per animation frame.

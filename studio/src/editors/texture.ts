@@ -6,7 +6,7 @@
 // felt moving toward + (pos_roughness) and toward − (neg_roughness). The dial sets the
 // line's angle (on one axis it picks the axis). The handle is a dot on the grating at
 // its coordinate along the line, with the force along the line as an arrow.
-import { h } from '../dom';
+import { h, liveText } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, perAnimationFrame } from './editor';
@@ -167,9 +167,9 @@ export function textureEditor(store: Store, live: LiveFeed): GraphicEditor {
         g.beginPath(); g.moveTo(px, kGrating.t + 2); g.lineTo(px + f, kGrating.t + 2); g.stroke();
         g.lineWidth = 1;
       }
-      readout.textContent = `device: ${Math.round(st.s)} along the line · force along it ${Math.round(st.f)}` +
-        (Math.abs(st.s) > view / 2 ? ' (beyond the part drawn)' : '');
-    } else readout.textContent = 'a texture on two axes needs a direction: turn the dial';
+      liveText(readout, `device: ${Math.round(st.s)} along the line · force along it ${Math.round(st.f)}` +
+        (Math.abs(st.s) > view / 2 ? ' (beyond the part drawn)' : ''));
+    } else liveText(readout, 'a texture on two axes needs a direction: turn the dial');
   }
 
   return {

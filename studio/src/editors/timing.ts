@@ -7,7 +7,7 @@
 //
 // One panel per editor host; the graphical editors of every family use it
 // (timingPanel(store, live) -> {el, render, frame}).
-import { h } from '../dom';
+import { h, liveText } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { canvasOf, commitDraft, limit, type LiveFeed, perAnimationFrame } from './editor';
@@ -162,9 +162,9 @@ export function timingPanel(store: Store, live: LiveFeed): TimingPanel {
       else { g.beginPath(); g.arc(hd.x, hd.y, 5, 0, 2 * Math.PI); g.fill(); }
     }
     const trig = t.trigger === undefined ? 'no trigger' : `trigger ${String(t.trigger)}${t.repeat ? `, repeats every ${us(t.repeat)}` : ''}`;
-    text.textContent = `delay ${us(t.delay)} · duration ${t.duration === null ? '∞' : us(t.duration)} · ` +
+    liveText(text, `delay ${us(t.delay)} · duration ${t.duration === null ? '∞' : us(t.duration)} · ` +
       `${t.iterations === Infinity ? '∞' : t.iterations} iteration${t.iterations === 1 ? '' : 's'} · gain ${t.gain} · ${trig}` +
-      (st ? ` · ${st.state}` : '') + (st?.state === 'playing' && typeof st.elapsed_us === 'number' ? ` ${us(st.elapsed_us)}` : '');
+      (st ? ` · ${st.state}` : '') + (st?.state === 'playing' && typeof st.elapsed_us === 'number' ? ` ${us(st.elapsed_us)}` : ''));
   }
 
   return {

@@ -15,7 +15,7 @@
 //   rubbing it would meet (pressure mode: N·(μ + τ), N the force pressing it) is drawn as
 //   two arrows along the surface. Clipping: where the device reports the handle while it
 //   is inside the solid (on the surface), with a dashed line to where the hand is.
-import { h } from '../dom';
+import { h, liveText } from '../dom';
 import type { EffectJson } from '../document';
 import type { State, Store } from '../store';
 import { angleOfAxis, axisOfAngle, canvasOf, commit, commitDraft, compass, deviceAxes, type GraphicEditor, limit, type LiveFeed, perAnimationFrame } from './editor';
@@ -125,7 +125,7 @@ export function wallEditor(store: Store, live: LiveFeed): GraphicEditor {
     if (!e || !s) return;
     const u = unit(e);
     if (!u) {
-      readout.textContent = 'this axis is not in the travel square (x, y): its fields are below';
+      liveText(readout, 'this axis is not in the travel square (x, y): its fields are below');
       return;
     }
     const b = blockOf(e);
@@ -267,8 +267,8 @@ export function wallEditor(store: Store, live: LiveFeed): GraphicEditor {
       }
       g.lineWidth = 1;
     }
-    readout.textContent = `device: handle ${Math.round(p[0])}, ${Math.round(p[1])} · ${Math.round(p[0] * u[0] + p[1] * u[1])} across the surface · ` +
-      `surface push ${Math.round(normal)}` + (pressing ? ` · rubbing up to ${Math.round(Math.abs(normal) * rub)} (pressure mode)` : '');
+    liveText(readout, `device: handle ${Math.round(p[0])}, ${Math.round(p[1])} · ${Math.round(p[0] * u[0] + p[1] * u[1])} across the surface · ` +
+      `surface push ${Math.round(normal)}` + (pressing ? ` · rubbing up to ${Math.round(Math.abs(normal) * rub)} (pressure mode)` : ''));
   }
 
   return {

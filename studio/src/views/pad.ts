@@ -3,7 +3,7 @@
 // simulated hand's target; the handle is drawn where the device reports it, the force as
 // an arrow from it, and the spatial effects of the sensation where they are: spring
 // centres, walls, barriers, texture bumps. A 1-axis device gets a slider.
-import { h } from '../dom';
+import { h, liveText } from '../dom';
 import type { EffectJson } from '../document';
 import type { Live } from '../live';
 import type { Store } from '../store';
@@ -29,6 +29,7 @@ export interface PadState {
 // write (the frame queued -> written to the socket) and ahead (messages before it).
 export interface LatencySample {
   seq: number;
+  at: number; // the pointer event's time (performance.now()'s clock), to find the move in a trace
   total: number;
   input: number;
   server: number;
@@ -195,6 +196,7 @@ export class Pad {
         const server = Math.min(p.server ?? 0, p.arrived - p.sent);
         const sample: LatencySample = {
           seq: p.seq,
+          at: p.event,
           total: painted - p.event,
           input: p.sent - p.event,
           server,
@@ -223,7 +225,7 @@ export class Pad {
   private paint(): void {
     const fmt = (v: number[]) => v.map((n) => Math.round(n)).join(', ');
     const readout = document.getElementById('readout');
-    if (readout) readout.textContent = `position ${fmt(this.state.position)} · force ${fmt(this.state.force)}`;
+    if (readout) liveText(readout, `position ${fmt(this.state.position)} · force ${fmt(this.state.force)}`);
     const c = this.canvas.getContext('2d')!;
     const oneAxis = this.axes() === 1;
     const height = oneAxis ? kSliderHeight : kSize;
