@@ -59,6 +59,15 @@ function processes(root) {
 
 const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
 const studio = await startStudio(workspace);
+
+// The server and its workspace go with this process however it ends (a thrown timeout, an
+// unhandled rejection, or `timeout`/Ctrl-C sending a signal): a bench must not leave a
+// `feel studio` running that holds its output pipe (docs/studio.md, "Latency").
+process.on('exit', () => {
+  try { studio.proc.kill('SIGTERM'); } catch { /* gone */ }
+  rmSync(workspace, { recursive: true, force: true });
+});
+for (const [signal, code] of [['SIGINT', 130], ['SIGTERM', 143], ['SIGHUP', 129]]) process.on(signal, () => process.exit(code));
 const browser = await launchBrowser();
 const page = await browser.newPage();
 // FEEL_DIST=DIR: the front end from a Vite build in DIR instead of the one embedded in the

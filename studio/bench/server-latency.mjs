@@ -21,6 +21,14 @@ const workspace = mkdtempSync(join(tmpdir(), 'feel-studio-bench-'));
 const proc = spawn(feel, ['studio', '--workspace', workspace, '--port', '0', '--hand', 'stiff'], {
   stdio: ['ignore', 'pipe', 'inherit'],
 });
+// The server and its workspace go with this process however it ends (a thrown timeout, an
+// unhandled rejection, or `timeout`/Ctrl-C sending a signal): a bench must not leave a
+// `feel studio` running that holds its output pipe.
+process.on('exit', () => {
+  try { proc.kill('SIGTERM'); } catch { /* gone */ }
+  rmSync(workspace, { recursive: true, force: true });
+});
+for (const [signal, code] of [['SIGINT', 130], ['SIGTERM', 143], ['SIGHUP', 129]]) process.on(signal, () => process.exit(code));
 const host = await new Promise((ok, fail) => {
   let out = '';
   proc.stdout.on('data', (d) => {
