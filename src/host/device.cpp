@@ -17,6 +17,7 @@
 #include "feel/protocol/codec.hpp"
 #include "feel/runtime/capabilities.hpp"
 #include "feel/runtime/runtime_pipeline.hpp"
+#include "feel/transport/thread_priority.hpp"
 #include "feel/transport/transport.hpp"
 #include "host_errors.hpp"
 
@@ -49,6 +50,9 @@ Status check_options(const OpenOptions& o) {
         const Error e = Error::out_of_range("report_rate_hz", o.report_rate_hz,
                                             {runtime::kMinReportRateHz, runtime::kMaxReportRateHz});
         return Status::failure(ErrorKind::invalid_parameter, "open: " + e.message() + " Hz, or 0 for the device's", e);
+    }
+    if (const std::string wrong = transport::check_fifo_priority("io_fifo_priority", o.io_fifo_priority); !wrong.empty()) {
+        return Status::failure(ErrorKind::invalid_parameter, "open: " + wrong);
     }
     return Status::success();
 }

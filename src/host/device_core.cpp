@@ -12,6 +12,7 @@
 #include "emulation/host_emulation.hpp"
 #include "feel/protocol/codec.hpp"
 #include "feel/protocol/effect_reports.hpp"
+#include "feel/transport/thread_priority.hpp"
 #include "host_errors.hpp"
 
 namespace feel::host {
@@ -367,6 +368,7 @@ void DeviceCore::note_protocol_problem(std::string what) {
 }
 
 void DeviceCore::run() noexcept {
+    (void)transport::raise_thread_priority(options.io_fifo_priority);  // where the process may
     std::vector<uint16_t> starts;
     while (!stopping_) {
         try {

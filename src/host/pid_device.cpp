@@ -26,6 +26,7 @@
 #include "feel/effect_validation.hpp"
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/protocol/pid_effect_reports.hpp"
+#include "feel/transport/thread_priority.hpp"
 #include "feel/transport/transport.hpp"
 #include "host_errors.hpp"
 
@@ -187,6 +188,7 @@ struct PidDeviceCore {
     }
 
     void run() noexcept {
+        (void)transport::raise_thread_priority(options.io_fifo_priority);  // where the process may
         // When the last frame came (steady clock): the host's clock is read once per Input
         // report (its arrival) and once per stall render, never to find out whether one is
         // due, so a caller's clock (a test's, a probe's) sees one reading per report.

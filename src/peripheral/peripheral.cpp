@@ -41,6 +41,7 @@
 #include "feel/protocol/standard_pid.hpp"
 #include "feel/runtime/runtime_backend.hpp"
 #include "feel/transport/doorbell.hpp"
+#include "feel/transport/thread_priority.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "standard_pid_connection.hpp"
 
@@ -196,6 +197,10 @@ struct Peripheral::Impl {
           profile(&presented),
           caps(runtime::capabilities_for(*profile)),
           config(config_for(*profile, o.loop_rate_hz, o.host_watchdog)) {
+        if (const std::string wrong = transport::check_fifo_priority("service_fifo_priority", o.service_fifo_priority);
+            !wrong.empty()) {
+            throw std::invalid_argument(wrong);
+        }
         const sim::Grip grip = grip_named(o.hand);
         sim::TargetMotion motion = sim::TargetMotion::parse(o.motion, kMotionSpanS, profile->axis_count);
         auto backend = std::make_unique<runtime::SimBackend>(*profile, grip, std::move(motion));
@@ -269,6 +274,7 @@ struct Peripheral::Impl {
     }
 
     void serve_host(std::unique_ptr<transport::Connection> host) {
+        (void)transport::raise_thread_priority(options.service_fifo_priority);  // where the process may
         std::vector<transport::Frame> out;
         session->pump(out);  // what piled up while no host listened is not this host's
         out.clear();

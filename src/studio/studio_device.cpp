@@ -9,6 +9,7 @@
 #include "feel/peripheral/peripheral.hpp"
 #include "feel/sim/device_profile.hpp"
 #include "feel/sim/hand.hpp"
+#include "feel/transport/thread_priority.hpp"
 #include "feel/transport/transport.hpp"
 
 namespace feel::studio {
@@ -59,13 +60,20 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
     if (!studio_grip(options.grip)) {
         throw std::invalid_argument("hand \"" + options.grip + "\" is not one of loose, firm, stiff");
     }
+    if (const std::string wrong =
+            transport::check_fifo_priority("report_path_fifo_priority", options.report_path_fifo_priority);
+        !wrong.empty()) {
+        throw std::invalid_argument(wrong);
+    }
     host::OpenOptions open;
     open.report_rate_hz = options.report_rate_hz;  // 0: the device's own, until set below
+    open.io_fifo_priority = options.report_path_fifo_priority;
     const std::string profile = simulated_profile(options.address);
     if (!profile.empty()) {
         peripheral::PeripheralOptions p;
         p.profile = profile;
         p.hand = options.grip;
+        p.service_fifo_priority = options.report_path_fifo_priority;
         peripheral_ = std::make_shared<peripheral::Peripheral>(p);  // throws for an unknown profile
         transport::ConnectionPair pair = transport::in_process_pair("sim:" + profile);
         peripheral_->attach(std::move(pair.device));
@@ -86,7 +94,10 @@ StudioDevice::StudioDevice(const StudioDeviceOptions& options) : grip_(options.g
             }
         }
     }
-    sampler_ = std::thread([this] { sample_loop(); });
+    sampler_ = std::thread([this, priority = options.report_path_fifo_priority] {
+        (void)transport::raise_thread_priority(priority);  // where the process may
+        sample_loop();
+    });
 }
 
 StudioDevice::~StudioDevice() {

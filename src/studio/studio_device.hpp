@@ -38,6 +38,12 @@ struct StudioDeviceOptions {
     // loop (up to 1000 Hz), so that a pointer move's force change is reported at the tick
     // that makes it, not up to a report period later (docs/studio.md, "Latency").
     int32_t report_rate_hz = 0;
+    // The three threads on a state report's way to the page's pad and plot (the simulated
+    // device's service thread, the host's I/O thread, the sampler below) run under
+    // SCHED_FIFO at this priority where the process may, below the device loop's 80; 0:
+    // ordinary threads. Without it, each wake-up waits for a slice while the browser holds a
+    // core (docs/studio.md, "Tenth pass"). 1..99 or 0.
+    int32_t report_path_fifo_priority = 10;
 };
 
 // One state report: device time, force and position per axis (±10000).

@@ -125,6 +125,14 @@ TEST(HostOpen, BadAddressesAndOptionsAreInvalidParameters) {
     EXPECT_NE(zero.status().message.find("timeout = 0 is out of range (allowed 1..60000)"), std::string::npos)
         << zero.status().message;
 
+    OpenOptions priority;
+    priority.io_fifo_priority = 100;
+    Result<Device> p = Device::open("sim:iforce2", priority);
+    ASSERT_FALSE(p);
+    EXPECT_EQ(p.status().kind, ErrorKind::invalid_parameter);
+    EXPECT_NE(p.status().message.find("io_fifo_priority = 100 is out of range (allowed 1..99"), std::string::npos)
+        << p.status().message;
+
     OpenOptions hand;
     hand.sim_hand = "tentacle";
     Result<Device> h = Device::open("sim:iforce2", hand);

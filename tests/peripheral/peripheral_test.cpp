@@ -75,6 +75,16 @@ TEST(Peripheral, RejectsBadOptionsByName) {
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("100..1000"), std::string::npos) << e.what();
     }
+    o = quick_options();
+    o.service_fifo_priority = -1;
+    try {
+        Peripheral p(o);
+        FAIL() << "a service thread priority of -1 was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("service_fifo_priority = -1 is out of range (allowed 1..99"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(Peripheral, SecondHostGetsBusyAndIsClosed) {

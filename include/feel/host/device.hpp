@@ -295,6 +295,11 @@ struct OpenOptions {
     // stiffness) host emulation's engine assumes; empty: the sim: address's profile, else
     // the engine's defaults. A real wheel's figures are not known to the host.
     std::string emulation_profile;
+    // The I/O thread that receives the device's reports: 1..99 runs it under SCHED_FIFO at
+    // that priority where the process may (feel/transport/thread_priority.hpp; keep it below
+    // an in-process device loop's 80); 0: an ordinary thread. Off by default: a game's
+    // threads' priorities are the game's decision. The Studio turns it on.
+    int32_t io_fifo_priority = 0;
 };
 
 // An open device. A shared handle: copies refer to the same device, which closes when the

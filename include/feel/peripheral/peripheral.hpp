@@ -40,6 +40,10 @@ struct PeripheralOptions {
     std::string motion = "hold:0";     // the hand's target motion (feel render --motion)
     int32_t loop_rate_hz = 0;          // 0: the profile's default; else 100..20000
     runtime::DeviceRuntimeOptions runtime{};  // SCHED_FIFO / mlockall wishes
+    // The service thread that sends the loop's reports to the host: 1..99 runs it under
+    // SCHED_FIFO at that priority where the process may (feel/transport/thread_priority.hpp;
+    // below the loop's, runtime.fifo_priority); 0: an ordinary thread.
+    int32_t service_fifo_priority = 0;
     // false: the transport says when the host goes (USB: unplug, bus reset, unbind end the
     // connection), so silence is not loss: no host-link watchdog, neither the detach of a
     // silent host nor the runtime's fade. A standard PID host (hid-pidff) sends nothing
