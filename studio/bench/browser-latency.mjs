@@ -7,8 +7,9 @@
 // page's one thread, by self time). Prints the load average (docs/studio.md, "Latency").
 //
 //   node studio/bench/browser-latency.mjs build/apps/feel/feel [moves]
+//   SAMPLES_OUT=FILE ... appends every move's hops to FILE (pool-latency.mjs pools runs)
 //   FEEL_CHROMIUM_ARGS="--flag --flag" ... tries Chromium flags on top of the harness's
-import { readFileSync, readdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { appendFileSync, readFileSync, readdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 process.env.FEEL ??= resolve(process.argv[2] ?? 'build/apps/feel/feel');
@@ -162,6 +163,9 @@ const stage = (k) => {
   const v = lat.map((l) => l[k]).filter((x) => x !== undefined);
   return `p50=${quantile(v, 0.5).toFixed(1)} p99=${quantile(v, 0.99).toFixed(1)}`;
 };
+// SAMPLES_OUT=FILE: every move's hops appended to FILE, one JSON line a move, so that runs
+// can be pooled (studio/bench/pool-latency.mjs: p50 and p99 over all of them).
+if (process.env.SAMPLES_OUT) appendFileSync(process.env.SAMPLES_OUT, lat.map((l) => JSON.stringify(l)).join('\n') + '\n');
 const faded = lat.filter((l) => l.minFade < 1);
 console.log(`moves during which the device's safety faded the force: ${faded.length}` +
   (faded.length ? ` (their device hops: ${faded.map((l) => l.device?.toFixed(0)).join(' ')} ms)` : ''));
