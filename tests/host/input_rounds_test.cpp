@@ -115,13 +115,13 @@ TEST(HostInputRounds, ASimulatedRoundShowsItsOwnTicksPosition) {
     ASSERT_GE(taken_us, 0) << "the loop never took the target";
     const std::vector<InputState> got = rounds_through(*sub, taken_us + 1000);
     const InputState* taking = nullptr;
-    const InputState* next = nullptr;
+    const InputState* next = nullptr;  // the next tick's round (a loaded machine may skip a tick)
     for (const InputState& s : got) {
         if (s.t_us == taken_us) taking = &s;
-        if (s.t_us == taken_us + 1000) next = &s;
+        if (s.t_us > taken_us && next == nullptr) next = &s;
     }
     ASSERT_NE(taking, nullptr) << "no round of the taking tick " << taken_us;
-    ASSERT_NE(next, nullptr) << "no round of the tick after it";
+    ASSERT_NE(next, nullptr) << "no round of a tick after it";
     constexpr float kCount = 20000.0f / 4096;  // the sensor's step, position units
     EXPECT_NEAR(taking->position[0], 0.0f, kCount);
     EXPECT_NEAR(next->position[0], 5000.0f, kCount);
