@@ -47,15 +47,8 @@
 namespace feel::peripheral {
 namespace {
 
-using detail::Answer;
-using detail::OnAck;
-using detail::Pending;
-using detail::Refusal;
-using detail::Step;
-using protocol::ReportId;
 using transport::Frame;
 using transport::FrameKind;
-using detail::Internal;
 
 Frame input_frame(FrameKind kind, const protocol::AnyReport& report) {
     return Frame{kind, protocol::encode(report)};

@@ -12,19 +12,6 @@
 #include "input_reports.hpp"
 
 namespace feel::peripheral {
-namespace {
-
-using detail::Answer;
-using detail::OnAck;
-using detail::Pending;
-using detail::Refusal;
-using detail::Step;
-using protocol::ReportId;
-using transport::Frame;
-using transport::FrameKind;
-
-}  // namespace
-
 void DeviceSession::Impl::process_inbox() {
     while (!inbox.empty() && internal.empty() && !fence_in_flight && !pending_full()) {
         if (process(inbox.front()) == Step::blocked) return;
@@ -32,7 +19,7 @@ void DeviceSession::Impl::process_inbox() {
     }
 }
 
-Pending DeviceSession::Impl::status_entry(uint32_t sequence, ReportId command, uint16_t block) {
+auto DeviceSession::Impl::status_entry(uint32_t sequence, ReportId command, uint16_t block) -> Pending {
     Pending p;
     p.answer = Answer::status;
     p.status.sequence = sequence;
@@ -66,7 +53,7 @@ void DeviceSession::Impl::refuse_frame(const Frame& f, const Refusal& why) {
     refuse(sequence, command, 0, why);
 }
 
-Refusal DeviceSession::Impl::from_error(const Error& e) {
+auto DeviceSession::Impl::from_error(const Error& e) -> Refusal {
     Refusal r;
     r.code = e.code;
     r.field = std::string(e.field, strnlen(e.field, sizeof e.field));
@@ -77,7 +64,7 @@ Refusal DeviceSession::Impl::from_error(const Error& e) {
     return r;
 }
 
-Step DeviceSession::Impl::process(const Frame& f) {
+auto DeviceSession::Impl::process(const Frame& f) -> Step {
     switch (f.kind) {
         case FrameKind::output_report: return process_report(f, protocol::ReportKind::output);
         case FrameKind::set_feature: return process_report(f, protocol::ReportKind::feature);
@@ -114,7 +101,7 @@ Step DeviceSession::Impl::process(const Frame& f) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::process_get_feature(const Frame& f) {
+auto DeviceSession::Impl::process_get_feature(const Frame& f) -> Step {
     if (f.payload.size() != 1) {
         refuse_frame(Frame{}, Refusal::out_of_range("get_feature.length", static_cast<int64_t>(f.payload.size()),
                                                     {1, 1}));
@@ -156,7 +143,7 @@ Step DeviceSession::Impl::process_get_feature(const Frame& f) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::process_report(const Frame& f, protocol::ReportKind expected) {
+auto DeviceSession::Impl::process_report(const Frame& f, protocol::ReportKind expected) -> Step {
     protocol::AnyReport report;
     if (const Error e = protocol::decode(f.payload, report)) {
         refuse_frame(f, from_error(e));
@@ -214,8 +201,8 @@ detail::Block* DeviceSession::Impl::find_committed(ReportId id, uint16_t index, 
     return nullptr;
 }
 
-Step DeviceSession::Impl::forward(const runtime::Command& command, uint32_t sequence, ReportId id, uint16_t block,
-                                  bool effect_status, OnAck on_ack, int32_t value) {
+auto DeviceSession::Impl::forward(const runtime::Command& command, uint32_t sequence, ReportId id, uint16_t block,
+                                  bool effect_status, OnAck on_ack, int32_t value) -> Step {
     uint32_t runtime_sequence = 0;
     if (!send(command, runtime_sequence)) return Step::blocked;
     Pending p = status_entry(sequence, id, block);
@@ -228,7 +215,7 @@ Step DeviceSession::Impl::forward(const runtime::Command& command, uint32_t sequ
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::CreateNewEffectReport& r) {
+auto DeviceSession::Impl::handle(const protocol::CreateNewEffectReport& r) -> Step {
     const ReportId id = ReportId::create_new_effect;
     last_block_load = protocol::BlockLoadReport{0, protocol::BlockLoadStatus::error, 0};
     if (!caps.supports(r.type)) {
@@ -265,7 +252,7 @@ Step DeviceSession::Impl::handle(const protocol::CreateNewEffectReport& r) {
 }
 
 template <class R>
-Step DeviceSession::Impl::type_block(const R& r) {
+auto DeviceSession::Impl::type_block(const R& r) -> Step {
     const ReportId id = protocol::report_id_of(protocol::AnyReport{r});
     detail::Block* b = find_block(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -300,7 +287,7 @@ Step DeviceSession::Impl::type_block(const R& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::apply_level(const protocol::SetConstantForceReport& r, detail::Block& b) {
+auto DeviceSession::Impl::apply_level(const protocol::SetConstantForceReport& r, detail::Block& b) -> Step {
     if (fence_in_flight) return Step::blocked;
     EffectParams next = b.committed;
     next.constant.magnitude = r.magnitude;
@@ -319,7 +306,7 @@ Step DeviceSession::Impl::apply_level(const protocol::SetConstantForceReport& r,
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::CustomForceDataReport& r) {
+auto DeviceSession::Impl::handle(const protocol::CustomForceDataReport& r) -> Step {
     const ReportId id = ReportId::custom_force_data;
     detail::Block* b = find_block(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -358,7 +345,7 @@ Step DeviceSession::Impl::handle(const protocol::CustomForceDataReport& r) {
     return step;
 }
 
-Step DeviceSession::Impl::handle(const protocol::SetEffectReport& r) {
+auto DeviceSession::Impl::handle(const protocol::SetEffectReport& r) -> Step {
     const ReportId id = ReportId::set_effect;
     detail::Block* b = find_block(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -439,7 +426,7 @@ Step DeviceSession::Impl::handle(const protocol::SetEffectReport& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::DownloadForceSampleReport& r) {
+auto DeviceSession::Impl::handle(const protocol::DownloadForceSampleReport& r) -> Step {
     const std::span<const int16_t> force(r.force, std::min<std::size_t>(r.axis_count, kMaxAxes));
     uint32_t runtime_sequence = 0;
     if (!send(runtime::make_stream_force(0, force), runtime_sequence)) return Step::blocked;
@@ -451,7 +438,7 @@ Step DeviceSession::Impl::handle(const protocol::DownloadForceSampleReport& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::EffectOperationReport& r) {
+auto DeviceSession::Impl::handle(const protocol::EffectOperationReport& r) -> Step {
     const ReportId id = ReportId::effect_operation;
     detail::Block* b = find_committed(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -470,7 +457,7 @@ Step DeviceSession::Impl::handle(const protocol::EffectOperationReport& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::BlockFreeReport& r) {
+auto DeviceSession::Impl::handle(const protocol::BlockFreeReport& r) -> Step {
     const ReportId id = ReportId::block_free;
     detail::Block* b = find_block(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -498,7 +485,7 @@ Step DeviceSession::Impl::handle(const protocol::BlockFreeReport& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::DeviceControlReport& r) {
+auto DeviceSession::Impl::handle(const protocol::DeviceControlReport& r) -> Step {
     const ReportId id = ReportId::device_control;
     const std::optional<runtime::DeviceControl> control = detail::runtime_control(r.control);
     if (!control) {
@@ -521,12 +508,12 @@ Step DeviceSession::Impl::handle(const protocol::DeviceControlReport& r) {
     return Step::done;
 }
 
-Step DeviceSession::Impl::handle(const protocol::DeviceGainReport& r) {
+auto DeviceSession::Impl::handle(const protocol::DeviceGainReport& r) -> Step {
     return forward(runtime::make_value_command(runtime::CommandKind::set_gain, 0, r.gain), r.sequence,
                    ReportId::device_gain, 0);
 }
 
-Step DeviceSession::Impl::handle(const protocol::ReflexReport& r) {
+auto DeviceSession::Impl::handle(const protocol::ReflexReport& r) -> Step {
     const ReportId id = ReportId::reflex;
     detail::Block* b = find_committed(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
@@ -535,20 +522,20 @@ Step DeviceSession::Impl::handle(const protocol::ReflexReport& r) {
     return forward(runtime::make_effect_command(kind, 0, b->effect), r.sequence, id, r.block);
 }
 
-Step DeviceSession::Impl::handle(const protocol::IdfSettingsReport& r) {
+auto DeviceSession::Impl::handle(const protocol::IdfSettingsReport& r) -> Step {
     return forward(runtime::make_set_idf(0, r.settings), r.sequence, ReportId::idf_settings, 0);
 }
 
-Step DeviceSession::Impl::handle(const protocol::ReportRateReport& r) {
+auto DeviceSession::Impl::handle(const protocol::ReportRateReport& r) -> Step {
     return forward(runtime::make_value_command(runtime::CommandKind::set_report_rate, 0, r.rate_hz), r.sequence,
                    ReportId::report_rate, 0, false, OnAck::report_rate, r.rate_hz);
 }
 
-Step DeviceSession::Impl::handle(const protocol::KeepAliveReport& r) {
+auto DeviceSession::Impl::handle(const protocol::KeepAliveReport& r) -> Step {
     return forward(runtime::make_keep_alive(0), r.sequence, ReportId::keep_alive, 0);
 }
 
-Step DeviceSession::Impl::handle(const protocol::EffectStatusRequestReport& r) {
+auto DeviceSession::Impl::handle(const protocol::EffectStatusRequestReport& r) -> Step {
     const ReportId id = ReportId::effect_status_request;
     detail::Block* b = find_committed(id, r.block, r.sequence);
     if (b == nullptr) return Step::done;
