@@ -82,7 +82,7 @@
 // float it was given: the running sums' fixed-point value of a sample is worked out when
 // they read it (fixed_at: a multiplication and a rounding, 9 samples an axis a tick), not
 // kept beside it (512 bytes an axis). Both paths share one fit loop (fit: the line and the
-// parabola by Cramer's rule, the band check) and one bookkeeping (fit_axis); only the sums
+// parabola by Cramer's rule, the band check, the search down the rungs); only the sums
 // (running or gathered) and the set of samples checked differ, so the Cortex-M4 carries
 // one copy of each.
 //
@@ -218,6 +218,13 @@ inline int32_t MotionEstimator::fixed_value(float x) const noexcept {
 
 inline int64_t MotionEstimator::fixed_at(int axis, int i) const noexcept {
     return fixed_value(x_[axis][(head_ + i) & kMask]);
+}
+
+// fixed_at for a sample known to be representable (within fixed_run_): the same value
+// without the range check, on the sums' every-tick reads.
+inline int64_t MotionEstimator::held_fixed_at(int axis, int i) const noexcept {
+    const float scaled = x_[axis][(head_ + i) & kMask] * fixed_scale_;
+    return static_cast<int32_t>(scaled + std::copysign(0.5f, scaled));
 }
 
 void MotionEstimator::configure(float sensor_step) noexcept {
@@ -368,10 +375,14 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         for (int k = kFirstSummed; k < kLadderSize; ++k) constant_sums(kLadder[k], still, sums_[axis].at(k));
     }
     const int64_t in = frozen_fixed_value_[axis];
+    // Where every leaving sample is known to have a value (the common case), it is read
+    // without the range check.
+    const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         const int64_t n = kLadder[k];
         // Before the ring holds n + 1 frozen samples nothing leaves.
-        const int64_t out = n + 1 <= count_ - 1 ? fixed_at(axis, kLadder[k] + 1) : 0;
+        const int leaving = kLadder[k] + 1;
+        const int64_t out = n + 1 > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving);
         int64_t* s = sums_[axis].at(k);
         const int64_t s0 = s[0], s1 = s[1];
         s[0] = s0 + in - out;
@@ -431,8 +442,8 @@ void MotionEstimator::window_sums(int axis, int r, int64_t x0, float out[3]) con
         ladder_sums(axis, k, s);
         from = kLadder[k] + 1;
     }
-    for (int i = from; i <= n; ++i) {
-        const int64_t value = fixed_at(axis, i);
+    for (int i = from; i <= n; ++i) {  // the running-sum path: every sample within fixed_run_
+        const int64_t value = held_fixed_at(axis, i);
         const int64_t m = i - 1;
         s[0] += value;
         s[1] += m * value;
@@ -524,12 +535,20 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
 // than kMinAccelerationWindow intervals, and over that many it is taken without the band
 // check: where no longer window fits, its estimate is the motion's mean curvature over
 // those few ms (kMinAccelerationWindow is a rung: kLadder holds it, or it is max_n).
-int MotionEstimator::fit(int axis, int order, int top, const float* y, const float (*gathered)[kRungs],
-                         float& value) const noexcept {
+// The running sums (gathered null) search down from kRungsUp above the rung accepted last
+// time; the general path from the whole history. The estimate, its window and the rung go
+// to the axis's velocity (order 1) or acceleration (order 2).
+void MotionEstimator::fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
     const TimePattern& p = pattern_;
-    const int min_n = order == 1 ? 1 : kMinAccelerationWindow;
+    const bool line = order == 1;
+    const int min_n = line ? 1 : kMinAccelerationWindow;
     const int64_t x0 = newest_fixed_value_[axis];
-    for (int r = top; r >= 0; --r) {
+    const bool fast = gathered == nullptr;
+    int& rung = line ? velocity_rung_[axis] : acceleration_rung_[axis];
+    int& window = line ? velocity_window_[axis] : acceleration_window_[axis];
+    float& result = line ? velocity_[axis] : acceleration_[axis];
+    const int top = p.rung_count - 1;
+    for (int r = fast ? start_rung(rung, top) : top; r >= 0; --r) {
         const int n = p.rung_n[r];
         if (n < min_n) break;
         float s[3];
@@ -540,7 +559,7 @@ int MotionEstimator::fit(int axis, int order, int top, const float* y, const flo
         }
         const float m0 = static_cast<float>(n + 1), m1 = p.moment[0][r], m2 = p.moment[1][r];
         float c0 = 0, c1 = 0, c2 = 0, estimate = 0;
-        if (order == 1) {
+        if (line) {
             const float det = m0 * m2 - m1 * m1;
             if (!(det > 0)) continue;
             c1 = (m0 * s[1] - m1 * s[0]) / det;
@@ -556,13 +575,19 @@ int MotionEstimator::fit(int axis, int order, int top, const float* y, const flo
             estimate = 2.0f * c2 / (kWindowS * kWindowS);
         }
         const float* x = x_[axis];
-        const bool passes = order == 1 ? within_band<false>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_)
+        const bool passes = line ? within_band<false>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_)
                             : n == kMinAccelerationWindow || within_band<true>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_);
         if (!passes) continue;
-        value = estimate;
-        return r;
+        if (fast) rung = r;
+        window = n;
+        result = std::isfinite(estimate) ? estimate : 0.0f;
+        return;
     }
-    return -1;
+    // None passes: a degenerate window, or a position that is not finite (a line through
+    // two samples passes otherwise).
+    if (fast && line) rung = 0;
+    window = 0;
+    result = 0.0f;
 }
 
 void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {
@@ -596,7 +621,8 @@ void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexc
         return;
     }
     if (fast_fit_possible(axis)) {
-        fit_axis(axis, velocity, fits_acceleration, nullptr, nullptr);
+        if (velocity) fit(axis, 1, nullptr, nullptr);
+        if (fits_acceleration) fit(axis, 2, nullptr, nullptr);
     } else {
         estimate_general(axis, velocity, fits_acceleration);
     }
@@ -609,30 +635,8 @@ void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleratio
     float y[kHistory];
     float sums[3][kRungs];
     gather_axis(axis, y, sums);
-    fit_axis(axis, velocity, acceleration, y, sums);
-}
-
-// The running sums (gathered null) search down from last tick's rungs; the general path
-// from the whole history.
-void MotionEstimator::fit_axis(int axis, bool velocity, bool acceleration, const float* y,
-                               const float (*gathered)[kRungs]) noexcept {
-    const TimePattern& p = pattern_;
-    const bool fast = gathered == nullptr;
-    const int top = p.rung_count - 1;
-    if (velocity) {
-        float v = 0;
-        const int r = fit(axis, 1, fast ? start_rung(velocity_rung_[axis], top) : top, y, gathered, v);
-        if (fast) velocity_rung_[axis] = r < 0 ? 0 : r;
-        velocity_window_[axis] = r < 0 ? 0 : p.rung_n[r];
-        velocity_[axis] = r >= 0 && std::isfinite(v) ? v : 0.0f;
-    }
-    if (acceleration) {
-        float a = 0;
-        const int r = fit(axis, 2, fast ? start_rung(acceleration_rung_[axis], top) : top, y, gathered, a);
-        if (fast && r >= 0) acceleration_rung_[axis] = r;
-        acceleration_window_[axis] = r < 0 ? 0 : p.rung_n[r];
-        acceleration_[axis] = r >= 0 && std::isfinite(a) ? a : 0.0f;
-    }
+    if (velocity) fit(axis, 1, y, sums);
+    if (acceleration) fit(axis, 2, y, sums);
 }
 
 }  // namespace feel::detail

@@ -148,14 +148,12 @@ private:
     // The general path: the history gathered (uneven older intervals, a position the
     // running sums cannot hold). Not inlined: its buffers stay off the common path's stack.
     [[gnu::noinline]] void estimate_general(int axis, bool velocity, bool acceleration) noexcept;
-    // Both fits of an axis from the running sums (gathered null) or from gathered samples.
-    void fit_axis(int axis, bool velocity, bool acceleration, const float* y, const float (*gathered)[kRungs]) noexcept;
-    // The longest rung from `top` down whose line (order 1) or parabola (order 2) passes
-    // the band check; -1 if none does. `value` receives its slope or second derivative.
-    // gathered: the sums at every rung and the samples (gather_axis), the band checked on
-    // every sample; nullptr: the running sums, the band checked on a fixed set of samples.
-    int fit(int axis, int order, int top, const float* y, const float (*gathered)[kRungs],
-            float& value) const noexcept;
+    // The longest rung whose line (order 1) or parabola (order 2) passes the band check:
+    // its slope or second derivative, window and rung are the axis's velocity or
+    // acceleration. gathered: the sums at every rung and the samples (gather_axis), the band
+    // checked on every sample; nullptr: the running sums, the band checked on a fixed set of
+    // samples.
+    void fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;
 
     // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
     // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
@@ -164,6 +162,7 @@ private:
     // Sample i's position of an axis as the running sums hold it. Worked out when read
     // (issue 14's RAM: the ring keeps one copy of a position, the float it was given).
     int64_t fixed_at(int axis, int i) const noexcept;
+    int64_t held_fixed_at(int axis, int i) const noexcept;  // i within fixed_run_
 
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
     float fixed_scale_ = 64.0f;        // fixed-point units per position unit, a power of two
