@@ -97,7 +97,6 @@ namespace {
 
 static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
 constexpr int kMask = MotionEstimator::kHistory - 1;
-constexpr int kFirstSummed = MotionEstimator::kFirstSummed;
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
 
 // The ring keeps the low 32 bits of each sample's time (issue 14: 512 bytes less). The time
