@@ -537,7 +537,14 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
 // The running sums (gathered null) search down from kRungsUp above the rung accepted last
 // time; the general path from the whole history. The estimate, its window and the rung go
 // to the axis's velocity (order 1) or acceleration (order 2).
-void MotionEstimator::fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+// On the board (-Os) one copy serves both orders. Elsewhere each order gets its own copy,
+// the order a constant in it: the tick's x86 estimator takes about 120 instructions fewer.
+#if defined(__OPTIMIZE_SIZE__)
+inline void MotionEstimator::fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+#else
+[[gnu::always_inline]] inline void MotionEstimator::fit_order(int axis, int order, const float* y,
+                                                             const float (*gathered)[kRungs]) noexcept {
+#endif
     const TimePattern& p = pattern_;
     const bool line = order == 1;
     const int min_n = line ? 1 : kMinAccelerationWindow;
@@ -587,6 +594,18 @@ void MotionEstimator::fit(int axis, int order, const float* y, const float (*gat
     if (fast && line) rung = 0;
     window = 0;
     result = 0.0f;
+}
+
+void MotionEstimator::fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    fit_order(axis, order, y, gathered);
+#else
+    if (order == 1) {
+        fit_order(axis, 1, y, gathered);
+    } else {
+        fit_order(axis, 2, y, gathered);
+    }
+#endif
 }
 
 void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {

@@ -154,6 +154,7 @@ private:
     // checked on every sample; nullptr: the running sums, the band checked on a fixed set of
     // samples.
     void fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;
+    void fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;  // fit's body
 
     // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
     // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
