@@ -1,9 +1,11 @@
 // The engine's memory on the Cortex-M4F for 32 effect slots on 2 axes, itemised; run by
 // `make firmware` under qemu after the build (the flash figures come from the linked
 // image, see firmware/CMakeLists.txt). Sample memory, the report queue and the pools of
-// effect memory are sized as a small device would: 512 force-profile samples (1024 until
-// issue 14's RAM pass: docs/firmware.md says why), 16 reports, 4 dynamics and 8 conditions
-// with memory (friction, texture, walls, barriers) resident at once of the 32 effects.
+// effect memory are sized as a small device would: 1024 force-profile samples (512 for a
+// while in issue 14's RAM pass, until the estimator's pass made room: docs/firmware.md),
+// 16 reports, 4 dynamics and 8 conditions with memory (friction, texture, walls, barriers)
+// resident at once of the 32 effects.
+#include <cstdint>
 #include <cstdio>
 
 #include "engine_impl.hpp"  // detail::Slot
@@ -31,7 +33,7 @@ __attribute__((noinline)) unsigned untouched() {
 }  // namespace
 
 // Force-profile samples: a small device's profile memory (§2.2, "Local Memory Limitations").
-constexpr int kSamples = 512;
+constexpr int kSamples = 1024;
 
 int main() {
     using namespace feel;
@@ -78,8 +80,9 @@ int main() {
     // The 16 KB goal split over the items: a budget each, so that each figure has a goal.
     // (A dynamic's parameter block moved from its slot into its record, and 2 KB of budget
     // with it; issue 14's RAM pass gave the sample memory's halved capacity to the effect
-    // memory, the reports and the rest.)
-    constexpr unsigned kSlotBudget = 5120, kMemoryBudget = 4608, kSampleBudget = 1024, kEstimatorBudget = 4096,
+    // memory, the reports and the rest; the estimator's pass gave 1 KB of the estimator's
+    // budget back to the samples.)
+    constexpr unsigned kSlotBudget = 5120, kMemoryBudget = 4608, kSampleBudget = 2048, kEstimatorBudget = 3072,
                        kReportBudget = 640, kRestBudget = 896;
     static_assert(kSlotBudget + kMemoryBudget + kSampleBudget + kEstimatorBudget + kReportBudget + kRestBudget ==
                   16384);
@@ -92,9 +95,13 @@ int main() {
                 memory, kMemoryBudget, c.max_dynamics, dynamic_record, static_cast<unsigned>(sizeof(detail::SlotDynamicBlock)),
                 c.max_stateful_conditions, condition_record);
     std::printf("  sample memory    %6u  goal %5u  (%d force-profile samples)\n", samples, kSampleBudget, kSamples);
-    std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes: %d samples of time, "
-                "position and its fixed-point copy; the fits' time pattern and running sums)\n",
-                estimator, kEstimatorBudget, kMaxAxes, detail::MotionEstimator::kHistory);
+    // The estimator's ring: a 32-bit time per sample and a float position per sample and axis.
+    constexpr unsigned kHistory = detail::MotionEstimator::kHistory;
+    const unsigned ring_times = kHistory * sizeof(uint32_t), ring_positions = kMaxAxes * kHistory * sizeof(float);
+    std::printf("  estimator        %6u  goal %5u  (velocity and acceleration history, %d axes: %u samples of time %u "
+                "and position %u; the fits' time pattern, running sums and state %u)\n",
+                estimator, kEstimatorBudget, kMaxAxes, kHistory, ring_times, ring_positions,
+                estimator - ring_times - ring_positions);
     std::printf("  reports          %6u  goal %5u  (16 dynamic reports of %u in the queue's record; the host's is %u)\n",
                 reports, kReportBudget, static_cast<unsigned>(sizeof(detail::QueuedReport)),
                 static_cast<unsigned>(sizeof(DynamicReport)));

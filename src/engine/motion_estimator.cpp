@@ -59,9 +59,8 @@
 //     when the loop's rhythm does: at a steady rate every sample's age is i·T, so they are
 //     computed once and kept (refresh_time_pattern).
 //   * the band check (every sample within a count of the fit) is the one O(n) part; it
-//     walks the window from the newest sample in blocks of 8 and stops at the first block
-//     that leaves the band. A window too long for a bending motion leaves it first at its
-//     newest end, so a failed rung costs about one block.
+//     first tries the newest samples and the window's eighths, where a window too long
+//     for a bending motion leaves the band, so a failed rung costs a few samples.
 // That is the general path. On the common one (every older interval the same, positions
 // within range) the sums come without a pass at all (issue 14):
 //   * each ladder window's sums over the frozen samples (all but the newest, which a
@@ -79,19 +78,25 @@
 // rounding of fitting in [-1, 0] per window: single precision is enough (the normal
 // equations of a parabola on [-1, 0] lose about 2 of float's 7 digits).
 //
+// Memory and code (issue 14's RAM and flash). The ring keeps one copy of each position, the
+// float it was given: the running sums' fixed-point value of a sample is worked out when
+// they read it (fixed_at: a multiplication and a rounding, 9 samples an axis a tick), not
+// kept beside it (512 bytes an axis). Both paths share one fit loop (fit: the line and the
+// parabola by Cramer's rule, the band check, the search down the rungs); only the sums
+// (running or gathered) and the set of samples checked differ, so the Cortex-M4 carries
+// one copy of each.
+//
 // Everything is float and every sum is taken in a fixed order, without fused multiply-adds
 // (the firmware build turns contraction off), so x86 and the Cortex-M4 agree bit for bit.
 #include "motion_estimator.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace feel::detail {
 namespace {
 
 static_assert((MotionEstimator::kHistory & (MotionEstimator::kHistory - 1)) == 0, "the ring is indexed by a mask");
 constexpr int kMask = MotionEstimator::kHistory - 1;
-constexpr int kFirstSummed = MotionEstimator::kFirstSummed;
 constexpr float kUnitsPerUs = 1.0f / static_cast<float>(MotionEstimator::kMaxWindowUs);
 
 // The ring keeps the low 32 bits of each sample's time (issue 14: 512 bytes less). The time
@@ -105,128 +110,80 @@ constexpr int64_t elapsed_us(uint32_t later, uint32_t earlier) noexcept {
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
-// Sums of y, u·y and (for a parabola) u²·y over samples begin..end-1, added to sum[0..2].
-// Four partial sums in a fixed order: vectorizable and the same on every platform.
-template <bool kParabola>
+
+// Sums of y, u·y and u²·y over samples begin..end-1, added to sum[0..2]: a short segment
+// (the short windows' few samples) one by one, a longer one in four partial sums in a fixed
+// order (vectorizable and the same on every platform). The line fits do not read Σ u²·y;
+// it is summed anyway, on the general path only, for one copy of this code (issue 14's flash).
 void add_moments(const float* y, const float* u, int begin, int end, float sum[3]) noexcept {
+    if (end - begin < 8) {
+        for (int i = begin; i < end; ++i) {
+            sum[0] += y[i];
+            sum[1] += u[i] * y[i];
+            sum[2] += (u[i] * u[i]) * y[i];
+        }
+        return;
+    }
     float a0[4] = {}, a1[4] = {}, a2[4] = {};
     int i = begin;
     for (; i + 4 <= end; i += 4) {
         for (int j = 0; j < 4; ++j) {
             a0[j] += y[i + j];
             a1[j] += u[i + j] * y[i + j];
-            if (kParabola) a2[j] += (u[i + j] * u[i + j]) * y[i + j];
+            a2[j] += (u[i + j] * u[i + j]) * y[i + j];
         }
     }
     for (int j = 0; i < end; ++i, ++j) {
         a0[j] += y[i];
         a1[j] += u[i] * y[i];
-        if (kParabola) a2[j] += (u[i] * u[i]) * y[i];
+        a2[j] += (u[i] * u[i]) * y[i];
     }
     sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
     sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
-    if (kParabola) sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
-}
-
-// True if every sample 0..n lies within band of c0 + c1·u (+ c2·u² for a parabola). A
-// window too long for a bending motion leaves the band first at its ends and its middle,
-// so those three samples are tried first; then the whole window in one pass without
-// branches (vector code).
-template <bool kParabola>
-bool within_band(const float* y, const float* u, int n, float c0, float c1, float c2,
-                 float band) noexcept {
-    auto outside = [=](int i) {
-        const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
-        return static_cast<int>(std::fabs(y[i] - fit) > band);
-    };
-    if (outside(0) | outside(n) | outside(n / 2)) return false;
-    int any = 0;
-    for (int i = 1; i < n; ++i) any |= outside(i);
-    return !any;
-}
-
-// One axis's samples newest first (y relative to the newest) with the shared times, and
-// the window sums at each rung.
-struct AxisWindow {
-    const float* y;
-    const float* u;
-    const float (*time)[MotionEstimator::kRungs];  // time[p][r] = Σ u^p
-    const float* sum[3];                            // sum[p][r] = Σ u^p·y
-};
-
-// Least-squares line over rung r's window (n intervals); true and the slope (units/s) if
-// every sample lies within band of it.
-bool fit_line(const AxisWindow& w, int r, int n, float band, float& slope) noexcept {
-    const float s0 = static_cast<float>(n + 1), s1 = w.time[1][r], s2 = w.time[2][r];
-    const float r0 = w.sum[0][r], r1 = w.sum[1][r];
-    const float det = s0 * s2 - s1 * s1;
-    if (!(det > 0)) return false;
-    const float c1 = (s0 * r1 - s1 * r0) / det;
-    const float c0 = (r0 - c1 * s1) / s0;
-    if (!within_band<false>(w.y, w.u, n, c0, c1, 0.0f, band)) return false;
-    slope = c1 / kWindowS;
-    return true;
+    sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
 }
 
 float det3(float a, float b, float c, float d, float e, float f, float g, float h, float k) noexcept {
     return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
 }
 
-// Least-squares parabola over rung r's window (n >= 2); true and the second derivative
-// (units/s²) if every sample lies within band of it (an infinite band skips the check).
-bool fit_parabola(const AxisWindow& w, int r, int n, float band, float& curvature) noexcept {
-    const float s0 = static_cast<float>(n + 1), s1 = w.time[1][r], s2 = w.time[2][r], s3 = w.time[3][r],
-                s4 = w.time[4][r];
-    const float r0 = w.sum[0][r], r1 = w.sum[1][r], r2 = w.sum[2][r];
-    // Normal equations M·c = r with M[i][j] = s[i+j], solved by Cramer's rule.
-    const float det = det3(s0, s1, s2, s1, s2, s3, s2, s3, s4);
-    if (!(det > 0)) return false;
-    const float c2 = det3(s0, s1, r0, s1, s2, r1, s2, s3, r2) / det;
-    if (band < std::numeric_limits<float>::infinity()) {
-        const float c0 = det3(r0, s1, s2, r1, s2, s3, r2, s3, s4) / det;
-        const float c1 = det3(s0, r0, s2, s1, r1, s3, s2, r2, s4) / det;
-        if (!within_band<true>(w.y, w.u, n, c0, c1, c2, band)) return false;
-    }
-    curvature = 2.0f * c2 / (kWindowS * kWindowS);
-    return true;
+// Σ m^p·X over m = 0..n-1 for a constant X (p = 0, 1, 2): a window at rest, or the newest
+// sample's share of a window's sums. Exact in 64-bit integers.
+void constant_sums(int64_t n, int64_t value, int64_t out[3]) noexcept {
+    out[0] = n * value;
+    out[1] = n * (n - 1) / 2 * value;
+    out[2] = (n - 1) * n * (2 * n - 1) / 6 * value;
 }
 
-// The longest rung from min_n up whose window fit() accepts, trying the whole history
-// first and then the ladder downwards; 0 if none does. `value` receives the accepted
-// fit's estimate. Longest first rather than growing until the first failure: on a ramp
-// whose speed is close to a whole number of counts per tick the rounding error is a slow
-// sawtooth, which a middle-sized window can fail while both a short and a long one pass;
-// the long one is the better estimate, and for steady motion this order needs one fit.
-template <typename Fit>
-int adaptive_window(const AxisWindow& w, const uint8_t* rung_n, int rung_count, int min_n, float band, Fit fit,
-                    float& value) noexcept {
-    for (int r = rung_count - 1; r >= 0; --r) {
-        const int n = rung_n[r];
-        if (n < min_n) break;
-        float estimate = 0;
-        if (fit(w, r, n, band, estimate)) {
-            value = estimate;
-            return n;
-        }
-    }
-    return 0;
+// Where the running-sum fits start their downward search: kRungsUp above the rung accepted
+// last time, the whole history (top) at most. The full search (longest window first) is
+// what the general path does every tick; a window that passed last tick grows by a rung or
+// two a tick at most, so starting a little above it finds the same window except when the
+// motion has just turned steady after a bend: then the window grows back to its longest
+// over a few ticks instead of at once.
+int start_rung(int previous, int top) noexcept {
+    return previous + MotionEstimator::kRungsUp < top ? previous + MotionEstimator::kRungsUp : top;
 }
 
-// True if every sample of a fixed set within 0..n lies within band of the fit: the newest
-// kDenseSamples one by one (where a stop or a reversal first shows), then the window's
-// eighths (where a bend shows: a line fitted to a curve departs from it most at the ends
-// and the middle, a parabola fitted to a cubic at the ends and at about a sixth in from
-// them). x is one axis's ring, y_i = x[(head + i) & kMask] - x0.
+// The band check on the running-sum path looks at a fixed set of samples within 0..n: the
+// newest kDenseSamples one by one (where a stop or a reversal first shows), then the
+// window's eighths (where a bend shows: a line fitted to a curve departs from it most at
+// the ends and the middle, a parabola fitted to a cubic at the ends and at about a sixth in
+// from them). The general path checks the same set first, then every other sample.
 constexpr int kDenseSamples = 8;
 
+// True if every sample of a window of n intervals lies within band of c0 + c1·u (+ c2·u²
+// for a parabola): on the running-sum path (y null) the fixed set of samples kDenseSamples
+// describes, read from the ring (x, head, x0: one axis's ring and its newest sample); on
+// the general path (y: the gathered samples, the same values) that set first, where a
+// window too long for the motion leaves the band, then every other sample in one pass
+// without branches (vector code). A template on the order: the line's check is the tick's
+// commonest loop, and a parabola's terms would cost it a third more (issue 14).
 template <bool kParabola>
-bool sampled_within_band(const float* x, int head, float x0, const float* u, int n, float c0,
-                         float c1, float c2, float band) noexcept {
-    auto outside = [=](int i) {
-        const float y = x[(head + i) & kMask] - x0;
-        const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
-        return std::fabs(y - fit) > band;
-    };
+bool within_band(const float* x, int head, float x0, const float* u, const float* y, int n, float c0, float c1,
+                 float c2, float band) noexcept {
+    auto fit = [=](int i) { return kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i]; };
+    auto outside = [=](int i) { return std::fabs((x[(head + i) & kMask] - x0) - fit(i)) > band; };
     const int dense = n < kDenseSamples ? n : kDenseSamples;
     for (int i = 0; i <= dense; ++i) {
         if (outside(i)) return false;
@@ -237,10 +194,37 @@ bool sampled_within_band(const float* x, int head, float x0, const float* u, int
             if (i > kDenseSamples && outside(i)) return false;
         }
     }
-    return true;
+    if (y == nullptr) return true;
+    int any = 0;
+    for (int i = kDenseSamples + 1; i < n; ++i) any |= static_cast<int>(std::fabs(y[i] - fit(i)) > band);
+    return !any;
 }
 
+
 }  // namespace
+
+// The fixed-point value is exact for every float position within ±max_fixed_position_
+// whose finest bit is not below 1/fixed_scale_; elsewhere in range a deterministic rounding
+// of it, half away from zero (the same on every platform), at most half a unit off (1/8192
+// of a count on the joystick). Out of range (or not finite) it is 0, and the sums that
+// read it are not used (fixed_run_). The conversion stays within int32 whatever x is.
+inline bool MotionEstimator::representable(float x) const noexcept { return std::fabs(x) < max_fixed_position_; }
+
+inline int32_t MotionEstimator::fixed_value(float x) const noexcept {
+    const float scaled = representable(x) ? x * fixed_scale_ : 0.0f;
+    return static_cast<int32_t>(scaled + std::copysign(0.5f, scaled));  // ±0 gives 0 either way
+}
+
+inline int64_t MotionEstimator::fixed_at(int axis, int i) const noexcept {
+    return fixed_value(x_[axis][(head_ + i) & kMask]);
+}
+
+// fixed_at for a sample known to be representable (within fixed_run_): the same value
+// without the range check, on the sums' every-tick reads.
+inline int64_t MotionEstimator::held_fixed_at(int axis, int i) const noexcept {
+    const float scaled = x_[axis][(head_ + i) & kMask] * fixed_scale_;
+    return static_cast<int32_t>(scaled + std::copysign(0.5f, scaled));
+}
 
 void MotionEstimator::configure(float sensor_step) noexcept {
     band_ = std::isfinite(sensor_step) && sensor_step > 0 ? sensor_step : 1.0f;
@@ -343,10 +327,12 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
             still_run_[a] = 1;
         }
         x_[a][head_] = x;
-        if (pushed) frozen_fixed_[a] = newest_fixed_[a];
-        int64_t fixed = 0;
-        newest_fixed_[a] = to_fixed(x, fixed);
-        fixed_[a][head_] = newest_fixed_[a] ? static_cast<int32_t>(fixed) : 0;
+        if (pushed) {
+            frozen_fixed_[a] = newest_fixed_[a];
+            frozen_fixed_value_[a] = newest_fixed_value_[a];
+        }
+        newest_fixed_[a] = representable(x);
+        newest_fixed_value_[a] = fixed_value(x);
     }
 
     for (int a = 0; a < axes; ++a) {
@@ -361,18 +347,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     refresh_time_pattern();
     newest_interval_u_ = count_ >= 2 ? static_cast<float>(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
-    for (int a = 0; a < axes; ++a) estimate_axis(a, with_acceleration);
+    for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
     for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
-}
-
-// Exact for every float position within ±max_fixed_position_ whose finest bit is not
-// below 1/fixed_scale_; elsewhere a deterministic rounding of it (the same on every
-// platform), at most half a unit off (1/8192 of a count on the joystick).
-bool MotionEstimator::to_fixed(float x, int64_t& fixed) const noexcept {
-    if (!(std::fabs(x) < max_fixed_position_)) return false;
-    const float scaled = x * fixed_scale_;
-    fixed = static_cast<int64_t>(scaled + (scaled < 0 ? -0.5f : 0.5f));
-    return true;
 }
 
 // After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
@@ -383,7 +359,6 @@ bool MotionEstimator::to_fixed(float x, int64_t& fixed) const noexcept {
 // with the sums on the right taken before the update. Exact in 64-bit integers: a sum is
 // at most 96³·2^30 in magnitude.
 void MotionEstimator::slide_sums(int axis) noexcept {
-    const int32_t* fixed = fixed_[axis];
     const bool representable = frozen_fixed_[axis];
     fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
     // At rest (the newest frozen sample and the longest ladder window all one value) the
@@ -395,20 +370,18 @@ void MotionEstimator::slide_sums(int axis) noexcept {
     }
     if (sums_still_[axis]) {
         sums_still_[axis] = false;
-        const int64_t still = fixed[(head_ + 2) & kMask];
-        for (int k = kFirstSummed; k < kLadderSize; ++k) {
-            const int64_t n = kLadder[k];
-            int64_t* s = sums_[axis].at(k);
-            s[0] = n * still;
-            s[1] = n * (n - 1) / 2 * still;
-            s[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
-        }
+        const int64_t still = fixed_at(axis, 2);
+        for (int k = kFirstSummed; k < kLadderSize; ++k) constant_sums(kLadder[k], still, sums_[axis].at(k));
     }
-    const int64_t in = fixed[(head_ + 1) & kMask];
+    const int64_t in = frozen_fixed_value_[axis];
+    // Where every leaving sample is known to have a value (the common case), it is read
+    // without the range check.
+    const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         const int64_t n = kLadder[k];
         // Before the ring holds n + 1 frozen samples nothing leaves.
-        const int64_t out = n + 1 <= count_ - 1 ? fixed[(head_ + kLadder[k] + 1) & kMask] : 0;
+        const int leaving = kLadder[k] + 1;
+        const int64_t out = n + 1 > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving);
         int64_t* s = sums_[axis].at(k);
         const int64_t s0 = s[0], s1 = s[1];
         s[0] = s0 + in - out;
@@ -419,10 +392,7 @@ void MotionEstimator::slide_sums(int axis) noexcept {
 
 void MotionEstimator::ladder_sums(int axis, int k, int64_t sums[3]) const noexcept {
     if (sums_still_[axis]) {
-        const int64_t still = fixed_[axis][(head_ + 1) & kMask], n = kLadder[k];
-        sums[0] = n * still;
-        sums[1] = n * (n - 1) / 2 * still;
-        sums[2] = (n - 1) * n * (2 * n - 1) / 6 * still;
+        constant_sums(kLadder[k], frozen_fixed_value_[axis], sums);
         return;
     }
     for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].at(k)[p];
@@ -433,32 +403,20 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
     const float* x = x_[axis];
     fixed_run_[axis] = 0;
     sums_still_[axis] = false;
-    int64_t fixed = 0;
-    while (fixed_run_[axis] + 1 < count_ && to_fixed(x[(head_ + fixed_run_[axis] + 1) & kMask], fixed)) {
+    while (fixed_run_[axis] + 1 < count_ && representable(x[(head_ + fixed_run_[axis] + 1) & kMask])) {
         ++fixed_run_[axis];
     }
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         int64_t* s = sums_[axis].at(k);
         s[0] = s[1] = s[2] = 0;
         for (int i = 1; i <= kLadder[k] && i < count_; ++i) {
-            const int64_t value = fixed_[axis][(head_ + i) & kMask];
+            const int64_t value = fixed_at(axis, i);
             const int64_t m = i - 1;
             s[0] += value;
             s[1] += m * value;
             s[2] += m * m * value;
         }
     }
-}
-
-// Where the fast fits start their downward search: kRungsUp above the rung accepted last
-// time, the whole history at most. The full search (longest window first) is what the
-// slow path does every tick; a window that passed last tick grows by a rung or two a tick
-// at most, so starting a little above it finds the same window except when the motion
-// has just turned steady after a bend: then the window grows back to its longest over a
-// few ticks instead of at once.
-int MotionEstimator::start_rung(int previous) const noexcept {
-    const int top = pattern_.rung_count - 1;
-    return previous + kRungsUp < top ? previous + kRungsUp : top;
 }
 
 bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
@@ -474,98 +432,33 @@ bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
 // where Σ m^p·y = Σ m^p·X - X_0·Σ m^p (the newest sample's y is 0). The sums of a rung
 // between two ladder lengths (the whole history) add the few samples past the longest
 // ladder window below it.
-bool MotionEstimator::window_sums(int axis, int r, float out[3]) const noexcept {
+void MotionEstimator::window_sums(int axis, int r, int64_t x0, float out[3]) const noexcept {
     const int n = pattern_.rung_n[r];
     const int k = pattern_.rung_ladder[r];
-    int64_t s0 = 0, s1 = 0, s2 = 0;
+    int64_t s[3] = {0, 0, 0};
     int from = 1;
     if (k >= 0) {
-        int64_t sums[3];
-        ladder_sums(axis, k, sums);
-        s0 = sums[0];
-        s1 = sums[1];
-        s2 = sums[2];
+        ladder_sums(axis, k, s);
         from = kLadder[k] + 1;
     }
-    const int32_t* x = fixed_[axis];
-    for (int i = from; i <= n; ++i) {
-        const int64_t value = x[(head_ + i) & kMask];
+    for (int i = from; i <= n; ++i) {  // the running-sum path: every sample within fixed_run_
+        const int64_t value = held_fixed_at(axis, i);
         const int64_t m = i - 1;
-        s0 += value;
-        s1 += m * value;
-        s2 += m * m * value;
+        s[0] += value;
+        s[1] += m * value;
+        s[2] += m * m * value;
     }
-    const int64_t x0 = x[head_];
-    const int64_t count = n;
-    const int64_t sum_m = count * (count - 1) / 2;
-    const int64_t sum_m2 = (count - 1) * count * (2 * count - 1) / 6;
+    int64_t newest[3];
+    constant_sums(n, x0, newest);
     const float unit = fixed_unit_;
-    const float sy = static_cast<float>(s0 - count * x0) * unit;
-    const float smy = static_cast<float>(s1 - sum_m * x0) * unit;
-    const float smmy = static_cast<float>(s2 - sum_m2 * x0) * unit;
+    const float sy = static_cast<float>(s[0] - newest[0]) * unit;
+    const float smy = static_cast<float>(s[1] - newest[1]) * unit;
+    const float smmy = static_cast<float>(s[2] - newest[2]) * unit;
     const float alpha = newest_interval_u_;
     const float beta = frozen_interval_u_;
     out[0] = sy;
     out[1] = -(alpha * sy + beta * smy);
     out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;
-    return true;
-}
-
-void MotionEstimator::fast_velocity(int axis) noexcept {
-    const TimePattern& p = pattern_;
-    const float* x = x_[axis];
-    const float x0 = x[head_];
-    for (int r = start_rung(velocity_rung_[axis]); r >= 0; --r) {
-        const int n = p.rung_n[r];
-        float sums[3];
-        window_sums(axis, r, sums);
-        const float s0 = static_cast<float>(n + 1), s1 = p.moment[1][r], s2 = p.moment[2][r];
-        const float det = s0 * s2 - s1 * s1;
-        if (!(det > 0)) continue;
-        const float c1 = (s0 * sums[1] - s1 * sums[0]) / det;
-        const float c0 = (sums[0] - c1 * s1) / s0;
-        if (!sampled_within_band<false>(x, head_, x0, p.u, n, c0, c1, 0.0f, band_)) continue;
-        const float v = c1 / kWindowS;
-        velocity_rung_[axis] = r;
-        velocity_window_[axis] = n;
-        velocity_[axis] = std::isfinite(v) ? v : 0.0f;
-        return;
-    }
-    velocity_rung_[axis] = 0;
-    velocity_window_[axis] = 0;
-    velocity_[axis] = 0.0f;
-}
-
-void MotionEstimator::fast_acceleration(int axis) noexcept {
-    const TimePattern& p = pattern_;
-    acceleration_ready_[axis] = true;
-    acceleration_[axis] = 0.0f;
-    acceleration_window_[axis] = 0;
-    if (p.max_n < kMinAccelerationWindow) return;
-    const float* x = x_[axis];
-    const float x0 = x[head_];
-    // As fit_acceleration: the longest window whose parabola passes, else the shortest
-    // allowed one without the band check.
-    for (int r = start_rung(acceleration_rung_[axis]); r >= 0; --r) {
-        const int n = p.rung_n[r];
-        if (n < kMinAccelerationWindow) break;
-        const bool last = n == kMinAccelerationWindow;
-        float sums[3];
-        window_sums(axis, r, sums);
-        const float s0 = static_cast<float>(n + 1), s1 = p.moment[1][r], s2 = p.moment[2][r], s3 = p.moment[3][r],
-                    s4 = p.moment[4][r];
-        const float det = det3(s0, s1, s2, s1, s2, s3, s2, s3, s4);
-        if (!(det > 0)) continue;
-        const float c2 = det3(s0, s1, sums[0], s1, s2, sums[1], s2, s3, sums[2]) / det;
-        const float c0 = det3(sums[0], s1, s2, sums[1], s2, s3, sums[2], s3, s4) / det;
-        const float c1 = det3(s0, sums[0], s2, s1, sums[1], s3, s2, sums[2], s4) / det;
-        if (!last && !sampled_within_band<true>(x, head_, x0, p.u, n, c0, c1, c2, band_)) continue;
-        const float a = 2.0f * c2 / (kWindowS * kWindowS);
-        acceleration_rung_[axis] = r;
-        acceleration_window_[axis] = n;
-        acceleration_[axis] = std::isfinite(a) ? a : 0.0f;
-        return;
-    }
 }
 
 void MotionEstimator::refresh_time_pattern() noexcept {
@@ -596,28 +489,23 @@ void MotionEstimator::refresh_time_pattern() noexcept {
         while (k + 1 < kLadderSize && kLadder[k + 1] <= p.rung_n[r]) ++k;
         p.rung_ladder[r] = static_cast<int8_t>(k >= kFirstSummed ? k : -1);
     }
-    float sum[5] = {};
+    float sum[4] = {};  // Σ u, Σ u², Σ u³, Σ u⁴
     int i = 0;
     for (int r = 0; r < p.rung_count; ++r) {
         for (; i <= p.rung_n[r]; ++i) {
             const float u = p.u[i], u2 = u * u;
-            sum[0] += 1.0f;
-            sum[1] += u;
-            sum[2] += u2;
-            sum[3] += u2 * u;
-            sum[4] += u2 * u2;
+            sum[0] += u;
+            sum[1] += u2;
+            sum[2] += u2 * u;
+            sum[3] += u2 * u2;
         }
-        for (int k = 0; k < 5; ++k) p.moment[k][r] = sum[k];
+        for (int k = 0; k < 4; ++k) p.moment[k][r] = sum[k];
     }
 }
 
-bool MotionEstimator::gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept {
+void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) const noexcept {
     const TimePattern& p = pattern_;
     const int max_n = p.max_n;
-    // At rest (every sample the same reading) both fits are exactly 0 over the whole
-    // history: skip them, it is the commonest case. (Where still_run_ reads short after a
-    // replaced sample, the fits reach the same answer.)
-    if (still_run_[axis] > max_n) return false;
     // The samples newest first, relative to the newest: the ring from head_ to its end,
     // then from its start.
     const float* x = x_[axis];
@@ -625,112 +513,148 @@ bool MotionEstimator::gather_axis(int axis, bool parabola, float* y, float (*sum
     const int first = head_ + max_n < kHistory ? max_n + 1 : kHistory - head_;
     for (int i = 0; i < first; ++i) y[i] = x[head_ + i] - x0;
     for (int i = first; i <= max_n; ++i) y[i] = x[i - first] - x0;
-    // The window sums at every rung: one pass, segment by segment; the short windows'
-    // segments are a few samples each, summed one by one.
+    // The window sums at every rung: one pass, segment by segment.
     float running[3] = {};
     int begin = 0;
     for (int r = 0; r < p.rung_count; ++r) {
         const int end = p.rung_n[r] + 1;
-        if (end - begin < 8) {
-            for (int i = begin; i < end; ++i) {
-                running[0] += y[i];
-                running[1] += p.u[i] * y[i];
-                if (parabola) running[2] += (p.u[i] * p.u[i]) * y[i];
-            }
-        } else if (parabola) {
-            add_moments<true>(y, p.u, begin, end, running);
-        } else {
-            add_moments<false>(y, p.u, begin, end, running);
-        }
+        add_moments(y, p.u, begin, end, running);
         begin = end;
         for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
     }
-    return true;
 }
 
-void MotionEstimator::estimate_axis(int axis, bool with_acceleration) noexcept {
+// The fits of both paths: for each rung from `top` down (longest first) the least-squares
+// line or parabola by Cramer's rule on the normal equations M·c = s, M[i][j] = Σ u^(i+j),
+// then its band check; the first that passes is the estimate. Longest first rather than
+// growing until the first failure: on a ramp whose speed is close to a whole number of
+// counts per tick the rounding error is a slow sawtooth, which a middle-sized window can
+// fail while both a short and a long one pass; the long one is the better estimate, and
+// for steady motion this order needs one fit. The parabola is never fitted over fewer
+// than kMinAccelerationWindow intervals, and over that many it is taken without the band
+// check: where no longer window fits, its estimate is the motion's mean curvature over
+// those few ms (kMinAccelerationWindow is a rung: kLadder holds it, or it is max_n).
+// The running sums (gathered null) search down from kRungsUp above the rung accepted last
+// time; the general path from the whole history. The estimate, its window and the rung go
+// to the axis's velocity (order 1) or acceleration (order 2).
+// On the board (-Os) one copy serves both orders. Elsewhere each order gets its own copy,
+// the order a constant in it: the tick's x86 estimator takes about 120 instructions fewer.
+#if defined(__OPTIMIZE_SIZE__)
+inline void MotionEstimator::fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+#else
+[[gnu::always_inline]] inline void MotionEstimator::fit_order(int axis, int order, const float* y,
+                                                             const float (*gathered)[kRungs]) noexcept {
+#endif
     const TimePattern& p = pattern_;
-    acceleration_ready_[axis] = with_acceleration;
+    const bool line = order == 1;
+    const int min_n = line ? 1 : kMinAccelerationWindow;
+    const int64_t x0 = newest_fixed_value_[axis];
+    const bool fast = gathered == nullptr;
+    int& rung = line ? velocity_rung_[axis] : acceleration_rung_[axis];
+    int& window = line ? velocity_window_[axis] : acceleration_window_[axis];
+    float& result = line ? velocity_[axis] : acceleration_[axis];
+    const int top = p.rung_count - 1;
+    for (int r = fast ? start_rung(rung, top) : top; r >= 0; --r) {
+        const int n = p.rung_n[r];
+        if (n < min_n) break;
+        float s[3];
+        if (gathered != nullptr) {
+            for (int q = 0; q < 3; ++q) s[q] = gathered[q][r];
+        } else {
+            window_sums(axis, r, x0, s);
+        }
+        const float m0 = static_cast<float>(n + 1), m1 = p.moment[0][r], m2 = p.moment[1][r];
+        float c0 = 0, c1 = 0, c2 = 0, estimate = 0;
+        if (line) {
+            const float det = m0 * m2 - m1 * m1;
+            if (!(det > 0)) continue;
+            c1 = (m0 * s[1] - m1 * s[0]) / det;
+            c0 = (s[0] - c1 * m1) / m0;
+            estimate = c1 / kWindowS;
+        } else {
+            const float m3 = p.moment[2][r], m4 = p.moment[3][r];
+            const float det = det3(m0, m1, m2, m1, m2, m3, m2, m3, m4);
+            if (!(det > 0)) continue;
+            c2 = det3(m0, m1, s[0], m1, m2, s[1], m2, m3, s[2]) / det;
+            c0 = det3(s[0], m1, m2, s[1], m2, m3, s[2], m3, m4) / det;
+            c1 = det3(m0, s[0], m2, m1, s[1], m3, m2, s[2], m4) / det;
+            estimate = 2.0f * c2 / (kWindowS * kWindowS);
+        }
+        const float* x = x_[axis];
+        const bool passes = line ? within_band<false>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_)
+                            : n == kMinAccelerationWindow || within_band<true>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_);
+        if (!passes) continue;
+        if (fast) rung = r;
+        window = n;
+        result = std::isfinite(estimate) ? estimate : 0.0f;
+        return;
+    }
+    // None passes: a degenerate window, or a position that is not finite (a line through
+    // two samples passes otherwise).
+    if (fast && line) rung = 0;
+    window = 0;
+    result = 0.0f;
+}
+
+void MotionEstimator::fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    fit_order(axis, order, y, gathered);
+#else
+    if (order == 1) {
+        fit_order(axis, 1, y, gathered);
+    } else {
+        fit_order(axis, 2, y, gathered);
+    }
+#endif
+}
+
+void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {
+    const TimePattern& p = pattern_;
+    const int max_n = p.max_n;
+    acceleration_ready_[axis] = acceleration;
     acceleration_[axis] = 0.0f;
     acceleration_window_[axis] = 0;
-    if (p.max_n < 1) {
-        velocity_[axis] = 0.0f;
-        velocity_window_[axis] = 0;
-        return;
-    }
-    if (still_run_[axis] > p.max_n) {  // at rest: both fits are exactly 0
-        velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
-        velocity_window_[axis] = p.max_n;
-        velocity_[axis] = 0.0f;
-        if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
-        return;
-    }
-    if (fast_fit_possible(axis)) {
-        fast_velocity(axis);
-        if (with_acceleration) fast_acceleration(axis);
-        return;
-    }
-    velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
-    float y[kHistory];
-    float sums[3][kRungs];
-    if (!gather_axis(axis, with_acceleration, y, sums)) {
-        velocity_window_[axis] = p.max_n;
-        velocity_[axis] = 0.0f;
-        if (p.max_n >= kMinAccelerationWindow) acceleration_window_[axis] = p.max_n;
-        return;
-    }
-    const AxisWindow w{y, p.u, p.moment, {sums[0], sums[1], sums[2]}};
-    float v = 0;
-    const int nv = adaptive_window(w, p.rung_n, p.rung_count, 1, band_, fit_line, v);
-    velocity_window_[axis] = nv;
-    velocity_[axis] = nv > 0 && std::isfinite(v) ? v : 0.0f;
-    if (with_acceleration) fit_acceleration(axis, y, sums);
-}
-
-void MotionEstimator::estimate_acceleration(int axis) noexcept {
-    acceleration_ready_[axis] = true;
-    acceleration_[axis] = 0.0f;
-    acceleration_window_[axis] = 0;
-    const int max_n = pattern_.max_n;
-    if (max_n < kMinAccelerationWindow) return;
-    if (still_run_[axis] > max_n) {
-        acceleration_window_[axis] = max_n;
-        return;
-    }
-    if (fast_fit_possible(axis)) {
-        fast_acceleration(axis);
-        return;
-    }
-    float y[kHistory];
-    float sums[3][kRungs];
-    if (!gather_axis(axis, true, y, sums)) {
-        acceleration_window_[axis] = max_n;
-        return;
-    }
-    fit_acceleration(axis, y, sums);
-}
-
-void MotionEstimator::fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept {
-    const TimePattern& p = pattern_;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
     // through a few quantized samples reads the rounding as curvature (3 samples 1 ms
     // apart: ±q/T² = 2.4 times the joystick's acceleration_ref). Until the history holds
     // that many samples, it reads 0.
-    if (p.max_n < kMinAccelerationWindow) return;
-    const AxisWindow w{y, p.u, p.moment, {sums[0], sums[1], sums[2]}};
-    float a = 0;
-    int na = adaptive_window(w, p.rung_n, p.rung_count, kMinAccelerationWindow, band_, fit_parabola, a);
-    // Where no longer window fits, the shortest one is used anyway: its estimate is the
-    // motion's mean curvature over those few ms.
-    if (na == 0) {
-        int r = 0;  // kMinAccelerationWindow is a rung (kLadder holds it; or it is max_n)
-        while (p.rung_n[r] != kMinAccelerationWindow) ++r;
-        if (fit_parabola(w, r, kMinAccelerationWindow, std::numeric_limits<float>::infinity(), a)) {
-            na = kMinAccelerationWindow;
+    const bool fits_acceleration = acceleration && max_n >= kMinAccelerationWindow;
+    if (max_n < 1 || (!velocity && !fits_acceleration)) {
+        if (velocity) {
+            velocity_[axis] = 0.0f;
+            velocity_window_[axis] = 0;
         }
+        return;
     }
-    acceleration_window_[axis] = na;
-    acceleration_[axis] = na > 0 && std::isfinite(a) ? a : 0.0f;
+    // At rest (every sample the same reading) both fits are exactly 0 over the whole
+    // history: skip them, it is the commonest case. (Where still_run_ reads short after a
+    // replaced sample, the fits reach the same answer.)
+    if (still_run_[axis] > max_n) {
+        if (velocity) {
+            velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
+            velocity_window_[axis] = max_n;
+            velocity_[axis] = 0.0f;
+        }
+        if (max_n >= kMinAccelerationWindow) acceleration_window_[axis] = max_n;
+        return;
+    }
+    if (fast_fit_possible(axis)) {
+        if (velocity) fit(axis, 1, nullptr, nullptr);
+        if (fits_acceleration) fit(axis, 2, nullptr, nullptr);
+    } else {
+        estimate_general(axis, velocity, fits_acceleration);
+    }
+}
+
+// The general path keeps the gathered samples and sums on its own stack frame, apart from
+// the tick's common path (fast_fit_possible), which needs neither.
+void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleration) noexcept {
+    if (velocity) velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
+    float y[kHistory];
+    float sums[3][kRungs];
+    gather_axis(axis, y, sums);
+    if (velocity) fit(axis, 1, y, sums);
+    if (acceleration) fit(axis, 2, y, sums);
 }
 
 }  // namespace feel::detail

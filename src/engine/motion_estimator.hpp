@@ -90,13 +90,13 @@ public:
     [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
     // units/s². Fitted by update() or, if it was told not to, on the first call after it.
     [[nodiscard]] float acceleration(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        if (!acceleration_ready_[axis]) estimate(axis, false, true);
         return acceleration_[axis];
     }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
     [[nodiscard]] int acceleration_window(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate_acceleration(axis);
+        if (!acceleration_ready_[axis]) estimate(axis, false, true);
         return acceleration_window_[axis];
     }
 
@@ -109,7 +109,9 @@ private:
         // Bytes (issue 14's RAM): a length is at most kHistory - 1 = 127, an index at most 12.
         uint8_t rung_n[kRungs] = {};     // their lengths, ascending
         int8_t rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
-        float moment[5][kRungs] = {};  // moment[p][r] = Σ u_i^p over samples 0..rung_n[r]
+        // moment[p - 1][r] = Σ u_i^p over samples 0..rung_n[r], p = 1..4 (Σ u^0 is the
+        // sample count, rung_n[r] + 1: not kept).
+        float moment[4][kRungs] = {};
         // u_i = -age_i / kMaxWindowUs, in [-1, 0]. The fits square it where they need u_i²
         // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
         float u[kHistory] = {};
@@ -131,27 +133,37 @@ private:
     void push_interval(int64_t interval_us) noexcept;
     void slide_sums(int axis) noexcept;
     void rebuild_sums(int axis) noexcept;
-    // Σ y, Σ u·y, Σ u²·y over rung r's samples 0..n of an axis from the running sums; false if the
-    // running sums cannot give them (uneven older intervals, a position out of range).
-    bool window_sums(int axis, int r, float out[3]) const noexcept;
+    // Σ y, Σ u·y, Σ u²·y over rung r's samples 0..n of an axis from the running sums, y
+    // relative to the newest sample (x0: its fixed-point value).
+    void window_sums(int axis, int r, int64_t x0, float out[3]) const noexcept;
     bool fast_fit_possible(int axis) const noexcept;
-    int start_rung(int previous) const noexcept;
-    // The velocity (and the acceleration) of an axis from the running sums, as
-    // estimate_axis and fit_acceleration do from gathered samples.
-    void fast_velocity(int axis) noexcept;
-    void fast_acceleration(int axis) noexcept;
     void refresh_time_pattern() noexcept;
     // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
-    // sums at every rung (sums[p][r] = Σ u^p·y, p = 0, 1 and for a parabola 2); false at
-    // rest (every sample the same).
-    bool gather_axis(int axis, bool parabola, float* y, float (*sums)[kRungs]) const noexcept;
-    void estimate_axis(int axis, bool with_acceleration) noexcept;
-    void estimate_acceleration(int axis) noexcept;
-    void fit_acceleration(int axis, const float* y, const float (*sums)[kRungs]) noexcept;
+    // sums at every rung (sums[p][r] = Σ u^p·y, p = 0, 1, 2). Not at rest: estimate() has
+    // answered that without the history.
+    void gather_axis(int axis, float* y, float (*sums)[kRungs]) const noexcept;
+    // The velocity (and the acceleration) of an axis at this tick; velocity false fits only
+    // the acceleration (acceleration() after an update told not to).
+    void estimate(int axis, bool velocity, bool acceleration) noexcept;
+    // The general path: the history gathered (uneven older intervals, a position the
+    // running sums cannot hold). Not inlined: its buffers stay off the common path's stack.
+    [[gnu::noinline]] void estimate_general(int axis, bool velocity, bool acceleration) noexcept;
+    // The longest rung whose line (order 1) or parabola (order 2) passes the band check:
+    // its slope or second derivative, window and rung are the axis's velocity or
+    // acceleration. gathered: the sums at every rung and the samples (gather_axis), the band
+    // checked on every sample; nullptr: the running sums, the band checked on a fixed set of
+    // samples.
+    void fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;
+    void fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;  // fit's body
 
-    // x as an integer of 1/fixed_scale_ units, rounded half away from zero; false if it
-    // does not fit (see kFixedPerCount).
-    bool to_fixed(float x, int64_t& fixed) const noexcept;
+    // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
+    // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
+    bool representable(float x) const noexcept;
+    int32_t fixed_value(float x) const noexcept;
+    // Sample i's position of an axis as the running sums hold it. Worked out when read
+    // (issue 14's RAM: the ring keeps one copy of a position, the float it was given).
+    int64_t fixed_at(int axis, int i) const noexcept;
+    int64_t held_fixed_at(int axis, int i) const noexcept;  // i within fixed_run_
 
     float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
     float fixed_scale_ = 64.0f;        // fixed-point units per position unit, a power of two
@@ -169,9 +181,9 @@ private:
     // Axes update() has written samples of (the ring of the others holds only 0); never
     // lowered, not even by reset(), which leaves the ring's contents.
     int written_axes_ = 0;
+    // The positions as given. Their fixed-point values (fixed_at) are not kept: a copy would
+    // cost 512 bytes an axis, and working one out is a multiplication and a rounding.
     float x_[kMaxAxes][kHistory] = {};
-    // The same positions in 1/fixed_scale_ units (0 where to_fixed refuses one).
-    int32_t fixed_[kMaxAxes][kHistory] = {};
     // How many of the newest samples of each axis read the newest value (never more than
     // they do; it may read fewer after a replaced sample): at rest it reaches max_n and
     // the fits are skipped without looking at the history.
@@ -183,10 +195,14 @@ private:
     int frozen_run_ = 0;
     // How many of the newest frozen samples of each axis have a fixed-point value.
     int fixed_run_[kMaxAxes] = {};
-    // Whether the newest sample (index 0) and the newest frozen one (index 1) have one: to_fixed's
+    // Whether the newest sample (index 0) and the newest frozen one (index 1) have one: the
     // verdicts kept, not recomputed.
     bool newest_fixed_[kMaxAxes] = {};
     bool frozen_fixed_[kMaxAxes] = {};
+    // Their fixed-point values (fixed_at(axis, 0) and (axis, 1)), the ones the sums read
+    // every tick, kept rather than worked out again.
+    int32_t newest_fixed_value_[kMaxAxes] = {};
+    int32_t frozen_fixed_value_[kMaxAxes] = {};
     // What window_sums needs that is the same for every axis and rung of a tick, set by update:
     // the newest interval and the frozen one in units of kMaxWindowUs.
     float newest_interval_u_ = 0.0f;

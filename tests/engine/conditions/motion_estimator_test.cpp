@@ -94,6 +94,31 @@ TEST(MotionEstimator, RunningSumsAfterALongRunGiveWhatAFreshEstimatorGives) {
     EXPECT_NEAR(long_run.velocity(0), ramp_speed, 0.005 * ramp_speed);
 }
 
+// The ring keeps each position as the float it was given (issue 14's RAM: no fixed-point
+// copy beside it); the running sums work a sample's fixed-point value out when they read
+// it. A position the fixed point cannot hold (beyond its range: ±16384 units on a sensor of
+// 1/256 unit a count, whose unit is the finest, 2^-16) is fitted from the floats instead, as
+// accurately: quantized ramps at 2% and 100% of velocity_ref that start inside the range
+// and beyond it, both directions, read their speed within 0.001% once the window has
+// filled (the least-squares slope's bound, q/W = 0.04 units/s over 100 ms, is 0.002% of
+// the slower one).
+TEST(MotionEstimator, PositionsBeyondTheFixedPointRangeAreFittedAsAccurately) {
+    constexpr double kStep = 1.0 / 256;
+    for (double v : {0.02 * kVelocityRef, kVelocityRef, -0.02 * kVelocityRef, -kVelocityRef}) {
+        for (double x0 : {100.0, 16384.0 + 100, -16384.0 - 100, 4194304.0}) {
+            MotionEstimator m;
+            m.configure(static_cast<float>(kStep));
+            double worst = 0;
+            for (int k = 0; k <= 190; ++k) {
+                float p[kMaxAxes] = {static_cast<float>(quantize(x0 + v * k * 1e-3, kStep))};
+                m.update(k * 1000, p, 1);
+                if (k >= 110) worst = std::max(worst, std::fabs(m.velocity(0) - v) / std::fabs(v));
+            }
+            EXPECT_LT(worst, 1e-5) << "speed " << v << ", from " << x0;
+        }
+    }
+}
+
 TEST(MotionEstimator, SpeedsBetweenAreWithinFivePercentToo) {
     for (double fraction : {0.01, 0.05, 0.2, 0.5}) {
         const double v = fraction * kVelocityRef;
