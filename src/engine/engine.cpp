@@ -177,6 +177,14 @@ Error check_renderable(EffectType type) noexcept {
 
 float finite_or_zero(float v) noexcept { return std::isfinite(v) ? v : 0.0f; }
 
+// Whether the tick adds the axes' forces in two unrolled lanes: on a device of 2 axes, and on
+// every device of a build for at most 2 (FEEL_MAX_AXES=2, the board's), where the loop over
+// the axes is then never compiled. On a 1-axis device the second lane adds into sum[1] and
+// vibration[1], which nothing reads (the output and the others' force take the device's axes
+// only): the forces on its axis are the loop's. (others[1], which a friction or texture along
+// a direction reads, keeps its loop.)
+constexpr bool two_lanes(int axes) noexcept { return kMaxAxes == 2 || axes == 2; }
+
 // Between the loads of a renderer's force on the two axes of the common device: the
 // renderers store each axis by itself, and x86's vectorizer would read both with one 8-byte
 // load, which cannot take its data from two 4-byte stores still in the store queue and waits
@@ -376,14 +384,14 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             const float value = detail::scalar_wave_value(wave);
-            if (axes == 2) {  // the common device, unrolled
+            if (two_lanes(axes)) {  // the common device, unrolled
                 sum[0] += value * s.direction_gain[0];
                 sum[1] += value * s.direction_gain[1];
             } else {
                 for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
             }
             if (oscillates(s.params.type)) {
-                if (axes == 2) {
+                if (two_lanes(axes)) {
                     vibration[0] += value * s.direction_gain[0];
                     vibration[1] += value * s.direction_gain[1];
                 } else {
@@ -432,7 +440,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             if (oscillates(s.params.type))
                 for (int a = 0; a < axes; ++a) vibration[a] += force[a] * s.gain_factor;
         }
-        if (axes == 2) {  // the common device, unrolled
+        if (two_lanes(axes)) {  // the common device, unrolled
             const float f0 = force[0];
             separate_loads();
             sum[0] += f0 * s.gain_factor;
@@ -464,7 +472,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);
-            if (axes == 2) {  // the common device, unrolled
+            if (axes == 2) {  // the common device, unrolled (others[1] is read on 2 axes only)
                 const float f0 = force[0];
                 separate_loads();
                 const float f1 = force[1];
