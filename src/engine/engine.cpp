@@ -422,7 +422,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             }
         } else if (cls == EffectClass::condition) {
             if (s.renders_last) {
-                m.last_slots[last_count++] = {i, clock.tau_us};
+                m.last_slots[last_count++] = static_cast<uint16_t>(i);
                 continue;
             }
             condition.params = &s.params;
@@ -463,11 +463,14 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                              m.applied_force, axes);
         condition.observers = &m.observers;
         for (int32_t k = 0; k < last_count; ++k) {
-            Slot& s = m.slots[m.last_slots[k].index];
+            Slot& s = m.slots[m.last_slots[k]];
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;
-            condition.tau_us = m.last_slots[k].tau_us;
+            // The first pass's reading again: the same clock, and the iteration it found is
+            // the guess, so no division.
+            condition.tau_us =
+                detail::read_clock(s.params, s.play_iterations(), s.elapsed_us, s.completed_iterations).tau_us;
             condition.state = s.condition_memory;
             condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};

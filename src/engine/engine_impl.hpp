@@ -148,7 +148,7 @@ struct Engine::Impl {
           dynamic_pool(config_invalid ? 0 : detail::dynamics_capacity(c)),
           condition_pool(config_invalid ? 0 : detail::stateful_conditions_capacity(c)),
           // Only friction and texture render last, and each holds a condition's memory.
-          last_slots(new LastSlot[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
+          last_slots(new uint16_t[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_invalid ? 0 : c.max_samples, slot_count),
           report_capacity(config_invalid ? 1 : c.report_capacity),
           reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
@@ -327,12 +327,10 @@ struct Engine::Impl {
     // Slot::dynamic_memory).
     detail::RecordPool<detail::DynamicRecord> dynamic_pool;
     detail::RecordPool<detail::ConditionState> condition_pool;
-    // The tick's slots that render last (Slot::renders_last), gathered during its first pass.
-    struct LastSlot {
-        int32_t index = 0;
-        int64_t tau_us = 0;
-    };
-    std::unique_ptr<LastSlot[]> last_slots;
+    // The tick's slots that render last (Slot::renders_last), gathered during its first pass:
+    // their indices (max_effects is at most 65535). Their wave time is read again from their
+    // clocks, not kept (2 bytes an entry where index and time took 16: issue 14's RAM).
+    std::unique_ptr<uint16_t[]> last_slots;
     int32_t slot_end = 0;  // every slot from here on is free: the tick looks no further
     int32_t acceleration_readers = 0;  // created slots that read the acceleration (Slot::reads_acceleration)
     detail::SamplePool samples;
