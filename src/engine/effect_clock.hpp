@@ -24,10 +24,17 @@ struct ClockReading {
 };
 
 [[nodiscard]] ClockReading read_clock(const SlotParams& params, int64_t since_start_us) noexcept;
-// The same with the iteration count of this play (Engine::start may override the effect's).
-// Inline: the tick reads every playing effect's clock.
-[[nodiscard]] inline ClockReading read_clock(const SlotParams& params, int32_t iterations,
-                                             int64_t since_start_us) noexcept {
+// The same with the iteration count of this play (Engine::start may override the effect's)
+// and a guess at the iteration (the one the last tick found: Slot::completed_iterations).
+// Inline: the tick reads every playing effect's clock. The iteration is t / duration, a
+// 64-bit division (20 to 90 cycles on x86, a library call of about 100 instructions on a
+// Cortex-M4); from one tick to the next it rarely changes, so the guess is tried first
+// with a multiplication. When t - guess · duration lies in [0, duration) the guess is the
+// floor of t / duration, the one integer the division gives (t ≥ 0 here), whatever the
+// guess was: the reading is the same bits as without it, and a wrong guess only costs the
+// division.
+[[nodiscard]] inline ClockReading read_clock(const SlotParams& params, int32_t iterations, int64_t since_start_us,
+                                             int32_t iteration_guess = 0) noexcept {
     ClockReading r;
     const int64_t t = since_start_us - params.start_delay_us;
     if (t < 0) return r;
@@ -36,14 +43,20 @@ struct ClockReading {
         r.tau_us = t;
         return r;
     }
-    const int64_t iteration = t / params.duration_us;
+    const int64_t guess = iteration_guess > 0 ? iteration_guess : 0;
+    int64_t iteration = guess;
+    int64_t tau = t - guess * params.duration_us;
+    if (tau < 0 || tau >= params.duration_us) {
+        iteration = t / params.duration_us;
+        tau = t - iteration * params.duration_us;
+    }
     if (iterations != kInfiniteIterations && iteration >= iterations) {
         r.phase = ClockPhase::finished;
         return r;
     }
     r.phase = ClockPhase::playing;
     r.iteration = static_cast<int32_t>(iteration);
-    r.tau_us = t - iteration * params.duration_us;
+    r.tau_us = tau;
     return r;
 }
 

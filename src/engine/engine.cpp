@@ -16,6 +16,7 @@
 
 #include "engine_impl.hpp"
 
+#include <bit>
 #include <cmath>
 
 #include "conditions/condition.hpp"
@@ -54,7 +55,7 @@ int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t
         if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
         if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
         const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
-        clock = detail::read_clock(t.params, t.play_iterations(), elapsed_us);
+        clock = detail::read_clock(t.params, t.play_iterations(), elapsed_us, t.completed_iterations);
         if (clock.phase == ClockPhase::playing) return j;
     }
     return -1;
@@ -140,6 +141,15 @@ Error detail::check_engine_config(const EngineConfig& c) noexcept {
     return {};
 }
 
+int64_t detail::period_us_of(float hz) noexcept {
+    const auto bits = std::bit_cast<uint32_t>(hz);
+    const int exponent = static_cast<int>(bits >> 23) - 150;    // hz = significand · 2^exponent
+    const int64_t significand = (bits & 0x7fffffu) | 0x800000u;  // hz is normal (1..1000)
+    // 1..1000 Hz: the exponent is -23..-14, so the dividend stays below 2^43. Signed: the
+    // board's library has the signed 64-bit division already (the effects' clocks).
+    return (int64_t{1'000'000} << -exponent) / significand;
+}
+
 void detail::prepare_slot(Slot& s) noexcept {
     direction_factors(s.params, s.direction);
     s.cls = effect_class(s.params.type);
@@ -166,6 +176,22 @@ Error check_renderable(EffectType type) noexcept {
 }
 
 float finite_or_zero(float v) noexcept { return std::isfinite(v) ? v : 0.0f; }
+
+// Whether the tick adds the axes' forces in two unrolled lanes: on a device of 2 axes, and on
+// every device of a build for at most 2 (FEEL_MAX_AXES=2, the board's), where the loop over
+// the axes is then never compiled. On a 1-axis device the second lane adds into sum[1] and
+// vibration[1], which nothing reads (the output and the others' force take the device's axes
+// only): the forces on its axis are the loop's. (others[1], which a friction or texture along
+// a direction reads, keeps its loop.)
+constexpr bool two_lanes(int axes) noexcept { return kMaxAxes == 2 || axes == 2; }
+
+// Between the loads of a renderer's force on the two axes of the common device: the
+// renderers store each axis by itself, and x86's vectorizer would read both with one 8-byte
+// load, which cannot take its data from two 4-byte stores still in the store queue and waits
+// for them to reach the cache (a store-forwarding stall). A profile of the 40-effect mix put a
+// third of the tick's own time on that load. The empty statement keeps the loads apart (the
+// compiler may not move a load across it); it emits no instruction.
+inline void separate_loads() noexcept { asm("" ::: "memory"); }
 
 // Gains are in units of 1/kFullScale: a multiplication by this, not a division per effect.
 constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
@@ -222,7 +248,7 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     s.starts = 0;
     s.last_end = PlayEnd::none;
     m.pool_used_bytes += bytes;
-    detail::prepare_slot(s);
+    m.prepare_new(s);
     m.reset_memory(s);
     if (index >= m.slot_end) m.slot_end = index + 1;
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
@@ -274,11 +300,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // and acceleration. The reported position starts as the sensed one; clipping walls
     // may hold it at their surface.
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
-    const double dt_s = static_cast<double>(dt_us) * 1e-6;
+    const double dt_s = m.tick_seconds(dt_us);
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
-    // (control_law_dynamic.cpp) read it: fitted only in ticks where one plays.
+    // (control_law_dynamic.cpp) read it: fitted only in ticks where one plays. Without one
+    // created (most ticks) the slots are not looked at.
     bool inertia_plays = false;
-    for (int32_t i = 0; i < m.slot_end && !inertia_plays; ++i) {
+    for (int32_t i = 0; i < (m.acceleration_readers > 0 ? m.slot_end : 0) && !inertia_plays; ++i) {
         const Slot& s = m.slots[i];
         inertia_plays = s.reads_acceleration && s.state != EffectState::free && s.state != EffectState::stopped;
     }
@@ -332,7 +359,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
         s.elapsed_us = s.state == EffectState::pending ? 0 : s.elapsed_us + dt_us;
         const int32_t iterations = s.play_iterations();
-        const detail::ClockReading clock = detail::read_clock(s.params, iterations, s.elapsed_us);
+        const detail::ClockReading clock = detail::read_clock(s.params, iterations, s.elapsed_us, s.completed_iterations);
         if (clock.phase == ClockPhase::finished) {
             s.state = EffectState::stopped;
             s.last_end = PlayEnd::finished;
@@ -357,14 +384,14 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             const float value = detail::scalar_wave_value(wave);
-            if (axes == 2) {  // the common device, unrolled
+            if (two_lanes(axes)) {  // the common device, unrolled
                 sum[0] += value * s.direction_gain[0];
                 sum[1] += value * s.direction_gain[1];
             } else {
                 for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
             }
             if (oscillates(s.params.type)) {
-                if (axes == 2) {
+                if (two_lanes(axes)) {
                     vibration[0] += value * s.direction_gain[0];
                     vibration[1] += value * s.direction_gain[1];
                 } else {
@@ -395,7 +422,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             }
         } else if (cls == EffectClass::condition) {
             if (s.renders_last) {
-                m.last_slots[last_count++] = {i, clock.tau_us};
+                m.last_slots[last_count++] = static_cast<uint16_t>(i);
                 continue;
             }
             condition.params = &s.params;
@@ -413,8 +440,10 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             if (oscillates(s.params.type))
                 for (int a = 0; a < axes; ++a) vibration[a] += force[a] * s.gain_factor;
         }
-        if (axes == 2) {  // the common device, unrolled
-            sum[0] += force[0] * s.gain_factor;
+        if (two_lanes(axes)) {  // the common device, unrolled
+            const float f0 = force[0];
+            separate_loads();
+            sum[0] += f0 * s.gain_factor;
             sum[1] += force[1] * s.gain_factor;
         } else {
             for (int a = 0; a < axes; ++a) sum[a] += force[a] * s.gain_factor;
@@ -434,20 +463,26 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                              m.applied_force, axes);
         condition.observers = &m.observers;
         for (int32_t k = 0; k < last_count; ++k) {
-            Slot& s = m.slots[m.last_slots[k].index];
+            Slot& s = m.slots[m.last_slots[k]];
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;
-            condition.tau_us = m.last_slots[k].tau_us;
+            // The first pass's reading again: the same clock, and the iteration it found is
+            // the guess, so no division.
+            condition.tau_us =
+                detail::read_clock(s.params, s.play_iterations(), s.elapsed_us, s.completed_iterations).tau_us;
             condition.state = s.condition_memory;
             condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);
-            if (axes == 2) {  // the common device, unrolled
-                sum[0] += force[0] * s.gain_factor;
-                sum[1] += force[1] * s.gain_factor;
-                others[0] += force[0] * s.gain_factor * device_gain;
-                others[1] += force[1] * s.gain_factor * device_gain;
+            if (axes == 2) {  // the common device, unrolled (others[1] is read on 2 axes only)
+                const float f0 = force[0];
+                separate_loads();
+                const float f1 = force[1];
+                sum[0] += f0 * s.gain_factor;
+                sum[1] += f1 * s.gain_factor;
+                others[0] += f0 * s.gain_factor * device_gain;
+                others[1] += f1 * s.gain_factor * device_gain;
             } else {
                 for (int a = 0; a < axes; ++a) {
                     sum[a] += force[a] * s.gain_factor;

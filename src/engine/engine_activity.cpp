@@ -73,7 +73,8 @@ void Engine::activity(EngineActivity& out) const noexcept {
         // `playing` is what the last tick found: the effect put force on the handle then.
         if (s.state != EffectState::playing) continue;
         if (effect_class(s.params.type) != EffectClass::wave) continue;
-        const detail::ClockReading clock = detail::read_clock(s.params, s.play_iterations(), s.elapsed_us);
+        const detail::ClockReading clock =
+            detail::read_clock(s.params, s.play_iterations(), s.elapsed_us, s.completed_iterations);
         if (clock.phase != detail::ClockPhase::playing) continue;
 
         float force[kMaxAxes] = {};

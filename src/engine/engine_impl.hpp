@@ -130,6 +130,13 @@ void prepare_slot(Slot& s) noexcept;
 // value = needed, allowed = 0..free_bytes, for a host that wants the numbers.
 [[nodiscard]] Error pool_full_error(int32_t needed, int32_t free_bytes) noexcept;
 
+// The whole microseconds of one period at hz (1..1000, as check_engine_config admits):
+// floor(1e6 / hz), in integers. hz is m · 2^e exactly (m its 24-bit significand), so this is
+// (1e6 · 2^-e) / m. It equals the double quotient 1e6 / hz truncated: when the quotient is
+// not whole it is at least 1/m > 2^-24 from every integer, and double's rounding of it moves
+// it by at most 1e6 · 2^-53 < 2^-36, never across one (every float in 1..1000 checked too).
+[[nodiscard]] int64_t period_us_of(float hz) noexcept;
+
 }  // namespace detail
 
 struct Engine::Impl {
@@ -141,13 +148,13 @@ struct Engine::Impl {
           dynamic_pool(config_invalid ? 0 : detail::dynamics_capacity(c)),
           condition_pool(config_invalid ? 0 : detail::stateful_conditions_capacity(c)),
           // Only friction and texture render last, and each holds a condition's memory.
-          last_slots(new LastSlot[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
+          last_slots(new uint16_t[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_invalid ? 0 : c.max_samples, slot_count),
           report_capacity(config_invalid ? 1 : c.report_capacity),
           reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
-        interim_period_us = config_invalid ? 1000 : static_cast<int64_t>(1e6 / c.interim_report_hz);
+        interim_period_us = config_invalid ? 1000 : detail::period_us_of(c.interim_report_hz);
         pool_total_bytes = config_invalid ? 0 : static_cast<int32_t>(detail::pool_capacity_bytes(c));
     }
 
@@ -210,14 +217,33 @@ struct Engine::Impl {
     }
 
     // prepare_slot, and a dynamic's per-tick form of its parameters marked stale.
-    static void prepare(detail::Slot& s) noexcept {
-        detail::prepare_slot(s);
+    void prepare(detail::Slot& s) noexcept {
+        acceleration_readers -= s.reads_acceleration ? 1 : 0;
+        prepare_new(s);
         if (s.cls == EffectClass::dynamic) s.dynamic_memory->state.prepared = false;
+    }
+
+    // prepare_slot for a slot being created (its old constants were counted off when freed).
+    void prepare_new(detail::Slot& s) noexcept {
+        detail::prepare_slot(s);
+        acceleration_readers += s.reads_acceleration ? 1 : 0;
+    }
+
+    // The tick's length in seconds, as the conditions' and dynamics' contexts take it (double
+    // while they do): worked out again only when the length changes, which at a fixed loop
+    // rate is never, so a board without a double unit makes no double operation per tick.
+    double tick_seconds(int64_t dt_us) noexcept {
+        if (dt_us != tick_length_us) {
+            tick_length_us = dt_us;
+            tick_length_s = static_cast<double>(dt_us) * 1e-6;
+        }
+        return tick_length_s;
     }
 
     // Frees a slot: its samples, bytes and memory return to their pools, its handles go stale.
     void free_slot(detail::Slot& s, int32_t index) noexcept {
         samples.release(index);
+        acceleration_readers -= s.reads_acceleration ? 1 : 0;
         if (s.cls == EffectClass::dynamic) {
             dynamic_pool.release(s.dynamic_memory);
         } else if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
@@ -301,13 +327,12 @@ struct Engine::Impl {
     // Slot::dynamic_memory).
     detail::RecordPool<detail::DynamicRecord> dynamic_pool;
     detail::RecordPool<detail::ConditionState> condition_pool;
-    // The tick's slots that render last (Slot::renders_last), gathered during its first pass.
-    struct LastSlot {
-        int32_t index = 0;
-        int64_t tau_us = 0;
-    };
-    std::unique_ptr<LastSlot[]> last_slots;
+    // The tick's slots that render last (Slot::renders_last), gathered during its first pass:
+    // their indices (max_effects is at most 65535). Their wave time is read again from their
+    // clocks, not kept (2 bytes an entry where index and time took 16: issue 14's RAM).
+    std::unique_ptr<uint16_t[]> last_slots;
     int32_t slot_end = 0;  // every slot from here on is free: the tick looks no further
+    int32_t acceleration_readers = 0;  // created slots that read the acceleration (Slot::reads_acceleration)
     detail::SamplePool samples;
     int32_t device_gain = kFullScale;
     detail::MotionEstimator motion;
@@ -321,6 +346,8 @@ struct Engine::Impl {
     float applied_force[kMaxAxes] = {};  // the force commanded at the previous tick
     detail::AxisObservers observers;     // friction's stop guard: the handle on each axis
     int64_t previous_t_us = 0;
+    int64_t tick_length_us = 0;  // tick_seconds: the last tick's length, and in seconds
+    double tick_length_s = 0.0;
 
     // Device control and the parameter memory (engine_commands.cpp).
     int32_t pool_total_bytes = 0;

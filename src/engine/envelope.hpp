@@ -23,6 +23,11 @@
 
 namespace feel::detail {
 
+// A wave time that lies within a finite duration (at most 65e6 µs: range::kDurationUs) as
+// 32 bits. A float of it is then one instruction on a Cortex-M4 where a float of an int64
+// is a library call, and the same float: the integer is the same.
+[[nodiscard]] constexpr int32_t finite_tau(int64_t tau_us) noexcept { return static_cast<int32_t>(tau_us); }
+
 // The envelope level in [0, 10000] for a steady-state level `steady` (≥ 0) at wave time
 // tau_us of a play lasting duration_us (kInfiniteUs for endless).
 // Single precision (issue 14): levels are within ±10000, times stay integer µs. Inline, as
@@ -31,7 +36,8 @@ namespace feel::detail {
                                           int64_t duration_us) noexcept {
     float level = steady;
     if (env.settle_time_us > 0 && tau_us < env.settle_time_us) {
-        const float progress = static_cast<float>(tau_us) / static_cast<float>(env.settle_time_us);
+        // τ is below the settle time here, and after the fade's start below the duration.
+        const float progress = static_cast<float>(finite_tau(tau_us)) / static_cast<float>(env.settle_time_us);
         const float impulse = static_cast<float>(env.impulse_level);
         level = impulse + (steady - impulse) * progress;
     }
@@ -39,7 +45,7 @@ namespace feel::detail {
         const int64_t fade_start = duration_us - env.fade_time_us;
         if (tau_us > fade_start) {
             const float progress =
-                static_cast<float>(tau_us - fade_start) / static_cast<float>(env.fade_time_us);
+                static_cast<float>(finite_tau(tau_us - fade_start)) / static_cast<float>(env.fade_time_us);
             level = level + (static_cast<float>(env.fade_level) - level) * progress;
         }
     }

@@ -15,7 +15,7 @@ float constant_wave(const SlotParams& p, int64_t tau_us) noexcept {
 // duration, M·sin(π·τ/duration), so it starts and ends at zero force and has no step to ring
 // the mechanism. The validator requires a finite duration.
 float smart_pop_wave(const SlotParams& p, int64_t tau_us) noexcept {
-    const float progress = static_cast<float>(tau_us) / static_cast<float>(p.duration_us);
+    const float progress = static_cast<float>(finite_tau(tau_us)) / static_cast<float>(p.duration_us);
     return static_cast<float>(p.constant.magnitude) * sin_turns(0.5f * progress);
 }
 

@@ -21,7 +21,7 @@ float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noex
 // Equal start and end angles do not sweep.
 float sweep_turns(const SlotParams& p, int64_t tau_us) noexcept {
     const SlotPeriodicBlock& b = p.periodic;
-    const float progress = static_cast<float>(tau_us) / static_cast<float>(p.duration_us);
+    const float progress = static_cast<float>(finite_tau(tau_us)) / static_cast<float>(p.duration_us);
     constexpr float kTurnsPerCentideg = 1.0f / 36000.0f;
     const float start = static_cast<float>(b.sweep_start_angle) * kTurnsPerCentideg;
     if (b.sweep_sense == SweepSense::clockwise) {
