@@ -88,7 +88,8 @@ int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[k
         TetherLaw& law = laws[i];
         switch (p.type) {
             case EffectType::dynamic_recoil:
-                law = spring_law(dynamic_mass<float>(c, d.dynamic_mass), dynamic_stiffness<float>(c, d.blast_resonance));
+                law = spring_law(dynamic_mass<float>(c, d.dynamic_mass),
+                                 dynamic_stiffness<float>(c, d.blast_resonance));
                 law.b = dynamic_damping<float>(c, d.blast_decay);
                 law.vel_init = kick_velocity(p, c, i, d.blast_direction, d.blast_intensity);
                 break;
@@ -111,7 +112,8 @@ int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[k
             case EffectType::dynamic_center_drift:
                 law = spring_law(dynamic_mass<float>(c, 1), dynamic_stiffness<float>(c, d.stiffness));
                 law.b = 2 * std::sqrt(law.k_pos * law.mass);
-                law.drag = static_cast<float>(d.drift_resistance) / static_cast<float>(kFullScale) * c.dynamic_stiffness_ref * kDriftTime_s;
+                law.drag = static_cast<float>(d.drift_resistance) / static_cast<float>(kFullScale) *
+                           c.dynamic_stiffness_ref * kDriftTime_s;
                 break;
             default: {  // dynamic_control_law: the block of this axis, as it is
                 const SlotControlLawBlock& b = d.control_law[i];

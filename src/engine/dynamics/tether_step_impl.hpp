@@ -140,7 +140,8 @@ Propagator<T> propagator(T gamma, T w2, T h) noexcept {
     }
     const T e_slow = exp_of<T>(-slow * h);
     const T e_fast = exp_of<T>(-fast * h);
-    return {false, (fast * e_slow - slow * e_fast) * inv, (e_slow - e_fast) * inv, (fast * e_fast - slow * e_slow) * inv};
+    return {false, (fast * e_slow - slow * e_fast) * inv, (e_slow - e_fast) * inv,
+            (fast * e_fast - slow * e_slow) * inv};
 }
 
 // A free mass with damping and a constant force a_f = f/m: ÿ = −a·ẏ + a_f.
@@ -152,9 +153,14 @@ BasicMassState<T> free_step(T a, T a_f, BasicMassState<T> x, T h) noexcept {
     const T ah = a * h;
     T phi1, phi2;  // φ1 = ∫₀ʰ e^{−at} dt, φ2 = ∫₀ʰ φ1(t) dt
     if (ah < kFreeSeriesLimit<T>) {
-        // φ1 = h·Σ (−ah)ⁿ/(n+1)!,  φ2 = h²·Σ (−ah)ⁿ/(n+2)!, nested.
-        phi1 = h * (1 - ah / 2 * (1 - ah / 3 * (1 - ah / 4 * (1 - ah / 5 * (1 - ah / 6 * (1 - ah / 7 * (1 - ah / 8 * (1 - ah / 9))))))));
-        phi2 = h * h * (T(0.5) - ah / 6 * (1 - ah / 4 * (1 - ah / 5 * (1 - ah / 6 * (1 - ah / 7 * (1 - ah / 8 * (1 - ah / 9 * (1 - ah / 10))))))));
+        // φ1 = h·Σ (−ah)ⁿ/(n+1)!,  φ2 = h²·Σ (−ah)ⁿ/(n+2)!, n = 0..8, nested from the last term.
+        T sum1 = 1, sum2 = 1;  // φ1/h, and 2·φ2/h²
+        for (int n = 8; n >= 1; --n) {
+            sum1 = 1 - ah / static_cast<T>(n + 1) * sum1;
+            sum2 = 1 - ah / static_cast<T>(n + 2) * sum2;
+        }
+        phi1 = h * sum1;
+        phi2 = h * h * T(0.5) * sum2;
     }
     if (ah < kIncrementLimit<T>) {
         // The velocity by its increment (e^{−ah} − 1)·v, as the oscillator's.
