@@ -27,6 +27,11 @@
  * differ from the x86 build's (glibc) by these last bits, as they did with newlib's, and
  * the 1-unit comparison of make test bounds what that does to a force.
  *
+ * Each function is in a section of its own (-ffunction-sections) and the link collects
+ * unreferenced sections (--gc-sections): a function no engine code calls is not in the
+ * image (since the control laws compute in float, issue 14, their callers are the paddle's
+ * double step, the slings, directions, texture and contact surfaces; docs/firmware.md).
+ *
  * IEEE special values: NaN in, NaN out; sin and cos of an infinity are NaN; exp(+inf) is
  * +inf and exp(-inf) 0; expm1(-inf) is -1; overflow gives +inf, underflow 0 (or a
  * subnormal, rounded twice). errno is not set (the engine does not read it). */

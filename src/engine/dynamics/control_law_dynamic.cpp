@@ -55,8 +55,8 @@
 //
 // Per tick each axis costs a few float multiply-adds per piece (tether_tick.hpp): the law
 // and its propagators are worked out when a command sets the parameters or the tick length
-// changes, and only a piece in which the stretch may cross an edge of the law is redone in
-// double.
+// changes, and only a piece in which the stretch may cross an edge of the law is redone by
+// the exact closed form (float too).
 //
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
@@ -134,7 +134,7 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     s = s0;
     rate = rate0;
     propagate(law.above, weight - law.drag * u - law.b * (u - handle_velocity), s, rate);
-    const float h = static_cast<float>(law.step_s);
+    const float h = law.step_s;
     pull = -(law.mass * (rate - rate0) - weight * h + law.drag * ((s - s0) + u * h)) * inverse_step;
     last_position = handle;
     last_velocity = handle_velocity;
@@ -177,12 +177,14 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
     // sensor's flicker around a mass at rest never counts.
     const float hysteresis = c.config->sensor_step;
-    const double step = c.dt_s;  // the catch-up's, and the prediction's: the next tick as long
+    // The catch-up's, and the prediction's: the next tick as long. The laws are float (their
+    // time too: a tick of at most seconds, to 6e-8 of itself; the engine's clock is integer µs).
+    const float step = static_cast<float>(c.dt_s);
     if (step > 0) {
         for (int i = 0; i < n; ++i) {
             if (st.laws[i].step_s != step) {
                 prepare_pieces(st.laws[i], step);
-                c.state->inverse_step = static_cast<float>(1.0 / step);
+                c.state->inverse_step = 1.0f / step;
             }
         }
     }
@@ -231,8 +233,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
                                             hysteresis) *
                    inverse_step;
         } else {
-            pull = static_cast<float>(
-                tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity));
+            pull = tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity);
         }
         force[a] += std::isfinite(pull) ? pull : 0.0f;
         st.handle_position[i] = handle;

@@ -51,12 +51,12 @@ namespace feel::detail {
 namespace {
 
 // Inertia: the tether's damping ratio against a held handle.
-constexpr double kInertiaDampingRatio = 0.7;
+constexpr float kInertiaDampingRatio = 0.7f;
 // Center drift: the origin's time constant at DriftResistance = Stiffness, s.
-constexpr double kDriftTime_s = 10.0;
+constexpr float kDriftTime_s = 10.0f;
 
 // A law with both stiffnesses k and nothing else but a mass.
-TetherLaw spring_law(double mass, double k) noexcept {
+TetherLaw spring_law(float mass, float k) noexcept {
     TetherLaw law;
     law.mass = mass;
     law.k_pos = k;
@@ -69,15 +69,15 @@ TetherLaw spring_law(double mass, double k) noexcept {
 // On one axis the intensity's sign is the direction: positive kicks toward +, like a
 // positive constant force on that axis. On x, y, z the spherical direction aims it
 // (direction_factors, as for a wave).
-double kick_velocity(const SlotParams& p, const EngineConfig& c, int i, int32_t angle, int32_t intensity) noexcept {
-    if (p.axis_count == 1) return dynamic_velocity(c, intensity);
+float kick_velocity(const SlotParams& p, const EngineConfig& c, int i, int32_t angle, int32_t intensity) noexcept {
+    if (p.axis_count == 1) return dynamic_velocity<float>(c, intensity);
     float push[kMaxAxes] = {};
     if (p.direction.kind == DirectionKind::spherical) {
         direction_factors(p, push);
     } else {
         polar_factors(angle, push);
     }
-    return dynamic_velocity(c, intensity) * push[axis_index(p.axes[i])];
+    return dynamic_velocity<float>(c, intensity) * push[axis_index(p.axes[i])];
 }
 
 }  // namespace
@@ -88,42 +88,44 @@ int32_t tether_laws(const SlotParams& p, const EngineConfig& c, TetherLaw laws[k
         TetherLaw& law = laws[i];
         switch (p.type) {
             case EffectType::dynamic_recoil:
-                law = spring_law(dynamic_mass(c, d.dynamic_mass), dynamic_stiffness(c, d.blast_resonance));
-                law.b = dynamic_damping(c, d.blast_decay);
+                law = spring_law(dynamic_mass<float>(c, d.dynamic_mass),
+                                 dynamic_stiffness<float>(c, d.blast_resonance));
+                law.b = dynamic_damping<float>(c, d.blast_decay);
                 law.vel_init = kick_velocity(p, c, i, d.blast_direction, d.blast_intensity);
                 break;
             case EffectType::dynamic_impact:
-                law = spring_law(dynamic_mass(c, d.dynamic_mass), dynamic_stiffness(c, d.elasticity));
-                law.b = dynamic_damping(c, d.collision_absorption);
+                law = spring_law(dynamic_mass<float>(c, d.dynamic_mass), dynamic_stiffness<float>(c, d.elasticity));
+                law.b = dynamic_damping<float>(c, d.collision_absorption);
                 law.vel_init = kick_velocity(p, c, i, d.impact_direction, d.impact_intensity);
                 break;
             case EffectType::dynamic_liquid:
-                law = spring_law(dynamic_mass(c, d.density), dynamic_stiffness(c, d.settle));
-                law.b = dynamic_damping(c, d.viscosity);
+                law = spring_law(dynamic_mass<float>(c, d.density), dynamic_stiffness<float>(c, d.settle));
+                law.b = dynamic_damping<float>(c, d.viscosity);
                 law.drag = law.b;
                 break;
             case EffectType::dynamic_inertia:
-                law = spring_law(dynamic_mass(c, d.inertia), dynamic_stiffness(c, kFullScale));
+                law = spring_law(dynamic_mass<float>(c, d.inertia), dynamic_stiffness<float>(c, kFullScale));
                 law.b = 2 * kInertiaDampingRatio * std::sqrt(law.k_pos * law.mass);
-                law.length = d.play;
+                law.length = static_cast<float>(d.play);
                 law.handle_frame = true;  // driven by −M·a (control_law_dynamic.cpp says why)
                 break;
             case EffectType::dynamic_center_drift:
-                law = spring_law(dynamic_mass(c, 1), dynamic_stiffness(c, d.stiffness));
+                law = spring_law(dynamic_mass<float>(c, 1), dynamic_stiffness<float>(c, d.stiffness));
                 law.b = 2 * std::sqrt(law.k_pos * law.mass);
-                law.drag = static_cast<double>(d.drift_resistance) / kFullScale * c.dynamic_stiffness_ref * kDriftTime_s;
+                law.drag = static_cast<float>(d.drift_resistance) / static_cast<float>(kFullScale) *
+                           c.dynamic_stiffness_ref * kDriftTime_s;
                 break;
             default: {  // dynamic_control_law: the block of this axis, as it is
                 const SlotControlLawBlock& b = d.control_law[i];
-                law.mass = dynamic_mass(c, b.mass);
-                law.k_pos = dynamic_stiffness(c, b.k_pos);
-                law.k_neg = dynamic_stiffness(c, b.k_neg);
-                law.b = dynamic_damping(c, b.b);
-                law.drag = dynamic_damping(c, b.drag);
-                law.gravity = dynamic_gravity(c, b.gravity);
-                law.length = b.length;
-                law.pos_init = b.pos_init;
-                law.vel_init = dynamic_velocity(c, b.vel_init);
+                law.mass = dynamic_mass<float>(c, b.mass);
+                law.k_pos = dynamic_stiffness<float>(c, b.k_pos);
+                law.k_neg = dynamic_stiffness<float>(c, b.k_neg);
+                law.b = dynamic_damping<float>(c, b.b);
+                law.drag = dynamic_damping<float>(c, b.drag);
+                law.gravity = dynamic_gravity<float>(c, b.gravity);
+                law.length = static_cast<float>(b.length);
+                law.pos_init = static_cast<float>(b.pos_init);
+                law.vel_init = dynamic_velocity<float>(c, b.vel_init);
                 law.half_cycles = b.half_cycles;
                 break;
             }

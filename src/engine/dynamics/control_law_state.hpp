@@ -29,8 +29,8 @@ struct TetherAxisState {
 // length: what every tick needs, worked out when the parameters or the tick length change.
 struct PreparedTether {
     // The propagators below are for pieces of this many per step of step_s seconds (0: none
-    // yet). First, so that the struct has no padding (issue 14's RAM: 8 bytes an axis).
-    double step_s = 0;
+    // yet).
+    float step_s = 0;
     int32_t pieces = 1;
     float mass = 1, k_pos = 1, k_neg = 1, b = 0, drag = 0, gravity = 0, length = 0;
     float pos_init = 0, vel_init = 0;

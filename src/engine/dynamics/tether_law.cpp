@@ -15,16 +15,16 @@ using Region = TetherRegion;
 // The force on a mass that moves with the handle (in the handle's frame ṡ = 0 means
 // ẋ = u), apart from the spring: gravity, the drag of moving at u, and the tether damper
 // if it measures against a velocity other than u.
-double free_force(const TetherLaw& law, const HandlePath& path) noexcept {
+float free_force(const TetherLaw& law, const HandlePath& path) noexcept {
     return law.mass * law.gravity - law.drag * path.velocity - law.b * (path.velocity - path.damper_velocity);
 }
 
 // The same without the tether damper: in the free play the tether is slack.
-double slack_force(const TetherLaw& law, const HandlePath& path) noexcept {
+float slack_force(const TetherLaw& law, const HandlePath& path) noexcept {
     return law.mass * law.gravity - law.drag * path.velocity;
 }
 
-Region classify(const TetherLaw& law, double s, double rate, double rest_force) noexcept {
+Region classify(const TetherLaw& law, float s, float rate, float rest_force) noexcept {
     return tether_region(law.length, s, rate, rest_force);
 }
 
@@ -32,25 +32,25 @@ Region classify(const TetherLaw& law, double s, double rate, double rest_force) 
 // below, s in the slack. With the handle moving at u and the damper measuring against u_b,
 // ẏ = ṡ and
 //     M·ÿ = −k·y − b·(ẏ + u − u_b) − d·(ẏ + u) + M·g   ⇒   c = b + d,  f = M·g − d·u − b·(u − u_b).
-SpringDamper segment(const TetherLaw& law, Region r, const HandlePath& path) noexcept {
+SpringDamperF segment(const TetherLaw& law, Region r, const HandlePath& path) noexcept {
     switch (r) {
         case Region::above: return {law.mass, law.k_pos, law.b + law.drag, free_force(law, path)};
         case Region::below: return {law.mass, law.k_neg, law.b + law.drag, free_force(law, path)};
         case Region::slack: break;
     }
-    return {law.mass, 0.0, law.drag, slack_force(law, path)};
+    return {law.mass, 0.0f, law.drag, slack_force(law, path)};
 }
 
-double local_origin(const TetherLaw& law, Region r) noexcept {
+float local_origin(const TetherLaw& law, Region r) noexcept {
     switch (r) {
         case Region::above: return law.length;
         case Region::below: return -law.length;
         case Region::slack: break;
     }
-    return 0.0;
+    return 0.0f;
 }
 
-void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stretch, double hysteresis) noexcept {
+void count_half_cycle(const TetherLaw& law, TetherAxisState& state, float stretch, float hysteresis) noexcept {
     const int8_t side = stretch_side(law, stretch, hysteresis);
     if (side == 0 || side == state.side) return;
     if (state.side != 0) ++state.half_cycles;
@@ -59,30 +59,30 @@ void count_half_cycle(const TetherLaw& law, TetherAxisState& state, double stret
 
 }  // namespace
 
-bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
-                          const HandlePath& path, double h, double hysteresis) noexcept {
+bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s, float& rate,
+                          const HandlePath& path, float h, float hysteresis) noexcept {
     bool taut = false;
     const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
-    const double rest_force = free_force(law, path);
-    double remaining = h;
+    const float rest_force = free_force(law, path);
+    float remaining = h;
     int32_t switches = 0;
     while (remaining > 0) {
         const Region r = classify(law, s, rate, rest_force);
         taut = taut || r != Region::slack;
-        const SpringDamper seg = segment(law, r, path);
-        const double origin = local_origin(law, r);
-        const MassState start{s - origin, rate};
+        const SpringDamperF seg = segment(law, r, path);
+        const float origin = local_origin(law, r);
+        const MassStateF start{s - origin, rate};
         // The piece to its end in this region, and (below) the state where it leaves it.
-        MassState end = tether_step(seg, start, remaining);
-        double t = remaining;
-        double snap_to = 0;
+        MassStateF end = tether_step(seg, start, remaining);
+        float t = remaining;
+        float snap_to = 0;
         bool crossed = false;
         if (piecewise && switches < kMaxRegionSwitches) {
-            double tc = 0;
-            MassState at = end;
+            float tc = 0;
+            MassStateF at = end;
             if (r == Region::slack) {
                 // Either edge of the play, whichever comes first.
-                const MassState whole = end;
+                const MassStateF whole = end;
                 if (tether_crossing(seg, start, whole, law.length, remaining, tc, at) && tc < t) {
                     t = tc;
                     end = at;
@@ -95,7 +95,7 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& 
                     snap_to = -law.length;
                     crossed = true;
                 }
-            } else if (tether_crossing(seg, start, end, 0.0, remaining, tc, at) && tc < remaining) {
+            } else if (tether_crossing(seg, start, end, 0.0f, remaining, tc, at) && tc < remaining) {
                 t = tc;
                 end = at;
                 snap_to = origin;  // back onto the edge the region starts at
@@ -104,35 +104,35 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& 
         }
         s = crossed ? snap_to : end.position + origin;
         rate = end.velocity;
-        remaining = crossed ? remaining - t : 0.0;
+        remaining = crossed ? remaining - t : 0.0f;
         if (crossed) ++switches;
         count_half_cycle(law, state, s, hysteresis);
     }
     return taut;
 }
 
-double rest_stretch(const TetherLaw& law) noexcept {
-    const double weight = law.mass * law.gravity;
+float rest_stretch(const TetherLaw& law) noexcept {
+    const float weight = law.mass * law.gravity;
     if (weight > 0) return law.length + weight / law.k_pos;
     if (weight < 0) return -law.length + weight / law.k_neg;
-    return 0.0;
+    return 0.0f;
 }
 
-double tether_reaction(const TetherLaw& law, double stretch, double stretch_rate) noexcept {
+float tether_reaction(const TetherLaw& law, float stretch, float stretch_rate) noexcept {
     // On an edge of the play (or at 0 without play) the tether is taut if the mass is
     // moving out: a kick from the handle meets the damper at once.
-    const double edge = law.length;
+    const float edge = law.length;
     if (stretch > edge || (stretch == edge && stretch_rate > 0)) {
         return law.k_pos * (stretch - edge) + law.b * stretch_rate;
     }
     if (stretch < -edge || (stretch == -edge && stretch_rate < 0)) {
         return law.k_neg * (stretch + edge) + law.b * stretch_rate;
     }
-    return 0.0;
+    return 0.0f;
 }
 
-int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noexcept {
-    const double e = stretch - rest_stretch(law);
+int8_t stretch_side(const TetherLaw& law, float stretch, float hysteresis) noexcept {
+    const float e = stretch - rest_stretch(law);
     if (e > hysteresis) return 1;
     if (e < -hysteresis) return -1;
     return 0;

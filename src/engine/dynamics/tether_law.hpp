@@ -33,15 +33,15 @@ namespace feel::detail {
 
 // One axis of the control law in normalized physical units (dynamic_units.hpp).
 struct TetherLaw {
-    double mass = 1;        // > 0, force units per (position unit/s²)
-    double k_pos = 1;       // > 0, force units per position unit, stretch beyond +length
-    double k_neg = 1;       // > 0, the same beyond −length
-    double b = 0;           // >= 0, tether damping on the relative velocity, force/(units/s)
-    double drag = 0;        // >= 0, ambient damping on the absolute velocity, force/(units/s)
-    double gravity = 0;     // position units/s², either sign: the force M·g on the mass
-    double length = 0;      // >= 0, position units: the half-width of the free play
-    double pos_init = 0;    // position units, the mass's start relative to the handle
-    double vel_init = 0;    // position units/s, relative to the handle
+    float mass = 1;        // > 0, force units per (position unit/s²)
+    float k_pos = 1;       // > 0, force units per position unit, stretch beyond +length
+    float k_neg = 1;       // > 0, the same beyond −length
+    float b = 0;           // >= 0, tether damping on the relative velocity, force/(units/s)
+    float drag = 0;        // >= 0, ambient damping on the absolute velocity, force/(units/s)
+    float gravity = 0;     // position units/s², either sign: the force M·g on the mass
+    float length = 0;      // >= 0, position units: the half-width of the free play
+    float pos_init = 0;    // position units, the mass's start relative to the handle
+    float vel_init = 0;    // position units/s, relative to the handle
     int32_t half_cycles = 0;  // 0 = never ends; else ends after this many half oscillations
     // The mass is simulated in the handle's frame, driven by the handle's estimated
     // acceleration rather than by its sensed position and estimated velocity: Dynamic
@@ -53,9 +53,9 @@ struct TetherLaw {
 // tether's damper acts on the mass's velocity relative to damper_velocity, normally the
 // same; control_law_dynamic.cpp explains when it is not.
 struct HandlePath {
-    double position = 0;         // position units
-    double velocity = 0;         // position units/s
-    double damper_velocity = 0;  // position units/s
+    float position = 0;         // position units
+    float velocity = 0;         // position units/s
+    float damper_velocity = 0;  // position units/s
 };
 
 // At most this many pieces per step: enough for ω·h ≤ 1 at 100 Hz on every profile
@@ -71,7 +71,7 @@ enum class TetherRegion : uint8_t {
     above,  // s > +length: stretched positively, k_pos
 };
 
-// The region a stretch s is in (in double for the exact piece, in float for the tick). On
+// The region a stretch s is in. On
 // an edge, the side the motion leaves to decides (the sign of ṡ, else of the force at
 // rest), so that a mass set onto an edge by a crossing goes on into the region it was
 // heading for. Without play (length 0), the sign of the stretch.
@@ -94,23 +94,23 @@ template <typename T>
 
 // The stretch where the mass rests against a held handle: 0 without gravity, else the
 // sag M·g/k± beyond the play on the side gravity pulls to.
-[[nodiscard]] double rest_stretch(const TetherLaw& law) noexcept;
+[[nodiscard]] float rest_stretch(const TetherLaw& law) noexcept;
 
 // The tether's pull on the handle (force units, + toward +axis) at stretch s, rate ṡ.
-[[nodiscard]] double tether_reaction(const TetherLaw& law, double stretch, double stretch_rate) noexcept;
+[[nodiscard]] float tether_reaction(const TetherLaw& law, float stretch, float stretch_rate) noexcept;
 
 // The side (−1, 0, +1) a stretch is on relative to the rest stretch, beyond ±hysteresis.
-[[nodiscard]] int8_t stretch_side(const TetherLaw& law, double stretch, double hysteresis) noexcept;
+[[nodiscard]] int8_t stretch_side(const TetherLaw& law, float stretch, float hysteresis) noexcept;
 
 // Advances the stretch (s, ṡ) of one axis exactly by one piece of h seconds (ω·h ≤ 1,
 // h >= 0) against the handle path (its position unused: s is relative to the handle),
 // switching regions at the edges it finds (tether_crossing) and counting half cycles:
 // each time the stretch goes from beyond +hysteresis of the rest stretch to beyond
-// −hysteresis, or back, checked at every edge crossing and at the piece's end. Double
-// precision; tether_tick.cpp calls it for the pieces in which an edge may lie. Returns
+// −hysteresis, or back, checked at every edge crossing and at the piece's end. Float, as
+// the tick; tether_tick.cpp calls it for the pieces in which an edge may lie. Returns
 // whether any part of the piece was spent beyond the play (the tether taut).
-bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, double& s, double& rate,
-                          const HandlePath& path, double h, double hysteresis) noexcept;
+bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s, float& rate,
+                          const HandlePath& path, float h, float hysteresis) noexcept;
 
 // The §8.4 mapping: fills laws[i] for each axis i of the effect from its dynamic type and
 // Dynamic Struct, scaled by the config. Returns the effect's axis count. The effect must

@@ -10,46 +10,47 @@ namespace {
 
 // Below this E = e^{−c·h/2m} the oscillation is gone within the piece and the plain matrix
 // (entries of order E) is as good; M = Φ/E would only lose range.
-constexpr double kMinShearDecay = 1e-12;
+constexpr float kMinShearDecay = 1e-12f;
 
 }  // namespace
 
-TetherPropagator tether_propagator(const SpringDamper& s, double h) noexcept {
-    SpringDamper unforced = s;
+TetherPropagator tether_propagator(const SpringDamperF& s, float h) noexcept {
+    SpringDamperF unforced = s;
     unforced.force = 0;
-    const MassState from_position = tether_step(unforced, {1, 0}, h);  // first column of Φ
-    const MassState from_velocity = tether_step(unforced, {0, 1}, h);  // second column
-    SpringDamper unit = s;
+    SpringDamperF unit = s;
     unit.force = 1;
-    const MassState forced = tether_step(unit, {0, 0}, h);  // Γ
+    const MassStateF forced = tether_step(unit, {0, 0}, h);  // Γ
 
     TetherPropagator p;
-    p.force_y = static_cast<float>(forced.position);
-    p.force_v = static_cast<float>(forced.velocity);
-    const double m11 = from_position.position, m21 = from_position.velocity;
-    const double m12 = from_velocity.position, m22 = from_velocity.velocity;
-    const double gamma = s.damping / (2 * s.mass);
-    const double w2 = s.stiffness / s.mass;
-    const double decay = std::exp(-gamma * h);
-    const bool oscillating = w2 > gamma * gamma && m21 != 0;
-    if (oscillating && decay > kMinShearDecay) {
-        const double w = m21 / decay;
-        const double x = (m11 / decay - 1) / w;
-        const double z = (m22 / decay - 1) / w;
-        p.sheared = true;
-        p.c0 = static_cast<float>(x);
-        p.c1 = static_cast<float>(w);
-        p.c2 = static_cast<float>(z);
-        p.lo0 = static_cast<float>(x - p.c0);
-        p.lo1 = static_cast<float>(w - p.c1);
-        p.lo2 = static_cast<float>(z - p.c2);
-        p.c3 = static_cast<float>(-std::expm1(-gamma * h));  // 1 − E, to its own precision
-        return p;
+    p.force_y = forced.position;
+    p.force_v = forced.velocity;
+    const float gamma = s.damping / (2 * s.mass);
+    const float w2 = s.stiffness / s.mass;
+    const float delta = w2 - gamma * gamma;
+    const float decay = std::exp(-gamma * h);
+    if (delta > 0 && decay > kMinShearDecay) {
+        const float wd = std::sqrt(delta);
+        const float theta = wd * h;
+        const float sine = tether_step_impl::sin_of(theta);
+        const float cosine = tether_step_impl::cos_of(theta);
+        if (sine != 0) {
+            // q = ωd·tan(θ/2), from whichever form does not cancel.
+            const float half_tan = cosine >= 0 ? sine / (1 + cosine) : (1 - cosine) / sine;
+            const float q = wd * half_tan;
+            p.sheared = true;
+            p.c0 = (q - gamma) / w2;
+            p.c1 = -w2 * (sine / wd);
+            p.c2 = (q + gamma) / w2;
+            p.c3 = -std::expm1(-gamma * h);  // 1 − E, to its own precision
+            return p;
+        }
     }
-    p.c0 = static_cast<float>(m11);
-    p.c1 = static_cast<float>(m12);
-    p.c2 = static_cast<float>(m21);
-    p.c3 = static_cast<float>(m22);
+    const MassStateF from_position = tether_step(unforced, {1, 0}, h);  // first column of Φ
+    const MassStateF from_velocity = tether_step(unforced, {0, 1}, h);  // second column
+    p.c0 = from_position.position;
+    p.c1 = from_velocity.position;
+    p.c2 = from_position.velocity;
+    p.c3 = from_velocity.velocity;
     return p;
 }
 

@@ -11,10 +11,10 @@
 //     [y(h), ẏ(h)] = Φ·[y0, ẏ0] + Γ·f
 //
 // Φ (the state-transition matrix, e^{Ah}) and Γ (the response to a unit force from rest)
-// depend only on m, c, k and h. They are computed in double by tether_step (the closed
-// form of every damping regime) when the parameters or the tick length change, stored in
-// float, and each tick costs a handful of float operations instead of an exp, a sin and a
-// cos in double (a soft-float call each on a Cortex-M4F).
+// depend only on m, c, k and h. They are computed in float (tether_step's closed form, and
+// the shears below from their own closed form) when the parameters or the tick length
+// change, and each tick costs a handful of float operations instead of an exp, a sin and
+// a cos.
 //
 // Rounding Φ to float would break what the exact step guarantees for an undamped mass:
 // det Φ = e^{−c·h/m} is what keeps its energy, and a rounded Φ has det 1 ± 1e-7, which over
@@ -25,12 +25,23 @@
 //     M = [1 x; 0 1]·[1 0; w 1]·[1 z; 0 1],    w = M21,  x = (M11 − 1)/w,  z = (M22 − 1)/w
 //
 // each of which has determinant exactly 1 whatever its coefficient rounds to. The rounded
-// map is then an exact symplectic map of a system a few 1e-8 away, scaled by E ≤ 1: its
+// map is then an exact symplectic map of a system a few 1e-7 away, scaled by E ≤ 1: its
 // energy stays within rounding of a conserved value instead of drifting. Overdamped,
 // critically damped and free pieces are stored as the plain matrix: they dissipate far
 // more per piece than its rounding could add.
 //
-// Real-time safe: no allocation, no state; applying is float only.
+// The shears come from their closed form, not from M: with θ = ωd·h (ωd² = ω0² − γ²),
+// S = sin θ/ωd and q = ωd·tan(θ/2) = (1 − cos θ)/S,
+//
+//     x = (q − γ)/ω0²,   z = (q + γ)/ω0²,   w = −ω0²·S
+//
+// (M11 − 1 = cos θ − 1 + γS would lose everything to cancellation in float for a short
+// piece; tan(θ/2) is sin θ/(1 + cos θ), or (1 − cos θ)/sin θ past a quarter turn, neither
+// of which cancels). Each coefficient is right to a few float ulps, so the map's frequency
+// is off the law's by a few 1e-7 of itself, a phase error of that fraction of the angle
+// turned (docs/dynamics.md, "Precision").
+//
+// Real-time safe: no allocation, no state; float only.
 #pragma once
 
 #include <cstdint>
@@ -43,27 +54,21 @@ struct TetherPropagator {
     bool sheared = false;  // the three-shear form (an oscillating piece), else the plain matrix
     // sheared: x, w, z of the three shears, and 1 − E; plain: Φ = [c0 c1; c2 c3]
     float c0 = 1, c1 = 0, c2 = 0, c3 = 1;
-    // sheared: what x, w, z lose to float rounding (c0 + lo0 is x to about 1e-15)
-    float lo0 = 0, lo1 = 0, lo2 = 0;
     float force_y = 0, force_v = 0;  // Γ: the position and velocity after h from rest under f = 1
 };
 
 // The piece of length h (> 0) of the system s (its `force` is ignored: f is given at each
-// application). Computed in double.
-[[nodiscard]] TetherPropagator tether_propagator(const SpringDamper& s, double h) noexcept;
+// application). Float throughout.
+[[nodiscard]] TetherPropagator tether_propagator(const SpringDamperF& s, float h) noexcept;
 
-// Advances (y, v) by the piece under the constant force f. A shear adds an increment
-// (x·v) that is small next to what it is added to; its coefficient's rounding error
-// (lo) is added into the increment first, where its size is resolved, so the rounded
-// coefficients do not shift the oscillator's frequency systematically (that would shift
-// the phase of a long undamped swing by 1e-7 of the angle turned).
+// Advances (y, v) by the piece under the constant force f.
 inline void propagate(const TetherPropagator& p, float f, float& y, float& v) noexcept {
     float y1;
     float v1;
     if (p.sheared) {
-        y1 = y + (p.c2 * v + p.lo2 * v);
-        v1 = v + (p.c1 * y1 + p.lo1 * y1);
-        y1 = y1 + (p.c0 * v1 + p.lo0 * v1);
+        y1 = y + p.c2 * v;
+        v1 = v + p.c1 * y1;
+        y1 = y1 + p.c0 * v1;
         y1 = y1 - y1 * p.c3;
         v1 = v1 - v1 * p.c3;
     } else {

@@ -28,37 +28,60 @@
 // the crossing tether_crossing() finds. Keeping each piece short (tether_substeps: ω·h ≤ 1)
 // guarantees a crossing cannot be stepped over unseen.
 //
-// Real-time safe: no allocation, no exceptions, no state; double precision throughout.
+// Precision. The control laws use it in float (SpringDamperF: issue 14, a Cortex-M4F has a
+// single-precision FPU only; docs/dynamics.md, "Precision", says what float costs and why
+// it is enough); the same template in double serves a caller that still computes in double
+// (the paddle's contact). In float the sine and cosine are turn_trig.hpp's (the same bits
+// on every platform), the exponentials libm's float ones; in double, libm's.
+//
+// Real-time safe: no allocation, no exceptions, no state.
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 namespace feel::detail {
 
-struct SpringDamper {
-    double mass = 1;       // > 0 (callers' units: the dynamics use force units per (position unit/s²))
-    double stiffness = 0;  // >= 0, force per unit of y; 0 is a free mass
-    double damping = 0;    // >= 0, force per unit of ẏ
-    double force = 0;      // constant force on the mass over the step, any sign
+template <typename T>
+struct BasicSpringDamper {
+    T mass = 1;       // > 0 (callers' units: the dynamics use force units per (position unit/s²))
+    T stiffness = 0;  // >= 0, force per unit of y; 0 is a free mass
+    T damping = 0;    // >= 0, force per unit of ẏ
+    T force = 0;      // constant force on the mass over the step, any sign
 };
 
-struct MassState {
-    double position = 0;  // y
-    double velocity = 0;  // ẏ, per second
+template <typename T>
+struct BasicMassState {
+    T position = 0;  // y
+    T velocity = 0;  // ẏ, per second
 };
+
+using SpringDamper = BasicSpringDamper<double>;
+using MassState = BasicMassState<double>;
+using SpringDamperF = BasicSpringDamper<float>;  // the control laws'
+using MassStateF = BasicMassState<float>;
+
+// The scalar of a step's time and level: the state's own (not deduced from the argument, so
+// that a literal or a double time with a float law converts instead of failing to match).
+template <typename T>
+using StepScalar = std::type_identity_t<T>;
 
 // The state after h seconds (h >= 0), exact for constant parameters. Finite inputs give
 // finite outputs (an undamped oscillator stays bounded; damping only shrinks the motion).
-[[nodiscard]] MassState tether_step(const SpringDamper& s, MassState x, double h) noexcept;
+template <typename T>
+[[nodiscard]] BasicMassState<T> tether_step(const BasicSpringDamper<T>& s, BasicMassState<T> x,
+                                            StepScalar<T> h) noexcept;
 
 // ω0 = sqrt(k/m), the undamped natural frequency, rad/s. Damping needs no substeps (the step
 // is exact however heavily damped); only the oscillation decides how short a piece is.
-[[nodiscard]] double tether_omega(const SpringDamper& s) noexcept;
+template <typename T>
+[[nodiscard]] T tether_omega(const BasicSpringDamper<T>& s) noexcept;
 
 // Pieces to cut a step of h seconds into so that each has ω0·h_piece <= 1: the smallest n
 // with ω0·h/n <= 1, at least 1, at most max_substeps (beyond it the pieces are longer but
 // each stays exact; only tether_crossing's guarantee is lost).
-[[nodiscard]] int32_t tether_substeps(const SpringDamper& s, double h, int32_t max_substeps) noexcept;
+template <typename T>
+[[nodiscard]] int32_t tether_substeps(const BasicSpringDamper<T>& s, StepScalar<T> h, int32_t max_substeps) noexcept;
 
 // The first time t in (0, h] at which y(t) crosses `level` (y(t) − level changes sign or
 // reaches 0 from a nonzero start), for the motion tether_step describes. Returns false
@@ -68,15 +91,35 @@ struct MassState {
 // The starting side is the sign of y(0) − level; a start exactly at the level takes the
 // side the motion leaves to (the sign of ẏ(0), else of ÿ(0)), so a contact that begins at
 // its surface finds the moment it comes back out, not the moment it began.
-// Accuracy: |t − t_true| <= 1e-9·h (Newton's method within a bracket, bisection fallback).
-[[nodiscard]] bool tether_crossing(const SpringDamper& s, MassState x, double level, double h,
-                                   double& t_cross) noexcept;
+// Accuracy: Newton's method within a bracket (bisection fallback) closes the bracket to
+// 1e-9·h in double, 2^-20·h (1e-6) in float, plus what rounding the motion's evaluation
+// does to the root (about eps·amplitude/|slope|: a graze's crossing is less sharp).
+template <typename T>
+[[nodiscard]] bool tether_crossing(const BasicSpringDamper<T>& s, BasicMassState<T> x, StepScalar<T> level,
+                                   StepScalar<T> h, T& t_cross) noexcept;
 
 // The same for a caller that has the state at h already (at_h = tether_step(s, x, h)) and
 // needs the state at the crossing (at_cross = tether_step(s, x, t_cross), set when it
 // returns true): neither is evaluated again (each evaluation is an exp, a sine and a
-// cosine in double; a piecewise step took about twelve per crossing).
-[[nodiscard]] bool tether_crossing(const SpringDamper& s, MassState x, MassState at_h, double level, double h,
-                                   double& t_cross, MassState& at_cross) noexcept;
+// cosine; a piecewise step took about twelve per crossing).
+template <typename T>
+[[nodiscard]] bool tether_crossing(const BasicSpringDamper<T>& s, BasicMassState<T> x, BasicMassState<T> at_h,
+                                   StepScalar<T> level, StepScalar<T> h, T& t_cross,
+                                   BasicMassState<T>& at_cross) noexcept;
+
+}  // namespace feel::detail
+
+// The definitions: a template, so that each precision is compiled where it is used. The
+// float one, the control laws', once in tether_step.cpp (declared extern there).
+#include "dynamics/tether_step_impl.hpp"
+
+namespace feel::detail {
+
+extern template MassStateF tether_step<float>(const SpringDamperF&, MassStateF, float) noexcept;
+extern template float tether_omega<float>(const SpringDamperF&) noexcept;
+extern template int32_t tether_substeps<float>(const SpringDamperF&, float, int32_t) noexcept;
+extern template bool tether_crossing<float>(const SpringDamperF&, MassStateF, float, float, float&) noexcept;
+extern template bool tether_crossing<float>(const SpringDamperF&, MassStateF, MassStateF, float, float, float&,
+                                            MassStateF&) noexcept;
 
 }  // namespace feel::detail

@@ -57,15 +57,15 @@ float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
 
 PreparedTether prepare_tether(const TetherLaw& law) noexcept {
     PreparedTether t;
-    t.mass = static_cast<float>(law.mass);
-    t.k_pos = static_cast<float>(law.k_pos);
-    t.k_neg = static_cast<float>(law.k_neg);
-    t.b = static_cast<float>(law.b);
-    t.drag = static_cast<float>(law.drag);
-    t.gravity = static_cast<float>(law.gravity);
-    t.length = static_cast<float>(law.length);
-    t.pos_init = static_cast<float>(law.pos_init);
-    t.vel_init = static_cast<float>(law.vel_init);
+    t.mass = law.mass;
+    t.k_pos = law.k_pos;
+    t.k_neg = law.k_neg;
+    t.b = law.b;
+    t.drag = law.drag;
+    t.gravity = law.gravity;
+    t.length = law.length;
+    t.pos_init = law.pos_init;
+    t.vel_init = law.vel_init;
     t.half_cycles = law.half_cycles;
     t.handle_frame = law.handle_frame;
     t.piecewise = t.length > 0 || t.k_pos != t.k_neg;
@@ -89,24 +89,23 @@ TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept {
     return law;
 }
 
-void prepare_pieces(PreparedTether& t, double step_s) noexcept {
-    // The parameters as the float law holds them, so the exact pieces agree with these.
-    const double m = t.mass, drag = t.drag, taut = static_cast<double>(t.b) + t.drag;
+void prepare_pieces(PreparedTether& t, float step_s) noexcept {
+    const float m = t.mass, drag = t.drag, taut = t.b + t.drag;
     // Pieces with ω·h ≤ 1 are needed to see every edge and every half cycle; a law with one
     // region that counts none is exact in one piece of any length.
     const bool watched = t.piecewise || t.half_cycles > 0;
-    t.pieces = watched ? tether_substeps({m, std::max<double>(t.k_pos, t.k_neg), 0.0, 0.0}, step_s, kMaxTetherSubsteps)
+    t.pieces = watched ? tether_substeps<float>({m, std::max(t.k_pos, t.k_neg), 0.0f, 0.0f}, step_s, kMaxTetherSubsteps)
                        : 1;
-    const double piece = step_s / t.pieces;
-    t.below = tether_propagator({m, static_cast<double>(t.k_neg), taut, 0.0}, piece);
-    t.above = tether_propagator({m, static_cast<double>(t.k_pos), taut, 0.0}, piece);
-    t.slack = tether_propagator({m, 0.0, drag, 0.0}, piece);
+    const float piece = step_s / static_cast<float>(t.pieces);
+    t.below = tether_propagator({m, t.k_neg, taut, 0.0f}, piece);
+    t.above = tether_propagator({m, t.k_pos, taut, 0.0f}, piece);
+    t.slack = tether_propagator({m, 0.0f, drag, 0.0f}, piece);
     t.step_s = step_s;
 }
 
 float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
                              float hysteresis) noexcept {
-    const float h = static_cast<float>(t.step_s);
+    const float h = t.step_s;
     const float u = line.velocity;
     // The forces on a mass moving with the handle, apart from the spring (tether_law.cpp's
     // segment): taut, the tether damper reads against damper_velocity; slack, no tether.
@@ -148,15 +147,12 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
                 !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f,
                                                     r == Region::above ? t.k_pos : t.k_neg, t.mass, taut_force,
                                                     s - origin, rate))) {
-                // An edge may lie within the piece: the exact piece finds it (double, rare).
-                double s_exact = s;
-                double rate_exact = rate;
+                // An edge may lie within the piece: the exact piece finds it (rare).
                 const TetherLaw law = exact_law(t, gravity);
-                const HandlePath path{0.0, u, line.damper_velocity};
-                taut = advance_tether_piece(law, state, s_exact, rate_exact, path, t.step_s / t.pieces, hysteresis) ||
+                const HandlePath path{0.0f, u, line.damper_velocity};
+                taut = advance_tether_piece(law, state, s, rate, path, t.step_s / static_cast<float>(t.pieces),
+                                            hysteresis) ||
                        taut;
-                s = static_cast<float>(s_exact);
-                rate = static_cast<float>(rate_exact);
                 continue;
             }
             s = y + origin;

@@ -12,7 +12,7 @@
 // that did not turn while heading for an edge, cannot have touched that edge: the motion
 // was monotone toward it, or it turned away from it. Every other piece of a piecewise law
 // (it ends beyond an edge, or it turned while heading for one, or it started at rest) is
-// redone from its start by the exact double-precision piece of tether_law.cpp, which
+// redone from its start by the exact piece of tether_law.cpp (float too), which
 // locates the crossing and switches region there. That happens about twice per swing
 // through an edge; a law with one region (no play, k_pos = k_neg) never needs it.
 //
@@ -37,9 +37,9 @@ struct HandleLine {
 [[nodiscard]] PreparedTether prepare_tether(const TetherLaw& law) noexcept;
 
 // The pieces and the propagators of every region for steps of step_s seconds (> 0).
-void prepare_pieces(PreparedTether& t, double step_s) noexcept;
+void prepare_pieces(PreparedTether& t, float step_s) noexcept;
 
-// The prepared law in double, with the given gravity (the law's own, or the handle's frame:
+// The prepared law as tether_law.hpp's, with the given gravity (the law's own, or the handle's frame:
 // control_law_dynamic.cpp), for the exact piece and the instantaneous reaction.
 [[nodiscard]] TetherLaw exact_law(const PreparedTether& t, float gravity) noexcept;
 
@@ -71,7 +71,7 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     state.stretch = s;
     state.velocity = rate + u;
     // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
-    const float h = static_cast<float>(t.step_s);
+    const float h = t.step_s;
     return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
 }
 

@@ -48,7 +48,14 @@ MassState textbook(const SpringDamper& s, MassState x, double t) {
     return {static_cast<double>(y), static_cast<double>(v)};
 }
 
-TEST(TetherStep, MatchesTheTextbookInEveryRegime) {
+// The worst error of tether_step<T> against the textbook over 20 000 random (m, k, c, f, h)
+// across all regimes, in units of the motion's own scale (position, velocity): the step's
+// state rounds to T, so the textbook (double) is compared with what T can hold.
+template <typename T>
+void expect_textbook(double position_tolerance, double velocity_tolerance, double equilibrium_rounding,
+                     double phase_rounding) {
+    using Spring = detail::BasicSpringDamper<T>;
+    using State = detail::BasicMassState<T>;
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> unit(0, 1);
     auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
@@ -60,19 +67,50 @@ TEST(TetherStep, MatchesTheTextbookInEveryRegime) {
         const double zeta = i % 7 == 0 ? 0.0 : (i % 13 == 0 ? 1.0 : log_uniform(1e-3, 1e3));
         s.damping = 2 * zeta * s.mass * (s.stiffness > 0 ? w0 : log_uniform(1e-2, 1e3));
         s.force = (unit(rng) - 0.5) * 2e4;
-        const MassState x{(unit(rng) - 0.5) * 2e4, (unit(rng) - 0.5) * 2e5};
-        const double h = log_uniform(1e-5, 2e-2);
-        const MassState got = detail::tether_step(s, x, h);
+        MassState x{(unit(rng) - 0.5) * 2e4, (unit(rng) - 0.5) * 2e5};
+        double h = log_uniform(1e-5, 2e-2);
+        // The parameters as T holds them, so that the textbook solves the same system.
+        const Spring st{static_cast<T>(s.mass), static_cast<T>(s.stiffness), static_cast<T>(s.damping),
+                        static_cast<T>(s.force)};
+        s = {st.mass, st.stiffness, st.damping, st.force};
+        const State xt{static_cast<T>(x.position), static_cast<T>(x.velocity)};
+        x = {xt.position, xt.velocity};
+        h = static_cast<T>(h);
+        const State got = detail::tether_step<T>(st, xt, static_cast<T>(h));
         const MassState want = textbook(s, x, h);
-        // Both solutions shift to the equilibrium f/k: rounding there is ~1e-16·|f/k|.
+        // Both solutions shift to the equilibrium f/k: rounding there is eps·|f/k|.
         const double far = s.stiffness > 0 ? std::fabs(s.force / s.stiffness) : 0.0;
-        const double scale_y = std::fabs(x.position) + std::fabs(x.velocity) * h + std::fabs(want.position) + 1e-7 * far + 1;
-        const double scale_v = std::fabs(x.velocity) + std::fabs(want.velocity) + std::fabs(s.force / s.mass) * h + 1;
-        ASSERT_NEAR(got.position, want.position, 1e-8 * scale_y)
+        // And the angle turned, θ = ω0·h, is a T of its own rounding: the phase is off by
+        // phase_rounding·θ, the state by that times the swing's amplitude (of y, of ẏ).
+        const double w = std::sqrt(s.stiffness / s.mass);
+        const double amplitude = s.stiffness > 0 ? std::hypot(x.position - s.force / s.stiffness, x.velocity / w) : 0.0;
+        const double phase = phase_rounding * w * h * amplitude;
+        const double scale_y = std::fabs(x.position) + std::fabs(x.velocity) * h + std::fabs(want.position) +
+                               (equilibrium_rounding * far + phase) / position_tolerance + 1;
+        const double scale_v = std::fabs(x.velocity) + std::fabs(want.velocity) + std::fabs(s.force / s.mass) * h +
+                               phase * w / velocity_tolerance + 1;
+        ASSERT_NEAR(got.position, want.position, position_tolerance * scale_y)
             << "m=" << s.mass << " k=" << s.stiffness << " c=" << s.damping << " h=" << h;
-        ASSERT_NEAR(got.velocity, want.velocity, 1e-7 * scale_v)
+        ASSERT_NEAR(got.velocity, want.velocity, velocity_tolerance * scale_v)
             << "m=" << s.mass << " k=" << s.stiffness << " c=" << s.damping << " h=" << h;
     }
+}
+
+TEST(TetherStep, MatchesTheTextbookInEveryRegime) {
+    // Double (the paddle's contact): 1e-8 and 1e-7 of the motion's scale, 1e-15 of f/k.
+    expect_textbook<double>(1e-8, 1e-7, 1e-15, 0.0);
+}
+
+TEST(TetherStep, MatchesTheTextbookInEveryRegimeInFloat) {
+    // Float (the control laws'): float's epsilon is 2^-24 = 6e-8, and the closed form takes
+    // a dozen roundings (an exponential, a sine and a cosine of a few ulps each, the
+    // equilibrium's shift), so tens of eps of the motion's scale: 3e-6 and 1e-5 (the double
+    // bounds are 1e8·2^-53 and 1e9·2^-53 alike). The shift to the equilibrium f/k rounds by
+    // eps·|f/k|: 2e-7 of it. A spring with ω0²h² < 1e-5 is held at its starting force
+    // (kFreeLimit: 2e-6 of the motion at most). The angle θ = ωd·h comes from float k/m, a
+    // square root and a product, and its sine from a fraction of a turn: its rounding is a
+    // few ulps of θ, 2^-21 (four ulps at the bottom of a binade) of it.
+    expect_textbook<float>(3e-6, 1e-5, 2e-7, 0x1p-21);
 }
 
 TEST(TetherStep, OneLongStepIsManyShortOnes) {
@@ -150,6 +188,37 @@ TEST(TetherCrossing, LeavingTheLevelIsNotACrossingComingBackIs) {
     // From rest on the level with a force pushing off it (gravity on a slack tether).
     const SpringDamper falling{m, 0, 0, -10};
     EXPECT_FALSE(detail::tether_crossing(falling, {0, 0}, 0, 1.0, t));
+}
+
+TEST(TetherCrossing, FindsTheCrossingOfASineInFloat) {
+    // The control laws' precision: the bracket closes to 2^-20 of the step, and the motion is
+    // evaluated to a few float ulps of its amplitude (y = A·sin ωt, slope A·ω·cos ωt), which
+    // moves the root by a few eps/(ω·cos ωt): 1e-6/ω + 2^-20·h bounds both at these levels
+    // (cos ωt >= 0.66). The graze and the return are located as well, within the same bound
+    // scaled by how flat the motion is there (1/cos: 1.8 at 100 of 120).
+    using detail::MassStateF;
+    using detail::SpringDamperF;
+    const float m = 1e-3f, k = 4.0f;
+    const double w = std::sqrt(static_cast<double>(k) / static_cast<double>(m)), a = 800;
+    const SpringDamperF s{m, k, 0, 0};
+    const float h = static_cast<float>(1.0 / w);
+    float t = 0;
+    for (const double level : {1.0, 300.0, 600.0}) {
+        ASSERT_TRUE(detail::tether_crossing(s, MassStateF{0, static_cast<float>(a * w)}, static_cast<float>(level), h, t))
+            << level;
+        EXPECT_NEAR(t, std::asin(level / a) / w, 1e-6 / w + 0x1p-20 * h) << level;
+    }
+    EXPECT_FALSE(detail::tether_crossing(s, MassStateF{0, static_cast<float>(a * w)}, 700.0f, h, t));
+    EXPECT_FALSE(detail::tether_crossing(s, MassStateF{0, static_cast<float>(a * w)}, -600.0f, h, t));
+    // A graze up through 100 and back within one step, and from the level the return.
+    const double a2 = 120;
+    const float h3 = static_cast<float>(3.0 / w);
+    ASSERT_TRUE(detail::tether_crossing(s, MassStateF{0, static_cast<float>(a2 * w)}, 100.0f, h3, t));
+    EXPECT_NEAR(t, std::asin(100 / a2) / w, 2 * (1e-6 / w + 0x1p-20 * h3));
+    EXPECT_FALSE(detail::tether_crossing(s, MassStateF{0, static_cast<float>(a2 * w)}, 121.0f, h3, t));
+    const float h35 = static_cast<float>(3.5 / w);
+    ASSERT_TRUE(detail::tether_crossing(s, MassStateF{0, 5000}, 0.0f, h35, t));
+    EXPECT_NEAR(t, kPiD / w, 1e-6 / w + 0x1p-20 * h35);
 }
 
 // --- energy over a minute ---------------------------------------------------------------------
