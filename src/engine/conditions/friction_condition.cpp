@@ -72,7 +72,7 @@ static_assert(offsetof(SlotConditionBlock, pos_coefficient) == 0 && offsetof(Slo
 
 // A block's law for its values at tick period dt_s: K = min(max(2b/T, f / kMaxPresliding),
 // cap), Z = f/K (presliding_stiffness), in float.
-[[gnu::cold, gnu::noinline]] void remember_law(FrictionBlockLaw& law, const EngineConfig& config, float dt_s,
+[[gnu::cold]] void remember_law(FrictionBlockLaw& law, const EngineConfig& config, float dt_s,
                                                const SlotConditionBlock& b) noexcept {
     law = FrictionBlockLaw{};
     std::memcpy(law.key, &b, sizeof law.key);

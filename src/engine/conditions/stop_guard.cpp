@@ -22,10 +22,9 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, float dt_s) noexcept {
     t.count = config.sensor_step;
     t.min_speed = t.gain_velocity * t.count * t.inverse_dt;
     t.quick_stop = 2.0f * fast_speed(t);
-    // (A tick is at least 1 µs, so both fit in 16 bits; the cap only makes that explicit.)
-    const auto ticks = [](float n) { return static_cast<int16_t>(n < 32766.0f ? static_cast<int32_t>(n) + 1 : 32767); };
-    t.hold_off = ticks(3.0f * kStopGuardTime * t.inverse_dt);
-    t.settle = ticks(kStopGuardTime * t.inverse_dt);
+    // (A tick is at least 1 µs, so both fit in 16 bits: at most 3τ/T + 1 = 9001.)
+    t.hold_off = static_cast<int16_t>(static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1);
+    t.settle = static_cast<int16_t>(static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1);
     return t;
 }
 
