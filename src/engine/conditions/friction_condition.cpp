@@ -90,7 +90,7 @@ static_assert(offsetof(SlotConditionBlock, pos_coefficient) == 0 && offsetof(Slo
         law.damping = -stiffness * kBristleDampingTime;
     }
     law.limits = guard_limits(magnitude, pos, neg);
-    law.lean = b.offset == 0 && b.deadband == 0 && law.limits.resists && law.inverse_presliding > 0;
+    law.eligible = b.offset == 0 && b.deadband == 0 && law.limits.resists && law.inverse_presliding > 0;
 }
 
 // The lean way (friction_condition below) is a second copy of a block's work, about 1.3 KB
@@ -194,13 +194,19 @@ struct EffectTick {
 // them in memory for it.)
 [[gnu::noinline]] float render_block_out_of_line(const EffectTick e, FrictionState& state, const SlotConditionBlock& b,
                                                  FrictionBlock& block, int a) noexcept {
-    return render_block(e, state, b, block, a);
+    const float f = render_block(e, state, b, block, a);
+    block.law.lean = block.law.eligible && block.bristle.primed;  // (primed at its first tick)
+    return f;
 }
 
 // The block's law, worked out again when its block changed.
-[[gnu::always_inline]] inline void keep_law(FrictionBlockLaw& law, const ConditionContext& c, const FrictionState& state,
+[[gnu::always_inline]] inline void keep_law(FrictionBlock& block, const ConditionContext& c, const FrictionState& state,
                                             const SlotConditionBlock& b) noexcept {
-    if (!law_is_for(law, b)) remember_law(law, *c.config, state.tick_dt, b);
+    FrictionBlockLaw& law = block.law;
+    if (!law_is_for(law, b)) {
+        remember_law(law, *c.config, state.tick_dt, b);
+        law.lean = law.eligible && block.bristle.primed;
+    }
 }
 
 }  // namespace
@@ -237,7 +243,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
             const int a = axis_index(p.axes[i]);
             const SlotConditionBlock& b = p.conditions[i];
             FrictionBlock& block = state.block[i];
-            keep_law(block.law, c, state, b);
+            keep_law(block, c, state, b);
             force[a] += render_block(e, state, b, block, a);
         }
         state.others_known = e.others_known;
@@ -248,13 +254,14 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const SlotConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
         FrictionBlockLaw& law = block.law;
-        keep_law(law, c, state, b);
+        keep_law(block, c, state, b);
         Bristle& bristle = block.bristle;
         const float position = c.position[a];
         // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
         // finite only where the position and the deflection are.)
         const float dx = position - bristle.anchor;
-        if (!law.lean || !bristle.primed || !std::isfinite(dx + bristle.deflection)) {
+        // (law.lean: the block eligible and its bristle primed.)
+        if (!law.lean || !std::isfinite(dx + bristle.deflection)) {
             force[a] += render_block_out_of_line(e, state, b, block, a);
             continue;
         }

@@ -26,7 +26,10 @@ struct FrictionBlockLaw {
     float damping = 0.0f;             // -K·kBristleDampingTime: the microdamping's σ1
     GuardLimits limits{};             // the stop guard's (stop_guard.hpp); limits.f = max(|pos|, |neg|)
     // A still surface (offset 0), no deadband, both coefficients >= 0 and a presliding zone:
-    // the block may take friction_condition's lean way.
+    // the block may take friction_condition's lean way once its bristle is primed.
+    bool eligible = false;
+    // eligible and the bristle primed (one test on the lean way): set with the law and after
+    // the block's general way (a bristle is primed there, and only reset with the law).
     bool lean = false;
 };
 
