@@ -271,7 +271,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         // there), bit for bit the same force.
         const bool at_rest = position == bristle.anchor;
         bristle.anchor = position;
-        float z = move_bristle<true>(bristle, dx, law.inverse_presliding);
+        float z = move_bristle<true, true>(bristle, dx, law.inverse_presliding);
         const float others = c.others_force[a];
         const float pushed = others * e.inverse_gain;
         const float pos = law.pos, neg = law.neg;

@@ -138,17 +138,19 @@ struct PreslidingRule {
 // deflection z. Single precision (issue 14): z is kept in float anyway, and a step's travel
 // is a few counts. kFinite: the caller knows dx and z finite, and so is the new z (e^-u is
 // in [0, 1] for any u >= 0, inf included), so the check for a non-finite z is left out.
-template <bool kFinite = false>
+// kZone: the caller knows inverse_presliding > 0, so that test is left out.
+template <bool kFinite = false, bool kZone = false>
 [[nodiscard, gnu::always_inline]] inline float move_bristle(Bristle& b, float dx, float inverse_presliding) noexcept {
     float z = b.deflection;
+    const bool zone = kZone || inverse_presliding > 0;
     // Fully slid in the direction of travel, the exact update leaves z at ±1 (the common case
     // while sliding): no exponential. dx = 0 (or NaN) leaves z as it is.
     if (dx > 0) {
         if (z == 1.0f) return z;
-        z = inverse_presliding > 0 ? 1.0f + (z - 1.0f) * exp_of_travel(dx * inverse_presliding) : 1.0f;
+        z = zone ? 1.0f + (z - 1.0f) * exp_of_travel(dx * inverse_presliding) : 1.0f;
     } else if (dx < 0) {
         if (z == -1.0f) return z;
-        z = inverse_presliding > 0 ? -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding) : -1.0f;
+        z = zone ? -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding) : -1.0f;
     }
     if (!kFinite && !std::isfinite(z)) z = 0.0f;  // a non-finite slip or hold: forget rather than output NaN
     b.deflection = z;
