@@ -26,6 +26,8 @@
 // dependence on the estimated velocity, with a slope f/deadband at the band's edge; keep it
 // 0 unless a free zone around rest is wanted.
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include "conditions/condition_math.hpp"
 
@@ -45,39 +47,50 @@ float deadband_gate(float relative_speed, float deadband) noexcept {
 
 // What every block of a friction shares at tick period dt_s; the blocks' laws are worked
 // out again at this period.
-void remember_tick(FrictionState& state, const EngineConfig& config, double dt_s) noexcept {
+void remember_tick(FrictionState& state, const EngineConfig& config, float dt_s) noexcept {
     state.guard_tick = stop_guard_tick(config, dt_s);
-    const PreslidingRule rule = presliding_rule(config, dt_s);
-    state.passive = static_cast<float>(rule.passive);
-    state.cap = static_cast<float>(rule.cap);
-    state.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
-    state.tick_dt_s = dt_s;
+    state.inverse_fade_speed = 1.0f / (kBristleDampingFade * config.velocity_ref);
+    state.tick_dt = dt_s;
     for (FrictionBlock& block : state.block) block.law = FrictionBlockLaw{};
 }
 
-// A block's law for its coefficients: presliding_stiffness in float, K = min(max(2b/T,
-// f / kMaxPresliding), cap), Z = f/K.
-void remember_law(FrictionBlockLaw& law, const FrictionState& state, int32_t pos_coefficient,
-                  int32_t neg_coefficient) noexcept {
-    constexpr float kMinStiffnessPerForce = static_cast<float>(1.0 / kMaxPresliding);
+// A block's law is keyed by the slot's block's six 16-bit values, its first 12 bytes.
+static_assert(offsetof(SlotConditionBlock, pos_coefficient) == 0 && offsetof(SlotConditionBlock, neg_coefficient) == 2 &&
+              offsetof(SlotConditionBlock, offset) == 4 && offsetof(SlotConditionBlock, pos_saturation) == 6 &&
+              offsetof(SlotConditionBlock, neg_saturation) == 8 && offsetof(SlotConditionBlock, deadband) == 10 &&
+              sizeof(FrictionBlockLaw::key) == 12);
+
+// Whether the law was worked out for this block: two loads and one test.
+[[gnu::always_inline]] inline bool law_is_for(const FrictionBlockLaw& law, const SlotConditionBlock& b) noexcept {
+    uint64_t low = 0, kept_low = 0;
+    uint32_t high = 0;
+    std::memcpy(&low, &b, sizeof low);
+    std::memcpy(&high, reinterpret_cast<const unsigned char*>(&b) + sizeof low, sizeof high);
+    std::memcpy(&kept_low, law.key, sizeof kept_low);
+    return ((low ^ kept_low) | (high ^ law.key[2])) == 0;
+}
+
+// A block's law for its values at tick period dt_s: K = min(max(2b/T, f / kMaxPresliding),
+// cap), Z = f/K (presliding_stiffness), in float.
+[[gnu::cold]] void remember_law(FrictionBlockLaw& law, const EngineConfig& config, float dt_s,
+                                               const SlotConditionBlock& b) noexcept {
     law = FrictionBlockLaw{};
-    law.pos_coefficient = pos_coefficient;
-    law.neg_coefficient = neg_coefficient;
-    const float pos = static_cast<float>(pos_coefficient), neg = static_cast<float>(neg_coefficient);
+    std::memcpy(law.key, &b, sizeof law.key);
+    const float pos = static_cast<float>(b.pos_coefficient), neg = static_cast<float>(b.neg_coefficient);
     law.pos = pos;
     law.neg = neg;
-    // (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must be
-    // honoured, and nothing here is NaN.)
-    law.magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
-    if (law.magnitude > 0) {
-        const float guarded = law.magnitude * kMinStiffnessPerForce;
-        float stiffness = state.passive > guarded ? state.passive : guarded;
-        if (stiffness > state.cap) stiffness = state.cap;
+    law.pos_limit = static_cast<float>(b.pos_saturation);
+    law.neg_limit = static_cast<float>(b.neg_saturation);
+    // (Comparisons rather than std::fmax: a library call where NaNs must be honoured.)
+    const float magnitude = std::fabs(pos) > std::fabs(neg) ? std::fabs(pos) : std::fabs(neg);
+    if (magnitude > 0) {
+        const float stiffness = presliding_stiffness(presliding_rule(config, dt_s), magnitude);
         law.stiffness = stiffness;
-        law.inverse_presliding = stiffness / law.magnitude;
-        law.damping = -stiffness * static_cast<float>(kBristleDampingTime);
+        law.inverse_presliding = stiffness / magnitude;
+        law.damping = -stiffness * kBristleDampingTime;
     }
-    law.limits = guard_limits(law.magnitude, pos, neg);
+    law.limits = guard_limits(magnitude, pos, neg);
+    law.eligible = b.offset == 0 && b.deadband == 0 && law.limits.resists && law.inverse_presliding > 0;
 }
 
 // The lean way (friction_condition below) is a second copy of a block's work, about 1.3 KB
@@ -133,7 +146,7 @@ struct EffectTick {
     const bool first = !bristle.primed;
     const bool at_rest = (first || position == bristle.anchor) && still_surface;
     float z = advance(bristle, position, surface_speed * dt_s, law.inverse_presliding);
-    const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
+    const float pos_limit = law.pos_limit, neg_limit = law.neg_limit;
     const float others = c.others_force != nullptr    ? c.others_force[a]
                          : c.applied_force != nullptr ? c.applied_force[a] - block.guard.own
                                                       : 0.0f;
@@ -167,7 +180,7 @@ struct EffectTick {
         const float guarded =
             observers != nullptr
                 ? guard_stop(g, observers->view[a], bristle, guard, position, others, f, law.limits, pos, neg)
-                : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others, f, law.magnitude, pos,
+                : guard_stop_on_line(g, bristle, guard, position, c.applied_force[a], others, f, law.limits.f, pos,
                                      neg);
         const float side = guarded >= 0 ? neg_limit : pos_limit;
         f = guarded > side ? side : (guarded < -side ? -side : guarded);
@@ -177,17 +190,22 @@ struct EffectTick {
 }
 
 // The same out of line, for the lean loop's rare other block (the first tick, a NaN): the
-// lean loop keeps its registers.
-[[gnu::noinline]] float render_block_out_of_line(const EffectTick& e, FrictionState& state, const SlotConditionBlock& b,
+// lean loop keeps its registers. (The tick's values by value: the lean loop need not keep
+// them in memory for it.)
+[[gnu::noinline]] float render_block_out_of_line(const EffectTick e, FrictionState& state, const SlotConditionBlock& b,
                                                  FrictionBlock& block, int a) noexcept {
-    return render_block(e, state, b, block, a);
+    const float f = render_block(e, state, b, block, a);
+    block.law.lean = block.law.eligible && block.bristle.primed;  // (primed at its first tick)
+    return f;
 }
 
-// The block's law, worked out again when its coefficients changed.
-[[gnu::always_inline]] inline void keep_law(FrictionBlockLaw& law, const FrictionState& state,
+// The block's law, worked out again when its block changed.
+[[gnu::always_inline]] inline void keep_law(FrictionBlock& block, const ConditionContext& c, const FrictionState& state,
                                             const SlotConditionBlock& b) noexcept {
-    if (((law.pos_coefficient ^ b.pos_coefficient) | (law.neg_coefficient ^ b.neg_coefficient)) != 0) {
-        remember_law(law, state, b.pos_coefficient, b.neg_coefficient);
+    FrictionBlockLaw& law = block.law;
+    if (!law_is_for(law, b)) {
+        remember_law(law, *c.config, state.tick_dt, b);
+        law.lean = law.eligible && block.bristle.primed;
     }
 }
 
@@ -198,10 +216,12 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     // Single precision (issue 14); what is per tick or per command rather than per block
     // and tick is worked out once (remember_tick, remember_law).
     FrictionState& state = c.state->friction;
-    if (state.tick_dt_s != c.dt_s) remember_tick(state, *c.config, c.dt_s);
+    // (The context's tick length is double while the engine's is: its one conversion.)
+    const float dt_s = static_cast<float>(c.dt_s);
+    if (state.tick_dt != dt_s) remember_tick(state, *c.config, dt_s);
     EffectTick e;
     e.context = &c;
-    e.dt_s = static_cast<float>(c.dt_s);
+    e.dt_s = dt_s;
     e.output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     // The others' force is kept in this friction's units (before its gain and the device's),
     // so that a gain change, which scales the friction too, is not taken for a push easing.
@@ -213,7 +233,8 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     // The common friction (issue 14, friction's fifth pass): on the device's axes, with the
     // engine's observers, the others' force known, the guard on and a tick to damp over.
     // Its blocks take the lean way below unless one of them needs more (render_block).
-    const bool lean = kLeanWay && c.observers != nullptr && e.others_known && e.guarding && e.dt_s > 0;
+    // (The guard on implies a tick to damp over: stop_guard_tick.)
+    const bool lean = kLeanWay && c.observers != nullptr && e.others_known && e.guarding;
     const int blocks = p.axis_count;
     if (!lean) {
         // A friction with a direction, or without the guard (no device_mass): every block
@@ -222,7 +243,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
             const int a = axis_index(p.axes[i]);
             const SlotConditionBlock& b = p.conditions[i];
             FrictionBlock& block = state.block[i];
-            keep_law(block.law, state, b);
+            keep_law(block, c, state, b);
             force[a] += render_block(e, state, b, block, a);
         }
         state.others_known = e.others_known;
@@ -233,14 +254,14 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const SlotConditionBlock& b = p.conditions[i];
         FrictionBlock& block = state.block[i];
         FrictionBlockLaw& law = block.law;
-        keep_law(law, state, b);
+        keep_law(block, c, state, b);
         Bristle& bristle = block.bristle;
         const float position = c.position[a];
         // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
         // finite only where the position and the deflection are.)
         const float dx = position - bristle.anchor;
-        if ((b.offset | b.deadband) != 0 || !law.limits.resists || !(law.inverse_presliding > 0) || !bristle.primed ||
-            !std::isfinite(dx + bristle.deflection)) {
+        // (law.lean: the block eligible and its bristle primed.)
+        if (!law.lean || !std::isfinite(dx + bristle.deflection)) {
             force[a] += render_block_out_of_line(e, state, b, block, a);
             continue;
         }
@@ -250,11 +271,11 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         // there), bit for bit the same force.
         const bool at_rest = position == bristle.anchor;
         bristle.anchor = position;
-        float z = move_bristle<true>(bristle, dx, law.inverse_presliding);
+        float z = move_bristle<true, true>(bristle, dx, law.inverse_presliding);
         const float others = c.others_force[a];
         const float pushed = others * e.inverse_gain;
         const float pos = law.pos, neg = law.neg;
-        const float pos_limit = static_cast<float>(b.pos_saturation), neg_limit = static_cast<float>(b.neg_saturation);
+        const float pos_limit = law.pos_limit, neg_limit = law.neg_limit;
         if (at_rest && pushed != block.others && e.held_before) {
             z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
         }
@@ -266,9 +287,10 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         const float limit = toward_positive ? pos_limit : neg_limit;
         f = f > limit ? limit : (f < -limit ? -limit : f);
         StopGuard& g = block.guard;
-        // (A copy: the guard's stores to g cannot then be taken for stores to the view.)
-        const ObserverView view = observers.view[a];
-        const float guarded = guard_stop(g, view, bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
+        // (The view read in place: its fields are floats and a byte read once, which the
+        // guard's stores to g cannot change, so each is loaded once and only where needed.)
+        const float guarded =
+            guard_stop(g, observers.view[a], bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
         const float side = guarded >= 0 ? neg_limit : pos_limit;
         f = guarded > side ? side : (guarded < -side ? -side : guarded);
         remember_output(g, f, e.output_gain);

@@ -1,4 +1,5 @@
-// The Dahl bristle and the texture bump; friction_model.hpp has the reasoning.
+// The Dahl bristle and the texture bump; friction_model.hpp has the reasoning. Single
+// precision (issue 14).
 #include "conditions/friction_model.hpp"
 
 #include <cmath>
@@ -6,29 +7,40 @@
 
 namespace feel::detail {
 
-PreslidingRule presliding_rule(const EngineConfig& config, double dt_s) noexcept {
+namespace {
+
+// cos θ for |θ| <= π/2 by its Taylor polynomial to θ¹² (the next term is below
+// (π/2)¹⁴/14! = 6.4e-9, a tenth of a float ulp of 1/2), in θ² by Horner's rule.
+float cos_within_half_pi(float theta) noexcept {
+    const float t = theta * theta;
+    constexpr float c2 = -1.0f / 2, c4 = 1.0f / 24, c6 = -1.0f / 720, c8 = 1.0f / 40320;
+    constexpr float c10 = -1.0f / 3628800, c12 = 1.0f / 479001600;
+    return 1.0f + t * (c2 + t * (c4 + t * (c6 + t * (c8 + t * (c10 + t * c12)))));
+}
+
+}  // namespace
+
+PreslidingRule presliding_rule(const EngineConfig& config, float dt_s) noexcept {
     PreslidingRule rule;
-    if (dt_s > 0) rule.passive = 2.0 * static_cast<double>(config.device_damping) / dt_s;
-    rule.cap = kMaxForcePerCount / (2.0 * static_cast<double>(config.sensor_step));
+    if (dt_s > 0) rule.passive = 2.0f * config.device_damping / dt_s;
+    rule.cap = kMaxForcePerCount / (2.0f * config.sensor_step);
     return rule;
 }
 
-double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept {
-    if (!(f > 0)) return 0.0;
+float presliding_distance(const EngineConfig& config, float dt_s, float f) noexcept {
+    if (!(f > 0)) return 0.0f;
     return f / presliding_stiffness(presliding_rule(config, dt_s), f);
 }
 
-double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept {
-    return bristle_damping(static_cast<float>(stiffness), static_cast<float>(z), static_cast<float>(velocity),
-                           1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref));
-}
-
-double texture_bump(double s, double spacing, double width) noexcept {
-    if (!(spacing > 0) || !(width > 0)) return 0.0;
-    const double r = s - spacing * std::round(s / spacing);
-    const double half = width / 2.0;
-    if (r > half || r < -half) return 0.0;
-    return 0.5 * (1.0 + std::cos(2.0 * std::numbers::pi * r / width));
+float texture_bump(float s, int32_t spacing, float width) noexcept {
+    if (!(spacing > 0) || !(width > 0)) return 0.0f;
+    const float step = static_cast<float>(spacing);
+    // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
+    const float r = s - step * std::round(s / step);
+    const float half = width / 2.0f;
+    if (r > half || r < -half) return 0.0f;
+    const float c = cos_within_half_pi(std::numbers::pi_v<float> * r / width);
+    return c * c;  // (1 + cos 2θ)/2
 }
 
 }  // namespace feel::detail

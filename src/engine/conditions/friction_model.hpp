@@ -63,14 +63,17 @@
 
 namespace feel::detail {
 
+// Single precision (issue 14): the model's constants and every computation below are float,
+// so that the Cortex-M4F computes it in its FPU (a double operation there is a library call).
+
 // The presliding distance is at most this, position units (5% of the travel).
-inline constexpr double kMaxPresliding = 1000.0;
+inline constexpr float kMaxPresliding = 1000.0f;
 // One sensor count moves a bristle's force by at most this, force units (2% of full scale).
-inline constexpr double kMaxForcePerCount = 200.0;
+inline constexpr float kMaxForcePerCount = 200.0f;
 // Microdamping: σ1 = σ0 · this, s.
-inline constexpr double kBristleDampingTime = 0.002;
+inline constexpr float kBristleDampingTime = 0.002f;
 // Microdamping fades out above this fraction of EngineConfig::velocity_ref.
-inline constexpr double kBristleDampingFade = 0.1;
+inline constexpr float kBristleDampingFade = 0.1f;
 
 // A Dahl bristle on one line of motion. Zero-initialized it is relaxed and not yet primed;
 // the first advance() only records where the handle is.
@@ -81,21 +84,23 @@ struct Bristle {
 };
 
 // The square of the speed (in fade speeds) beyond which the microdamping is left out.
-inline constexpr double kDampingFadeCutoff = 36.0;
+inline constexpr float kDampingFadeCutoff = 36.0f;
 
 // What the presliding stiffness K of every bristle of a tick depends on but f: the
 // passivity bound 2b/T and the sensor-resolution cap, force units per position unit. One
 // rule per tick saves the divisions per block (issue 14: friction's cost per effect).
 struct PreslidingRule {
-    double passive = 0.0;  // 2b/T, 0 when there is no tick to judge by
-    double cap = 0.0;      // kMaxForcePerCount / (2·sensor_step)
+    float passive = 0.0f;  // 2b/T, 0 when there is no tick to judge by
+    float cap = 0.0f;      // kMaxForcePerCount / (2·sensor_step)
 };
 
-[[nodiscard]] PreslidingRule presliding_rule(const EngineConfig& config, double dt_s) noexcept;
+[[nodiscard]] PreslidingRule presliding_rule(const EngineConfig& config, float dt_s) noexcept;
 
 // K = min(max(2b/T, f / kMaxPresliding), cap) for a friction of magnitude f > 0.
-[[nodiscard]] inline double presliding_stiffness(const PreslidingRule& rule, double f) noexcept {
-    double stiffness = f * (1.0 / kMaxPresliding);
+// (Comparisons rather than std::fmax/fmin: those are library calls where NaNs must be
+// honoured, and nothing here is NaN.)
+[[nodiscard]] inline float presliding_stiffness(const PreslidingRule& rule, float f) noexcept {
+    float stiffness = f * (1.0f / kMaxPresliding);
     if (rule.passive > stiffness) stiffness = rule.passive;
     return stiffness > rule.cap ? rule.cap : stiffness;
 }
@@ -103,7 +108,12 @@ struct PreslidingRule {
 // The presliding distance Z, position units, for a friction of magnitude f (force units,
 // >= 0) on this device at this tick period (s). 0 for f = 0. dt_s <= 0 uses the guards
 // only (no tick to judge passivity by).
-[[nodiscard]] double presliding_distance(const EngineConfig& config, double dt_s, double f) noexcept;
+[[nodiscard]] float presliding_distance(const EngineConfig& config, float dt_s, float f) noexcept;
+// For a caller whose tick length is still double (ConditionContext::dt_s): the conversion
+// is the caller's; drop this once no caller passes a double.
+[[nodiscard]] inline float presliding_distance(const EngineConfig& config, double dt_s, float f) noexcept {
+    return presliding_distance(config, static_cast<float>(dt_s), f);
+}
 
 // e^-u for the travel u >= 0 of one tick in presliding distances. A tick's travel is a few
 // counts and the zone tens to hundreds (docs/stability.md), so u is mostly below 1/4: there
@@ -128,17 +138,19 @@ struct PreslidingRule {
 // deflection z. Single precision (issue 14): z is kept in float anyway, and a step's travel
 // is a few counts. kFinite: the caller knows dx and z finite, and so is the new z (e^-u is
 // in [0, 1] for any u >= 0, inf included), so the check for a non-finite z is left out.
-template <bool kFinite = false>
+// kZone: the caller knows inverse_presliding > 0, so that test is left out.
+template <bool kFinite = false, bool kZone = false>
 [[nodiscard, gnu::always_inline]] inline float move_bristle(Bristle& b, float dx, float inverse_presliding) noexcept {
     float z = b.deflection;
+    const bool zone = kZone || inverse_presliding > 0;
     // Fully slid in the direction of travel, the exact update leaves z at ±1 (the common case
     // while sliding): no exponential. dx = 0 (or NaN) leaves z as it is.
     if (dx > 0) {
         if (z == 1.0f) return z;
-        z = inverse_presliding > 0 ? 1.0f + (z - 1.0f) * exp_of_travel(dx * inverse_presliding) : 1.0f;
+        z = zone ? 1.0f + (z - 1.0f) * exp_of_travel(dx * inverse_presliding) : 1.0f;
     } else if (dx < 0) {
         if (z == -1.0f) return z;
-        z = inverse_presliding > 0 ? -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding) : -1.0f;
+        z = zone ? -1.0f + (z + 1.0f) * exp_of_travel(-dx * inverse_presliding) : -1.0f;
     }
     if (!kFinite && !std::isfinite(z)) z = 0.0f;  // a non-finite slip or hold: forget rather than output NaN
     b.deflection = z;
@@ -210,10 +222,8 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 
 // The microdamping force of a bristle of presliding stiffness `stiffness` (f/Z, force
 // units per position unit) at deflection z, the handle moving at `velocity` (units/s)
-// relative to the surface.
-[[nodiscard]] double bristle_damping(const EngineConfig& config, double stiffness, double z, double velocity) noexcept;
-// The same with 1 / (kBristleDampingFade·velocity_ref) computed once by the caller, in
-// single precision.
+// relative to the surface, with 1 / (kBristleDampingFade·velocity_ref) computed once by the
+// caller.
 [[nodiscard]] inline float bristle_damping(float stiffness, float z, float velocity, float inverse_fade_speed) noexcept {
     if (!(stiffness > 0) || velocity == 0 || !std::isfinite(velocity)) return 0.0f;
     const float rate = velocity * (1.0f - z * (velocity > 0 ? 1.0f : -1.0f));
@@ -221,8 +231,8 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     const float r = velocity * inverse_fade_speed;
     const float r2 = r * r;
     // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
-    if (r2 > static_cast<float>(kDampingFadeCutoff)) return 0.0f;
-    return -stiffness * static_cast<float>(kBristleDampingTime) * rate * std::exp(-r2);
+    if (r2 > kDampingFadeCutoff) return 0.0f;
+    return -stiffness * kBristleDampingTime * rate * std::exp(-r2);
 }
 
 // The fade exp(-(v/v_d)²) of the microdamping alone, 0 beyond the cutoff: it depends on the
@@ -230,7 +240,7 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 [[nodiscard]] inline float bristle_damping_fade(float velocity, float inverse_fade_speed) noexcept {
     const float r = velocity * inverse_fade_speed;
     const float r2 = r * r;
-    return r2 > static_cast<float>(kDampingFadeCutoff) || !std::isfinite(r2) ? 0.0f : std::exp(-r2);
+    return r2 > kDampingFadeCutoff || !std::isfinite(r2) ? 0.0f : std::exp(-r2);
 }
 
 // bristle_damping on a device axis from what the engine works out once per axis
@@ -250,6 +260,9 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 // r the distance to the nearest center. 1 on top, falling smoothly (zero slope at both
 // ends) to 0 at the bump's edges, so the force has no step entering or leaving a bump;
 // width = spacing (density 10000) makes the bumps touch: a sinusoidal washboard.
-[[nodiscard]] double texture_bump(double s, double spacing, double width) noexcept;
+// Single precision (issue 14): (1 + cos 2θ)/2 = cos²θ with θ = π·r/width in [-π/2, π/2],
+// where cos is its Taylor polynomial to θ¹² (friction_model.cpp): no library call, and the
+// same on every platform.
+[[nodiscard]] float texture_bump(float s, int32_t spacing, float width) noexcept;
 
 }  // namespace feel::detail

@@ -11,19 +11,26 @@
 
 namespace feel::detail {
 
-// What a friction block's law needs that changes only with its coefficients or the tick
-// period, worked out when one of them changes rather than every tick (issue 14: friction's
-// cost per effect).
+// What a friction block's law needs that changes only with its block or the tick period,
+// worked out when one of them changes rather than every tick (issue 14: friction's cost per
+// effect).
 struct FrictionBlockLaw {
-    // The coefficients it was worked out for; INT32_MIN (out of their range): not yet.
-    int32_t pos_coefficient = INT32_MIN;
-    int32_t neg_coefficient = INT32_MIN;
+    // The block it was worked out for: the slot's block's six 16-bit values (its first 12
+    // bytes, friction_condition.cpp's law_is_for), compared in one test. All ones (every value
+    // -1: a saturation or deadband out of its range): not yet.
+    uint32_t key[3] = {~0u, ~0u, ~0u};
     float pos = 0.0f, neg = 0.0f;     // the coefficients as floats
-    float magnitude = 0.0f;           // f = max(|pos|, |neg|)
+    float pos_limit = 0.0f, neg_limit = 0.0f;  // the saturations as floats
     float stiffness = 0.0f;           // the presliding stiffness K (friction_model.hpp)
     float inverse_presliding = 0.0f;  // K / f = 1/Z, 0 when f = 0
     float damping = 0.0f;             // -K·kBristleDampingTime: the microdamping's σ1
-    GuardLimits limits{};             // the stop guard's (stop_guard.hpp)
+    GuardLimits limits{};             // the stop guard's (stop_guard.hpp); limits.f = max(|pos|, |neg|)
+    // A still surface (offset 0), no deadband, both coefficients >= 0 and a presliding zone:
+    // the block may take friction_condition's lean way once its bristle is primed.
+    bool eligible = false;
+    // eligible and the bristle primed (one test on the lean way): set with the law and after
+    // the block's general way (a bristle is primed there, and only reset with the law).
+    bool lean = false;
 };
 
 // One block's memory, kept together (issue 14: one stride through the blocks).
@@ -45,10 +52,13 @@ struct FrictionState {
     FrictionBlock block[kMaxAxes] = {};
     bool others_known = false;
     // What every block shares at this tick period, recomputed only when it changes (issue
-    // 14: friction's cost per effect): the guards' gains (an exp), the presliding rule's
-    // bounds 2b/T and the resolution cap, and the microdamping's 1/fade speed.
+    // 14: friction's cost per effect): the guards' gains (an exp) and the microdamping's
+    // 1/fade speed. (The presliding rule is worked out again with a block's law: rarely.)
     StopGuardTick guard_tick{};
-    float passive = 0.0f, cap = 0.0f, inverse_fade_speed = 0.0f;
+    float inverse_fade_speed = 0.0f;
+    // friction: the tick length (s) the above are for, single precision (issue 14).
+    float tick_dt = -1.0f;
+    // texture: the tick length guard_tick is for (texture_condition.cpp keeps it in double).
     double tick_dt_s = -1.0;
 };
 

@@ -1,17 +1,17 @@
-// The stop guard of friction; stop_guard.hpp has the reasoning.
+// The stop guard of friction; stop_guard.hpp has the reasoning. Single precision (issue 14).
 #include "conditions/stop_guard.hpp"
 
 #include <cmath>
 
 namespace feel::detail {
 
-StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept {
+StopGuardTick stop_guard_tick(const EngineConfig& config, float dt_s) noexcept {
     StopGuardTick t;
     if (!(config.device_mass > 0) || !(dt_s > 0)) return t;
     t.on = true;
     t.mass = config.device_mass;
     t.damping = config.device_damping;
-    t.dt = static_cast<float>(dt_s);
+    t.dt = dt_s;
     t.inverse_dt = 1.0f / t.dt;
     t.dt_per_mass = t.dt / t.mass;
     const float theta = std::exp(-t.dt / kStopGuardTime);
@@ -21,10 +21,10 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept 
     t.gain_external = t.mass * one * one * one * t.inverse_dt * t.inverse_dt;
     t.count = config.sensor_step;
     t.min_speed = t.gain_velocity * t.count * t.inverse_dt;
-    t.fast_speed = 2.0f * t.count / kStopGuardTime;
-    t.quick_stop = 2.0f * t.fast_speed;
-    t.hold_off = static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1;
-    t.settle = static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1;
+    t.quick_stop = 2.0f * fast_speed(t);
+    // (A tick is at least 1 µs, so both fit in 16 bits: at most 3τ/T + 1 = 9001.)
+    t.hold_off = static_cast<int16_t>(static_cast<int32_t>(3.0f * kStopGuardTime * t.inverse_dt) + 1);
+    t.settle = static_cast<int16_t>(static_cast<int32_t>(kStopGuardTime * t.inverse_dt) + 1);
     return t;
 }
 
@@ -55,12 +55,12 @@ bool observe(HandleObserver& o, const StopGuardTick& t, float position, float ap
     return true;
 }
 
-void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
+void observe_axes(AxisObservers& observers, const EngineConfig& config, float dt_s, int64_t t_us,
                   int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
                   int axes) noexcept {
     if (observers.tick_dt_s != dt_s) {
         observers.tick = stop_guard_tick(config, dt_s);
-        observers.inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * config.velocity_ref);
+        observers.inverse_fade_speed = 1.0f / (kBristleDampingFade * config.velocity_ref);
         observers.tick_dt_s = dt_s;
     }
     // Only the device's axes: a friction acts on no other (the rest stay as constructed).

@@ -85,7 +85,7 @@ struct HandleObserver {
     float position = 0.0f;  // observed position, position units
     float velocity = 0.0f;  // observed velocity, units/s
     float external = 0.0f;  // d: the force on the handle the engine did not command, force units
-    int32_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction
+    int16_t agreed = 0;     // ticks in a row the sensed position agreed with the prediction (<= settle)
     bool primed = false;
 };
 
@@ -96,8 +96,8 @@ struct StopGuard {
     float stop_at = 0.0f;   // where the handle was to come to rest
     float direction = 0.0f; // +1 or -1: the way it slides
     float decelerated = 0.0f; // what the friction's force alone could have taken off the velocity
-                              // since the handle last slid faster than StopGuardTick::fast_speed, units/s
-    int32_t hold_off = 0;   // ticks the guard stands aside (it was wrong)
+                              // since the handle last slid faster than fast_speed(), units/s
+    int16_t hold_off = 0;   // ticks the guard stands aside (it was wrong)
     bool sliding = false;   // it moved faster than the observer's noise since it last stopped
     bool stopping = false;  // the last force was the one that brings it to rest
 };
@@ -108,14 +108,23 @@ struct StopGuardTick {
     float gain_position = 0.0f, gain_velocity = 0.0f, gain_external = 0.0f;
     float min_speed = 0.0f;  // the observer's velocity noise: h·count/T
     float count = 0.0f;
-    float fast_speed = 0.0f; // 2 counts over the observer's time constant: its prediction has bite
-    float quick_stop = 0.0f; // 2·fast_speed: how much a free stop may have slowed the handle since
-    int32_t hold_off = 0;
-    int32_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
+    float quick_stop = 0.0f; // 2·fast_speed(): how much a free stop may have slowed the handle since
+    // (16-bit, issue 14's RAM: at most 3τ/T + 1 = 9001 at the shortest tick, 1 µs.)
+    int16_t hold_off = 0;
+    int16_t settle = 0;      // ticks of agreement before the guard trusts the observer (τ)
     bool on = false;         // device_mass known and a tick to observe over
 };
 
-[[nodiscard]] StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept;
+[[nodiscard]] StopGuardTick stop_guard_tick(const EngineConfig& config, float dt_s) noexcept;
+
+// 2 counts over the observer's time constant: the speed at which its prediction has bite.
+// (Worked out where it is read, once per line and tick, rather than kept: issue 14's RAM.)
+[[nodiscard]] inline float fast_speed(const StopGuardTick& t) noexcept { return 2.0f * t.count / kStopGuardTime; }
+// For a caller whose tick length is still double (ConditionContext::dt_s): the conversion
+// is the caller's; drop this once no caller passes a double.
+[[nodiscard]] inline StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept {
+    return stop_guard_tick(config, static_cast<float>(dt_s));
+}
 
 // Advances the observer by one tick: `position` sensed, `applied` the engine's force of the
 // last tick along the line. Returns whether it has a state to judge by (false at its first
@@ -129,23 +138,25 @@ struct ObserverView {
     float external = 0.0f;
     float abs_external = 0.0f;
     float direction = 0.0f;  // the way the observer moves: +1 (v > 0) or -1
-    bool usable = false;     // the guard is on and observe() had a state to judge by
-    bool moving = false;     // |v| >= min_speed: faster than the observer's noise
-    bool fast = false;       // |v| >= fast_speed
-    bool settled = false;    // it agreed with the sensor for τ
+    // What the guard tests, as bits of one byte (one load for every block, issue 14).
+    static constexpr uint8_t kUsable = 1;   // the guard is on and observe() had a state to judge by
+    static constexpr uint8_t kMoving = 2;   // |v| >= min_speed: faster than the observer's noise
+    static constexpr uint8_t kFast = 4;     // |v| >= fast_speed
+    static constexpr uint8_t kSettled = 8;  // it agreed with the sensor for τ
+    uint8_t flags = 0;
 };
 
 [[nodiscard]] inline ObserverView view_of(const HandleObserver& o, bool observed, const StopGuardTick& t) noexcept {
     ObserverView view;
-    view.usable = t.on && observed;
     view.velocity = o.velocity;
     view.external = o.external;
     view.abs_external = std::fabs(o.external);
     const float speed = std::fabs(o.velocity);
     view.direction = o.velocity > 0 ? 1.0f : -1.0f;
-    view.moving = speed >= t.min_speed;
-    view.fast = speed >= t.fast_speed;
-    view.settled = o.agreed >= t.settle;
+    view.flags = static_cast<uint8_t>((t.on && observed ? ObserverView::kUsable : 0) |
+                                      (speed >= t.min_speed ? ObserverView::kMoving : 0) |
+                                      (speed >= fast_speed(t) ? ObserverView::kFast : 0) |
+                                      (o.agreed >= t.settle ? ObserverView::kSettled : 0));
     return view;
 }
 
@@ -165,15 +176,22 @@ struct AxisObservers {
     float damped_way[kMaxAxes] = {};
     float inverse_fade_speed = 0.0f;
     StopGuardTick tick{};
-    double tick_dt_s = -1.0;
+    float tick_dt_s = -1.0f;       // the tick length tick and inverse_fade_speed are for
     int64_t last_t_us = -1;        // the tick last observed
 };
 
 // `t_us` this tick's time, `previous_t_us` the previous tick's (equal at the first tick),
 // `velocity` the engine's estimate.
-void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
+void observe_axes(AxisObservers& observers, const EngineConfig& config, float dt_s, int64_t t_us,
                   int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
                   int axes) noexcept;
+// For a caller whose tick length is still double (Engine::tick): the conversion is the
+// caller's; drop this once no caller passes a double.
+inline void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
+                         int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
+                         int axes) noexcept {
+    observe_axes(observers, config, static_cast<float>(dt_s), t_us, previous_t_us, position, velocity, applied, axes);
+}
 
 // Sets the bristle to hold against `others` (within ±1) and returns that force.
 inline float hold_against(Bristle& bristle, float others, float pos_coefficient, float neg_coefficient) noexcept {
@@ -203,7 +221,8 @@ struct GuardLimits {
 [[nodiscard, gnu::always_inline]] inline float guard_stop(StopGuard& g, const ObserverView& o, Bristle& bristle, const StopGuardTick& t,
                                       float position, float others, float force, const GuardLimits& limits,
                                       float pos_coefficient, float neg_coefficient) noexcept {
-    if (!o.usable || !std::isfinite(others)) return force;
+    const unsigned flags = o.flags;  // (read once, into a register)
+    if (!(flags & ObserverView::kUsable) || !std::isfinite(others)) return force;
     if (g.hold_off > 0) --g.hold_off;
     if (g.stopping) {
         g.stopping = false;
@@ -221,7 +240,7 @@ struct GuardLimits {
         }
         g.hold_off = t.hold_off;  // it went on: a push the observer has not learned yet
     }
-    if (o.moving) {
+    if (flags & ObserverView::kMoving) {
         g.sliding = true;
         g.direction = o.direction;
     }
@@ -230,12 +249,12 @@ struct GuardLimits {
     // friction's force alone could have stopped it. A hand dragging the handle slower than
     // that, whose travel the sensor cannot tell from the observer's prediction of a stop,
     // is left to the bristle.
-    g.decelerated = o.fast ? 0.0f : g.decelerated + std::fabs(force) * t.dt_per_mass;
+    g.decelerated = (flags & ObserverView::kFast) != 0 ? 0.0f : g.decelerated + std::fabs(force) * t.dt_per_mass;
     if (!(g.decelerated <= t.quick_stop)) return force;
     // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
     // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
     // against it (the mechanism's dry friction is below that).
-    if (!o.settled || o.abs_external > limits.free || !g.sliding || g.hold_off > 0 || !limits.resists ||
+    if (!(flags & ObserverView::kSettled) || o.abs_external > limits.free || !g.sliding || g.hold_off > 0 || !limits.resists ||
         o.external * g.direction > limits.along) {
         return force;
     }

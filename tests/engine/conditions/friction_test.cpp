@@ -9,8 +9,11 @@
 // follows the documented rule: Z = f/K with K = 2b/T (the device's passivity bound),
 // at least f/1000 and at most 200/(2·sensor_step). A small LuGre microdamping acts while
 // the bristle deflects at low speed (bristle_model.hpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numbers>
 
 #include "bristle_model.hpp"
 #include "condition_fixture.hpp"
@@ -329,6 +332,33 @@ TEST(BristleExponential, IsWithinTwoFloatUlpsOfTheExponentialOverItsPolynomial) 
         EXPECT_NEAR(feel::detail::exp_of_travel(far), std::exp(-static_cast<double>(far)), 1e-7) << far;
     }
     EXPECT_EQ(feel::detail::exp_of_travel(std::numeric_limits<float>::infinity()), 0.0f);
+}
+
+TEST(TextureBump, IsTheRaisedCosineWithinFloatPrecision) {
+    // The texture's bump (friction_model.hpp, texture_bump: cos² of the half angle, cos by
+    // its Taylor polynomial, in float) against the raised cosine (1 + cos(2π·r/w))/2 in
+    // double, r the distance to the nearest multiple of the spacing: within 5e-7 (a few
+    // float ulps of 1: the angle's rounding moves it by at most |sin 2θ|·1.2e-7·θ) over two
+    // spacings either side of 0, for spacings and densities from the smallest to the largest.
+    double worst = 0;
+    for (const int32_t spacing : {1, 7, 100, 3001, 10000}) {
+        for (const int32_t density : {1, 2500, 5000, 9999, 10000}) {
+            const float width = static_cast<float>(spacing) * static_cast<float>(density) / 10000.0f;
+            for (int k = -4000; k <= 4000; ++k) {
+                const float s = static_cast<float>(spacing) * static_cast<float>(k) / 2000.0f;
+                const double r = s - spacing * std::round(static_cast<double>(s) / spacing);
+                const double expected = std::fabs(r) <= width / 2.0 ? 0.5 * (1.0 + std::cos(2.0 * std::numbers::pi * r / width)) : 0.0;
+                const double bump = feel::detail::texture_bump(s, spacing, width);
+                worst = std::max(worst, std::fabs(bump - expected));
+                ASSERT_GE(bump, 0.0) << s;
+                ASSERT_LE(bump, 1.0) << s;
+            }
+        }
+    }
+    EXPECT_LE(worst, 5e-7);
+    EXPECT_EQ(feel::detail::texture_bump(0.0f, 100, 30.0f), 1.0f);  // a bump's top
+    EXPECT_EQ(feel::detail::texture_bump(50.0f, 100, 30.0f), 0.0f);  // between bumps
+    EXPECT_EQ(feel::detail::texture_bump(3.0f, 0, 30.0f), 0.0f);     // no spacing, no bump
 }
 
 }  // namespace
