@@ -111,7 +111,7 @@ struct Sling {
     float air_over_half_step(float h) const noexcept {
         if (h != air_step_s) {
             air_step_s = h;
-            air_factor = std::exp(-drag * h / (2.0f * mass));
+            air_factor = ball_decay(drag * h / (2.0f * mass));
         }
         return air_factor;
     }

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ball_rig.hpp"
+#include "dynamics/ball_tick.hpp"
 
 namespace feel::test {
 namespace {
@@ -243,6 +245,22 @@ TEST(Sling, AirResistanceSlowsAFreeBallExponentially) {
         const double x = u * s.m / s.c * (1 - std::exp(-s.c / s.m * i * kBallTickS));
         EXPECT_NEAR(ball_position(rig, 0), x, 1e-4 * x);
     }
+}
+
+TEST(Sling, TheAirsFactorIsTheExponentialToTwoUlps) {
+    // ball_decay: e^(−x) of + and * only (the same bits on x86 and the board), against
+    // double exp on a dense grid over float's range, and its limits.
+    double worst_ulps = 0;
+    for (float x = 0; x < 87.0f; x = x < 1e-3f ? x + 1e-6f : x * 1.0001f) {
+        const double want = std::exp(-static_cast<double>(x));
+        const double ulp = std::ldexp(1.0, std::ilogb(want) - 23);
+        worst_ulps = std::max(worst_ulps, std::fabs(detail::ball_decay(x) - want) / ulp);
+    }
+    EXPECT_LE(worst_ulps, 2.0);
+    EXPECT_EQ(detail::ball_decay(0.0f), 1.0f);
+    EXPECT_EQ(detail::ball_decay(87.0f), 0.0f);
+    EXPECT_EQ(detail::ball_decay(std::numeric_limits<float>::infinity()), 0.0f);
+    EXPECT_TRUE(std::isnan(detail::ball_decay(std::numeric_limits<float>::quiet_NaN())));
 }
 
 TEST(Sling, TheTickRateDoesNotChangeTheMotion) {
