@@ -24,7 +24,7 @@ namespace feel::detail {
 void direction_factors(const SlotParams& params, float factors[kMaxAxes]) noexcept;
 
 // The factors for a compass angle (whole hundredths of a degree, any int32) on x, y.
-// Double precision with libm, exact at the cardinal points: once per command.
+// Float, by turn_trig.hpp's polynomial, exact at the cardinal points: once per command.
 void polar_factors(int32_t angle_centideg, float factors[kMaxAxes]) noexcept;
 // The same for an angle in turns, in single precision (turn_trig.hpp): a sweep's
 // direction, every tick. Exact at the cardinal points too.

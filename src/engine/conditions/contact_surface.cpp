@@ -26,7 +26,9 @@ void element_direction(const SlotParams& params, float u[kMaxAxes]) noexcept {
     }
     // sin and cos of the compass angle, rounded once to float (per command, so libm's
     // double sin and cos cost the tick nothing: a handle 7000 units along an oblique wall
-    // needs u to float's last bit for its clipped report to sit on the line), exact at
+    // needs u to float's last bit for its clipped report to sit on the line; float's own
+    // turn_trig.hpp, within 2 ulps, put it 1.3e-3 units off, past the clipping test's
+    // 1e-3, so this stays double: issue 14, docs/firmware.md), exact at
     // the four axis angles so that horizontal and vertical angle walls clip and push along
     // one axis only.
     const int32_t angle = type == EffectType::angle_wall ? params.wall.angle : params.barrier.angle;

@@ -61,8 +61,8 @@ float saturated_spring_force(float k, float depth) noexcept {
     return -std::clamp(k * depth, -kLimit, kLimit);
 }
 
-double generated_energy(const ContactState& state) noexcept {
-    return static_cast<double>(state.generated_energy) / static_cast<double>(kLedgerScale);
+float generated_energy(const ContactState& state) noexcept {
+    return static_cast<float>(state.generated_energy) / kLedgerScale;
 }
 
 float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept {

@@ -105,8 +105,9 @@ struct PortTick {
 // generates) and the force is returned unchanged.
 float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept;
 
-// The energy the ledger holds, in energy units (force units · position units).
-[[nodiscard]] double generated_energy(const ContactState& state) noexcept;
+// The energy the ledger holds, in energy units (force units · position units), in float
+// (2^-24 of it: the ledger's own resolution is 1/kLedgerScale).
+[[nodiscard]] float generated_energy(const ContactState& state) noexcept;
 
 // The energy stored in a spring of stiffness k (force units per position unit, any sign)
 // compressed by depth (position units; none when depth <= 0), whose force saturates at the

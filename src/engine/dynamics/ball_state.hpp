@@ -3,6 +3,12 @@
 // The engine zeroes it when the effect is created and every time it starts; the model
 // fills it on its first playing tick (DynamicState::initialized). Plain data, fixed size.
 // ball_tick.hpp explains how a tick uses it.
+//
+// Float, and relative to the handle (issue 14: no double on the Cortex-M4F's tick; docs/
+// dynamics.md "Sling and paddle", precision). The handle's sensed position is float
+// already; the ball is kept as its offset from the handle, as the control law keeps its
+// stretch, so its resolution is that of the string's or the paddle's reach (a string of
+// 10000 units: 2^-10 of a unit), not of where on the travel the handle happens to be.
 #pragma once
 
 #include "feel/axis.hpp"
@@ -11,17 +17,17 @@ namespace feel::detail {
 
 // The ball at one instant.
 struct BallMotion {
-    // In the fixed frame, per DEVICE axis (only the effect's axes are used): position in
-    // position units (±10000 is the handle's travel; the ball may be anywhere) and
-    // velocity in position units/s. Double: a sling may spin for hours and its energy must
-    // not drift with rounding.
-    double position[kMaxAxes] = {};
-    double velocity[kMaxAxes] = {};
+    // Per DEVICE axis (only the effect's axes are used): the ball minus the handle sensed at
+    // the same tick (BallState::handle), position units, and the ball's velocity in the
+    // fixed frame, position units/s (the air and the paddle's impact speed are in the fixed
+    // frame).
+    float offset[kMaxAxes] = {};
+    float velocity[kMaxAxes] = {};
     // Paddle only: the ball is pressing the paddle (the contact pushes), or flying free.
     bool pressed = false;
     // Paddle only: time spent pressing the paddle since the event began, s (>= 0). A
     // diagnostic: an elastic bounce off a still paddle lasts π/ω.
-    double contact_s = 0;
+    float contact_s = 0;
 };
 
 struct BallState {
@@ -29,8 +35,8 @@ struct BallState {
     // The handle at the current tick, per device axis: where the sensor saw it (position
     // units) and the velocity the engine estimated (position units/s). The next tick
     // advances the ball from here.
-    double handle[kMaxAxes] = {};
-    double handle_velocity[kMaxAxes] = {};
+    float handle[kMaxAxes] = {};
+    float handle_velocity[kMaxAxes] = {};
 };
 
 }  // namespace feel::detail

@@ -29,53 +29,104 @@
 // A gap between ticks longer than kBallMaxAdvanceS is a stall (the host stopped ticking),
 // not motion: one tick advances the ball by at most that much (the handle covering the
 // whole line in it), so the ball's world pauses instead of leaping the stall in one step.
+//
+// Float throughout (issue 14), with the ball kept relative to the handle (ball_state.hpp):
+// an advance starts from the ball's offset to the handle at the start of the line and
+// ends with its offset to the line's end, which is the handle sensed now, so the ball is
+// re-anchored on every sensed position and the handle's place on the travel costs it no
+// resolution. Time stays the engine's: the tick's length arrives in seconds and is
+// rounded to float once.
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "dynamics/dynamic.hpp"
+#include "feel/units.hpp"
 
 namespace feel::detail {
 
 // 100 ms: a hundred ticks of the 1 kHz loop.
-inline constexpr double kBallMaxAdvanceS = 0.1;
+inline constexpr float kBallMaxAdvanceS = 0.1f;
 
-// The handle over a step, per device axis: moving at constant velocity from `from`.
+// A Dynamic Struct integer whose 10000 means `reference` (dynamic_units.hpp's scales), in
+// float: the ball models work out their constants every tick.
+[[nodiscard]] inline float ball_scale(int32_t value, float reference) noexcept {
+    return static_cast<float>(value) * reference / static_cast<float>(kFullScale);
+}
+
+// e^(−x) for x >= 0 (NaN gives NaN), in float from + and * only, so that x86 and the
+// Cortex-M4F compute the same bits (the sling's air; turn_trig.hpp says why: the board's
+// expf is newlib's fdlibm code, x86's glibc's, and they differ in the last bit now and
+// then). x = k·ln 2 − r with |r| <= ln 2 / 2: e^(−x) = 2^−k · e^r, e^r by its Taylor series
+// to r⁷ (truncation 6e-9), 2^−k exact in the exponent bits. Within 2 ulps of e^(−x)
+// (tests/engine/dynamics/sling_test.cpp); 0 past x = 87, where e^(−x) leaves float's
+// normal range.
+[[nodiscard]] inline float ball_decay(float x) noexcept {
+    if (!(x < 87.0f)) return x >= 87.0f ? 0.0f : x;
+    constexpr float kLog2e = 1.44269504089f;
+    constexpr float kLn2High = 0.693145751953125f;  // 15 significant bits: k·kLn2High is exact
+    constexpr float kLn2Low = 1.42860682030941723212e-6f;
+    const int k = static_cast<int>(x * kLog2e + 0.5f);  // the nearest whole k, x >= 0
+    const float whole = static_cast<float>(k);
+    const float r = (whole * kLn2High - x) + whole * kLn2Low;
+    float p = 1.0f / 5040.0f;
+    p = 1.0f / 720.0f + r * p;
+    p = 1.0f / 120.0f + r * p;
+    p = 1.0f / 24.0f + r * p;
+    p = 1.0f / 6.0f + r * p;
+    p = 0.5f + r * p;
+    p = 1.0f + r * p;
+    p = 1.0f + r * p;
+    return p * std::bit_cast<float>(static_cast<uint32_t>(127 - k) << 23);  // k <= 126: a normal 2^−k
+}
+
+// The tick's length, s, as the balls compute with it.
+[[nodiscard]] inline float ball_tick_s(const DynamicContext& c) noexcept { return static_cast<float>(c.dt_s); }
+
+// The handle over a step, per device axis: moving at constant velocity from where it was
+// at the step's start (the ball's offset is to that point).
 struct BallHandlePath {
-    double from[kMaxAxes] = {};             // position units, at the start of the step
-    double velocity[kMaxAxes] = {};         // position units/s, the path's
-    double damper_velocity[kMaxAxes] = {};  // position units/s, what a damper to the handle reads
+    float velocity[kMaxAxes] = {};         // position units/s, the path's
+    float damper_velocity[kMaxAxes] = {};  // position units/s, what a damper to the handle reads
 };
 
 // One tick of a ball model. Model provides
 //   void start(BallMotion&, const DynamicContext&): the ball on the effect's first tick;
-//   void advance(BallMotion&, const BallHandlePath&, double h, double impulse[kMaxAxes]):
-//       the ball after h seconds, exactly or to its integrator's accuracy, and the impulse
-//       the string or paddle gave it (force units·s, per device axis);
-//   void reaction(const BallMotion&, const DynamicContext&, double force[kMaxAxes]): the
+//   void advance(BallMotion&, const BallHandlePath&, float h, float impulse[kMaxAxes]):
+//       the ball after h seconds, exactly or to its integrator's accuracy, its offset now to
+//       the path's end, and the impulse the string or paddle gave it (force units·s, per
+//       device axis);
+//   void reaction(const BallMotion&, const DynamicContext&, float force[kMaxAxes]): the
 //       instantaneous force on the handle (the engine's first tick only).
 // Adds the force on the handle to force[], on the device axes the model moves in (axes[0 ..
 // count-1]): the handle's other axes never reach the model, so the tick reads and divides
-// only these (a double division each, and the other axes' force is 0 either way).
+// only these (a division each, and the other axes' force is 0 either way).
 // A tick in three parts, so that ball_tick_pair can run two balls' advances side by side.
 // The first: the ball on its first tick, or the handle's sensed path to catch up along
 // (returns true when there is one, with the advance's length in *step).
 template <typename Model>
 bool ball_catch_up_path(const Model& model, const int* axes, int count, const DynamicContext& c,
-                        BallHandlePath& seen, double& step) noexcept {
+                        BallHandlePath& seen, float& step) noexcept {
     BallState& ball = c.state->ball;
-    step = std::min(c.dt_s, kBallMaxAdvanceS);  // how far the ball advances
+    const float dt = ball_tick_s(c);
+    step = std::min(dt, kBallMaxAdvanceS);  // how far the ball advances
     if (!c.state->initialized) {
         c.state->ball = BallState{};  // the union member (DynamicState) begins here
         model.start(ball.now, c);
         c.state->initialized = true;
         return false;
     }
-    if (!(c.dt_s > 0)) return false;
+    if (!(dt > 0)) {
+        // No time passed: the ball stays where it is while the handle may have jumped, so its
+        // offset moves to the handle sensed now (ball_expected_path takes that as the handle).
+        for (int i = 0; i < count; ++i) ball.now.offset[axes[i]] += ball.handle[axes[i]] - c.position[axes[i]];
+        return false;
+    }
     for (int i = 0; i < count; ++i) {
         const int a = axes[i];
-        seen.from[a] = ball.handle[a];
         seen.velocity[a] = (c.position[a] - ball.handle[a]) / step;
         seen.damper_velocity[a] = ball.handle_velocity[a];
     }
@@ -87,10 +138,10 @@ bool ball_catch_up_path(const Model& model, const int* axes, int count, const Dy
 inline void ball_expected_path(const int* axes, int count, const DynamicContext& c, bool fresh,
                                BallHandlePath& expected) noexcept {
     BallState& ball = c.state->ball;
+    const float dt = ball_tick_s(c);
     for (int i = 0; i < count; ++i) {
         const int a = axes[i];
-        expected.from[a] = c.position[a];
-        expected.velocity[a] = fresh ? c.velocity[a] : (c.position[a] - ball.handle[a]) / c.dt_s;
+        expected.velocity[a] = fresh ? c.velocity[a] : (c.position[a] - ball.handle[a]) / dt;
         expected.damper_velocity[a] = c.velocity[a];
         ball.handle[a] = c.position[a];
         ball.handle_velocity[a] = c.velocity[a];
@@ -98,30 +149,30 @@ inline void ball_expected_path(const int* axes, int count, const DynamicContext&
 }
 
 // The third: the predicted impulse's mean force over the tick, the handle's reaction.
-inline void ball_add_reaction(const int* axes, int count, const double impulse[kMaxAxes], double step,
-                              double force[kMaxAxes]) noexcept {
+inline void ball_add_reaction(const int* axes, int count, const float impulse[kMaxAxes], float step,
+                              float force[kMaxAxes]) noexcept {
     for (int i = 0; i < count; ++i) {
         const int a = axes[i];
-        const double pull = -impulse[a] / step;
-        force[a] += std::isfinite(pull) ? pull : 0.0;
+        const float pull = -impulse[a] / step;
+        force[a] += std::isfinite(pull) ? pull : 0.0f;
     }
 }
 
 template <typename Model>
-void ball_tick(const Model& model, const int* axes, int count, const DynamicContext& c, double force[kMaxAxes]) noexcept {
+void ball_tick(const Model& model, const int* axes, int count, const DynamicContext& c, float force[kMaxAxes]) noexcept {
     BallState& ball = c.state->ball;
-    const bool fresh = !c.state->initialized || !(c.dt_s > 0);  // no line through two positions yet
+    const bool fresh = !c.state->initialized || !(ball_tick_s(c) > 0);  // no line through two positions yet
     BallHandlePath seen;
-    double step = 0;
+    float step = 0;
     if (ball_catch_up_path(model, axes, count, c, seen, step)) {
-        double ignored[kMaxAxes] = {};
+        float ignored[kMaxAxes] = {};
         model.advance(ball.now, seen, step, ignored);
     }
     BallHandlePath expected;
     ball_expected_path(axes, count, c, fresh, expected);
     if (step > 0) {
         BallMotion ahead = ball.now;
-        double impulse[kMaxAxes] = {};
+        float impulse[kMaxAxes] = {};
         model.advance(ahead, expected, step, impulse);
         ball_add_reaction(axes, count, impulse, step, force);
     } else {
@@ -133,20 +184,20 @@ void ball_tick(const Model& model, const int* axes, int count, const DynamicCont
 // Model::advance_pair(model_a, ball, path, h, impulse, model_b, ...) (sling_dynamic.cpp
 // says why). The balls' states are separate, so the parts' order between them is free.
 template <typename Model>
-void ball_tick_pair(const Model& model_a, const DynamicContext& a, double force_a[kMaxAxes], const Model& model_b,
-                    const DynamicContext& b, double force_b[kMaxAxes]) noexcept {
+void ball_tick_pair(const Model& model_a, const DynamicContext& a, float force_a[kMaxAxes], const Model& model_b,
+                    const DynamicContext& b, float force_b[kMaxAxes]) noexcept {
     BallState& ball_a = a.state->ball;
     BallState& ball_b = b.state->ball;
-    const bool fresh_a = !a.state->initialized || !(a.dt_s > 0);
-    const bool fresh_b = !b.state->initialized || !(b.dt_s > 0);
+    const bool fresh_a = !a.state->initialized || !(ball_tick_s(a) > 0);
+    const bool fresh_b = !b.state->initialized || !(ball_tick_s(b) > 0);
     BallHandlePath seen_a;
     BallHandlePath seen_b;
-    double step_a = 0;
-    double step_b = 0;
+    float step_a = 0;
+    float step_b = 0;
     const bool catch_up_a = ball_catch_up_path(model_a, model_a.axes, model_a.count, a, seen_a, step_a);
     const bool catch_up_b = ball_catch_up_path(model_b, model_b.axes, model_b.count, b, seen_b, step_b);
-    double ignored_a[kMaxAxes] = {};
-    double ignored_b[kMaxAxes] = {};
+    float ignored_a[kMaxAxes] = {};
+    float ignored_b[kMaxAxes] = {};
     if (catch_up_a && catch_up_b) {
         Model::advance_pair(model_a, ball_a.now, seen_a, step_a, ignored_a, model_b, ball_b.now, seen_b, step_b,
                             ignored_b);
@@ -161,8 +212,8 @@ void ball_tick_pair(const Model& model_a, const DynamicContext& a, double force_
     ball_expected_path(model_b.axes, model_b.count, b, fresh_b, expected_b);
     BallMotion ahead_a = ball_a.now;
     BallMotion ahead_b = ball_b.now;
-    double impulse_a[kMaxAxes] = {};
-    double impulse_b[kMaxAxes] = {};
+    float impulse_a[kMaxAxes] = {};
+    float impulse_b[kMaxAxes] = {};
     if (step_a > 0 && step_b > 0) {
         Model::advance_pair(model_a, ahead_a, expected_a, step_a, impulse_a, model_b, ahead_b, expected_b, step_b,
                             impulse_b);
@@ -183,13 +234,14 @@ void ball_tick_pair(const Model& model_a, const DynamicContext& a, double force_
     }
 }
 
-// The ball relative to the handle, per device axis, for the engine's reports.
+// The ball relative to the handle, per device axis, for the engine's reports: its offset
+// is to the handle sensed now (ball_expected_path has moved the handle's state here).
 inline void report_ball(const BallMotion& ball, const DynamicContext& c, const int* axes, int count,
                         DynamicResult& result) noexcept {
     for (int i = 0; i < count; ++i) {
         const int a = axes[i];
-        result.mass_position[a] = static_cast<float>(ball.position[a] - c.position[a]);
-        result.mass_velocity[a] = static_cast<float>(ball.velocity[a] - c.velocity[a]);
+        result.mass_position[a] = ball.offset[a];
+        result.mass_velocity[a] = ball.velocity[a] - c.velocity[a];
     }
 }
 

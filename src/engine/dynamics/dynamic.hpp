@@ -5,8 +5,8 @@
 // across ticks), adds the tether's reaction on the handle to force[] (±10000 units, physical
 // sign, before effect and device gain), and tells the engine where its mass is and whether
 // it has ended (DynamicResult). The engine turns that into interim and final reports.
-// force[] is float, as the engine sums it; the balls work in double and render_dynamic rounds
-// their force once (their tests hold the models' double exactly).
+// force[] is float, as the engine sums it; the balls work in float too (ball_tick.hpp), and
+// render_dynamic adds each ball's own force to it once.
 //
 // Every named dynamic maps onto the control law (§8.4), except the sling and the paddle,
 // which are true 2D models (§5.8, §5.9). One file per model; dynamic.cpp dispatches.
@@ -84,9 +84,9 @@ void render_sling_pair(const DynamicContext& a, const DynamicContext& b, float f
 
 // The models, one file each.
 void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
-void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
-void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, double force_a[kMaxAxes],
-                        double force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept;
-void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept;
+void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
+void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
+                        float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept;
+void paddle_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept;
 
 }  // namespace feel::detail

@@ -43,12 +43,11 @@
 // away. A paddle that moves away faster than the ball comes in is never touched: the
 // event ends on its first tick.
 #include <cmath>
-#include <numbers>
 
 #include "dynamics/ball_tick.hpp"
 #include "dynamics/dynamic.hpp"
-#include "dynamics/dynamic_units.hpp"
 #include "dynamics/paddle_contact.hpp"
+#include "turn_trig.hpp"
 
 namespace feel::detail {
 
@@ -57,82 +56,87 @@ namespace {
 constexpr int kX = 0;
 constexpr int kY = 1;
 constexpr int kPlane[2] = {kX, kY};
-constexpr double kCentidegree = std::numbers::pi / 18000.0;
 
-template <typename T>
-double along(const double n[2], const T* v) noexcept {
-    return n[kX] * v[kX] + n[kY] * v[kY];
-}
+float along(const float n[2], const float* v) noexcept { return n[kX] * v[kX] + n[kY] * v[kY]; }
 
 struct Paddle {
     PaddleContactParams contact{};
-    double normal[2] = {};    // n on (x, y): faces the incoming ball
-    double impact_speed = 0;  // |V|, position units/s, toward the paddle
+    float normal[2] = {};    // n on (x, y): faces the incoming ball
+    float impact_speed = 0;  // |V|, position units/s, toward the paddle
 
     Paddle(const SlotDynamicBlock& d, const EngineConfig& config) noexcept {
-        contact.mass = dynamic_mass(config, d.ball_mass);
-        contact.stiffness = dynamic_stiffness(config, d.paddle_compliance);
-        contact.damping = dynamic_damping(config, d.paddle_damping);
-        contact.gravity = dynamic_gravity(config, d.gravity);
-        const double speed = dynamic_velocity(config, d.initial_velocity);
-        const double angle = d.initial_velocity_direction * kCentidegree;
-        const double side = speed < 0 ? -1.0 : 1.0;  // a negative speed comes from the opposite side
-        normal[kX] = side * std::sin(angle);
-        normal[kY] = side * std::cos(angle);
+        contact.mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
+        contact.stiffness = ball_scale(d.paddle_compliance, config.dynamic_stiffness_ref);
+        contact.damping = ball_scale(d.paddle_damping, config.dynamic_damping_ref);
+        contact.gravity = ball_scale(d.gravity, config.gravity_ref);
+        const float speed = ball_scale(d.initial_velocity, config.velocity_ref);
+        // The compass angle in turns (0..35999 hundredths of a degree: the validator's range),
+        // its sine and cosine in float (turn_trig.hpp: exact at the four cardinal points).
+        const float turns = static_cast<float>(d.initial_velocity_direction) / 36000.0f;
+        const float side = speed < 0 ? -1.0f : 1.0f;  // a negative speed comes from the opposite side
+        normal[kX] = side * sin_turns(turns);
+        normal[kY] = side * cos_turns(turns);
         impact_speed = std::fabs(speed);
     }
 
     // The moment of impact: on the surface, at the handle, moving into the paddle.
-    void start(BallMotion& ball, const DynamicContext& c) const noexcept {
+    void start(BallMotion& ball, const DynamicContext&) const noexcept {
         for (int a : kPlane) {
-            ball.position[a] = c.position[a];
+            ball.offset[a] = 0;
             ball.velocity[a] = -impact_speed * normal[a];
         }
         ball.pressed = false;
         ball.contact_s = 0;
     }
 
-    // Along n the contact, exactly; across n free flight.
-    void advance(BallMotion& ball, const BallHandlePath& handle, double h, double impulse[kMaxAxes]) const noexcept {
-        const double handle_speed = along(normal, handle.velocity);
+    // Along n the contact, exactly; across n free flight. The ball's offset is to the
+    // handle at the path's start, so its component along n is the contact's y; it ends as
+    // the offset to the path's end: across n the ball and the handle each drift at their
+    // own velocity, along n the contact says where it is.
+    void advance(BallMotion& ball, const BallHandlePath& handle, float h, float impulse[kMaxAxes]) const noexcept {
+        const float handle_speed = along(normal, handle.velocity);
         PaddleContactParams law = contact;
         law.damper_offset = handle_speed - along(normal, handle.damper_velocity);
         PaddleContact along_n;
-        along_n.y = along(normal, ball.position) - along(normal, handle.from);
+        along_n.y = along(normal, ball.offset);
         along_n.v = along(normal, ball.velocity) - handle_speed;
         along_n.pressed = ball.pressed;
         along_n.contact_s = ball.contact_s;
-        const double push = advance_paddle_contact(along_n, law, h);
-        const double normal_position = along_n.y + along(normal, handle.from) + handle_speed * h;
-        const double normal_velocity = along_n.v + handle_speed;
-        const double drifted_normal = along(normal, ball.position) + along(normal, ball.velocity) * h;
-        const double old_normal_velocity = along(normal, ball.velocity);
+        const float start_y = along(normal, ball.offset);
+        const float start_v = along(normal, ball.velocity) - handle_speed;
+        const float drifted_y = start_y + start_v * h;
+        // The contact's exact step is tether_step's, in double (paddle_contact.hpp): the
+        // ball's state goes in and comes out rounded to float once.
+        const float push = static_cast<float>(advance_paddle_contact(along_n, law, h));
+        const float end_y = static_cast<float>(along_n.y);
+        const float end_v = static_cast<float>(along_n.v);
         for (int a : kPlane) {
-            ball.position[a] += ball.velocity[a] * h + normal[a] * (normal_position - drifted_normal);
-            ball.velocity[a] += normal[a] * (normal_velocity - old_normal_velocity);
+            ball.offset[a] += (ball.velocity[a] - handle.velocity[a]) * h + normal[a] * (end_y - drifted_y);
+            ball.velocity[a] += normal[a] * (end_v - start_v);
             impulse[a] = push * normal[a];
         }
         ball.pressed = along_n.pressed;
-        ball.contact_s = along_n.contact_s;
+        ball.contact_s = static_cast<float>(along_n.contact_s);
     }
 
     // The push on the handle now: the reaction of the contact's push on the ball.
-    void reaction(const BallMotion& ball, const DynamicContext& c, double force[kMaxAxes]) const noexcept {
+    // (ball_tick calls it after ball_expected_path: the offset is to the handle sensed now.)
+    void reaction(const BallMotion& ball, const DynamicContext& c, float force[kMaxAxes]) const noexcept {
         if (!ball.pressed) return;
-        const double push = paddle_contact_force(contact, along(normal, ball.position) - along(normal, c.position),
-                                                 along(normal, ball.velocity) - along(normal, c.velocity));
+        const float push = static_cast<float>(paddle_contact_force(
+            contact, along(normal, ball.offset), along(normal, ball.velocity) - along(normal, c.velocity)));
         for (int a : kPlane) force[a] -= push * normal[a];
     }
 };
 
 }  // namespace
 
-void paddle_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
+void paddle_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
     const Paddle paddle(*c.params->dynamic, *c.config);
     ball_tick(paddle, kPlane, 2, c, force);
     const BallMotion& ball = c.state->ball.now;
     report_ball(ball, c, kPlane, 2, result);
-    const double leaving = along(paddle.normal, ball.velocity) - along(paddle.normal, c.velocity);
+    const float leaving = along(paddle.normal, ball.velocity) - along(paddle.normal, c.velocity);
     result.finished = !ball.pressed && leaving > 0;
 }
 

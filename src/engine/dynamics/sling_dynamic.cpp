@@ -39,6 +39,15 @@
 // taut, turning string ripples more than the (ω·h)²/4 of a plain spring) and the phase
 // error is (ω·h)²/24 = 3e-5 per radian.
 //
+// Float (issue 14: the Cortex-M4F's FPU is single precision; on x86 a float square root
+// and division have about half a double's latency, and they are the step's chain). The
+// ball is integrated relative to the handle (ball_state.hpp), and its offset is summed
+// with compensation within a tick: a tick takes up to hundreds of steps, each moving the
+// offset by far less than its magnitude, and rounding each would make the energy drift
+// (2e-4 in the minute of the energy test; with the compensation it stays within the
+// test's 1e-4). The velocity is not compensated: the energy and impulse tests hold
+// without it, and it would lengthen the chain by another addition.
+//
 // A tick (ball_tick.hpp): the ball is caught up to now along the handle's sensed path,
 // then predicted one tick ahead with the handle going on the same way; the string's
 // impulse on the ball over that tick (the sum of Verlet's kicks, exactly the momentum it
@@ -52,14 +61,13 @@
 
 #include "dynamics/ball_tick.hpp"
 #include "dynamics/dynamic.hpp"
-#include "dynamics/dynamic_units.hpp"
 
 namespace feel::detail {
 
 namespace {
 
 // Verlet steps are at most this many radians of the fastest rate in play.
-constexpr double kMaxPhasePerStep = 0.025;
+constexpr float kMaxPhasePerStep = 0.025f;
 // Steps per tick at most: the stiffest string on the lightest ball of the built-in
 // profiles (ω ≈ 7e3 rad/s) takes 280 over a 1 ms tick. The limit only binds in stalls,
 // where h·ω stays below Verlet's stability limit of 2 for advances up to kBallMaxAdvanceS.
@@ -76,22 +84,22 @@ struct AxisCapacity<std::integral_constant<int, N>> {
 };
 
 struct Sling {
-    double mass = 1;          // m, force units per (position unit/s²)
-    double stiffness = 0;     // k, force units per position unit
-    double length = 0;        // L, position units
-    double drag = 0;          // c, force units per (position unit/s)
-    double rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
+    float mass = 1;          // m, force units per (position unit/s²)
+    float stiffness = 0;     // k, force units per position unit
+    float length = 0;        // L, position units
+    float drag = 0;          // c, force units per (position unit/s)
+    float rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
-    mutable double air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
-    mutable double air_factor = 1;
+    mutable float air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
+    mutable float air_factor = 1;
 
     Sling(const SlotParams& p, const EngineConfig& config) noexcept {
         const SlotDynamicBlock& d = *p.dynamic;
-        mass = dynamic_mass(config, d.ball_mass);
-        stiffness = dynamic_stiffness(config, d.string_compliance);
-        length = d.string_length;
-        drag = dynamic_damping(config, d.ball_damping);
+        mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
+        stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
+        length = static_cast<float>(d.string_length);
+        drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
         rate_squared = stiffness / mass;
         count = p.axis_count;
         for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
@@ -100,10 +108,10 @@ struct Sling {
     // e^(−c·h/2m), what the air leaves of the velocity over half a step of h seconds. The
     // catch-up and the prediction of a tick mostly take steps of the same length: the
     // exponential of the last length asked is kept (the Sling lives for one tick).
-    double air_over_half_step(double h) const noexcept {
+    float air_over_half_step(float h) const noexcept {
         if (h != air_step_s) {
             air_step_s = h;
-            air_factor = std::exp(-drag * h / (2.0 * mass));
+            air_factor = ball_decay(drag * h / (2.0f * mass));
         }
         return air_factor;
     }
@@ -112,33 +120,37 @@ struct Sling {
     // Count is the number of the effect's axes: an int, or a compile-time constant for the
     // common two (advance says why).
     template <typename Count>
-    void acceleration(Count n, const double* r, double* a) const noexcept {
-        double r2 = 0;
+    void acceleration(Count n, const float* r, float* a) const noexcept {
+        float r2 = 0;
         for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
-        const double distance = std::sqrt(r2);
+        const float distance = std::sqrt(r2);
         // −k·(|r| − L)/|r| per unit of r, when taut. L = 0: −k·r, smooth through r = 0.
         // The ratio is computed either way (inf or NaN at r = 0, then not used) so that the
         // choice is a select, not a branch on the step's chain that a string going slack
         // and taut would make the processor mispredict.
-        const double ratio = length / distance;
-        const double pull = distance > length ? -rate_squared * (1.0 - ratio) : 0.0;
+        const float ratio = length / distance;
+        const float pull = distance > length ? -rate_squared * (1.0f - ratio) : 0.0f;
         for (int i = 0; i < n; ++i) a[i] = pull * r[i];
     }
 
-    // Verlet steps over h_total seconds for the fastest rate in play, rad/s.
-    static int step_count(double rate, double h_total) noexcept {
-        return static_cast<int>(
-            std::clamp(std::ceil(rate * h_total / kMaxPhasePerStep), 1.0, static_cast<double>(kMaxSteps)));
+    // Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
+    // kMaxPhasePerStep rounded up, 1 to kMaxSteps (a NaN or infinite rate: kMaxSteps). The
+    // rounding up is done by hand: ceilf is a library call on the Cortex-M4F.
+    static int step_count(float rate, float h_total) noexcept {
+        const float phase_steps = rate * h_total / kMaxPhasePerStep;
+        if (!(phase_steps < static_cast<float>(kMaxSteps))) return kMaxSteps;
+        const int whole = static_cast<int>(phase_steps);  // >= 0: rate and h_total are
+        return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
     }
 
     // The ball's angular rate about the handle when the string is at its length, rad/s:
     // what the steps must resolve besides the string's own radial rate. With L = 0 the
     // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
     template <typename Count>
-    double turning_rate(Count n, const double* r, const double* relative_velocity) const noexcept {
-        if (length <= 0) return 0.0;
-        double r2 = 0;
-        double v2 = 0;
+    float turning_rate(Count n, const float* r, const float* relative_velocity) const noexcept {
+        if (length <= 0) return 0.0f;
+        float r2 = 0;
+        float v2 = 0;
         for (int i = 0; i < n; ++i) {
             r2 += r[i] * r[i];
             v2 += relative_velocity[i] * relative_velocity[i];
@@ -147,9 +159,9 @@ struct Sling {
     }
 
     // Hanging at the bobbin, at rest.
-    void start(BallMotion& ball, const DynamicContext& c) const noexcept {
+    void start(BallMotion& ball, const DynamicContext&) const noexcept {
         for (int i = 0; i < count; ++i) {
-            ball.position[axes[i]] = c.position[axes[i]];
+            ball.offset[axes[i]] = 0;
             ball.velocity[axes[i]] = 0;
         }
     }
@@ -158,10 +170,9 @@ struct Sling {
     // (the joystick's plane) are most slings: with the count a constant the loops unroll
     // and the ball's state stays in registers (the same operations in the same order as
     // for any count, so the same bits). Not in a build for size (-Os: the Cortex-M4F
-    // image, whose double arithmetic is library calls either way), where the second copy
-    // of the steps would cost 1.2 KB of flash.
-    void advance(BallMotion& ball, const BallHandlePath& handle, double h_total,
-                 double impulse[kMaxAxes]) const noexcept {
+    // image), where a second copy of the steps costs flash the board is short of.
+    void advance(BallMotion& ball, const BallHandlePath& handle, float h_total,
+                 float impulse[kMaxAxes]) const noexcept {
 #if !defined(__OPTIMIZE_SIZE__)
         if (count == 2) {
             advance_axes(std::integral_constant<int, 2>{}, ball, handle, h_total, impulse);
@@ -172,11 +183,11 @@ struct Sling {
     }
 
     template <typename Count>
-    void advance_axes(Count n, BallMotion& ball, const BallHandlePath& handle, double h_total,
-                      double impulse[kMaxAxes]) const noexcept {
+    void advance_axes(Count n, BallMotion& ball, const BallHandlePath& handle, float h_total,
+                      float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
         begin(run, ball, handle, h_total);
-        for (int step = 0; step < run.steps; ++step) take_step(run, step);
+        for (int step = 0; step < run.steps; ++step) take_step(run);
         finish(run, ball, impulse);
     }
 
@@ -186,9 +197,9 @@ struct Sling {
     // kick the next position needs), about 75 cycles of latency for a few instructions;
     // two independent chains side by side overlap in the processor, so the pair costs
     // about what one ball costs. The same operations on each ball, so the same bits.
-    static void advance_pair(const Sling& a, BallMotion& ball_a, const BallHandlePath& handle_a, double h_a,
-                             double impulse_a[kMaxAxes], const Sling& b, BallMotion& ball_b,
-                             const BallHandlePath& handle_b, double h_b, double impulse_b[kMaxAxes]) noexcept {
+    static void advance_pair(const Sling& a, BallMotion& ball_a, const BallHandlePath& handle_a, float h_a,
+                             float impulse_a[kMaxAxes], const Sling& b, BallMotion& ball_b,
+                             const BallHandlePath& handle_b, float h_b, float impulse_b[kMaxAxes]) noexcept {
 #if !defined(__OPTIMIZE_SIZE__)
         if (a.count == 2 && b.count == 2) {
             using Two = std::integral_constant<int, 2>;
@@ -199,11 +210,11 @@ struct Sling {
             const int together = std::min(run_a.steps, run_b.steps);
             int step = 0;
             for (; step < together; ++step) {
-                a.take_step(run_a, step);
-                b.take_step(run_b, step);
+                a.take_step(run_a);
+                b.take_step(run_b);
             }
-            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a, s);
-            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b, s);
+            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a);
+            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b);
             a.finish(run_a, ball_a, impulse_a);
             b.finish(run_b, ball_b, impulse_b);
             return;
@@ -216,40 +227,40 @@ struct Sling {
     // A ball between begin and finish: its state per effect axis, and the steps it takes.
     // Sized for the count (two axes: 2), and set by begin, not zeroed: both runs of a pair
     // then stay in registers (zeroing six axes' worth took a `rep stos` of 336 bytes each).
+    // r is the ball relative to the handle moving along its path: a step moves it by
+    // h·(v − path velocity), so the handle's place on the travel costs r no resolution.
     template <typename Count>
     struct VerletRun {
         static constexpr int kCapacity = AxisCapacity<Count>::value;
         explicit VerletRun(Count count) noexcept : n(count) {}
         Count n;
-        double q[kCapacity];
-        double v[kCapacity];
-        double acc[kCapacity];    // the string's acceleration at q
-        double kicks[kCapacity];  // Σ h·(string acceleration), the string's Δv
-        double from[kCapacity];   // the handle's path, per effect axis
-        double path_velocity[kCapacity];
+        float r[kCapacity];
+        float r_low[kCapacity];  // what rounding r dropped, to add back (compensated sum)
+        float v[kCapacity];
+        float acc[kCapacity];    // the string's acceleration at r
+        float kicks[kCapacity];  // Σ h·(string acceleration), the string's Δv
+        float path_velocity[kCapacity];  // the handle's, per effect axis
         int steps = 0;
-        double h = 0;
-        double half_h = 0;
-        double half_drag = 1;
+        float h = 0;
+        float half_h = 0;
+        float half_drag = 1;
     };
 
     template <typename Count>
     [[gnu::always_inline]] inline void begin(VerletRun<Count>& run, const BallMotion& ball, const BallHandlePath& handle,
-               double h_total) const noexcept {
+               float h_total) const noexcept {
         const Count n = run.n;
-        double r[VerletRun<Count>::kCapacity];
-        double relative[VerletRun<Count>::kCapacity];
+        float relative[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
             const int a = axes[i];
             run.kicks[i] = 0;
-            run.q[i] = ball.position[a];
+            run.r_low[i] = 0;
+            run.r[i] = ball.offset[a];
             run.v[i] = ball.velocity[a];
-            run.from[i] = handle.from[a];
             run.path_velocity[i] = handle.velocity[a];
-            r[i] = run.q[i] - run.from[i];
             relative[i] = run.v[i] - run.path_velocity[i];
         }
-        acceleration(n, r, run.acc);
+        acceleration(n, run.r, run.acc);
         // A ball at rest on a slack string beside a still handle stays exactly where it is
         // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
         // ball back as it was and mass·0).
@@ -262,55 +273,56 @@ struct Sling {
         // waiting for the turning rate's square roots and division, then the count's
         // division, rounding and conversions (about a hundred cycles on the ball's chain).
         // The same numbers either way: max(ω, turning) is ω.
-        const double omega = std::sqrt(rate_squared);
+        const float omega = std::sqrt(rate_squared);
         const int string_steps = step_count(omega, h_total);
-        const double string_h = h_total / string_steps;
-        const double turning = turning_rate(n, r, relative);
+        const float string_h = h_total / static_cast<float>(string_steps);
+        const float turning = turning_rate(n, run.r, relative);
         if (turning <= omega) [[likely]] {
             run.steps = string_steps;
             run.h = string_h;
         } else {
             run.steps = step_count(std::max(omega, turning), h_total);
-            run.h = h_total / run.steps;
+            run.h = h_total / static_cast<float>(run.steps);
         }
-        run.half_h = 0.5 * run.h;
+        run.half_h = 0.5f * run.h;
         run.half_drag = air_over_half_step(run.h);
     }
 
     template <typename Count>
-    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run, int step) const noexcept {
+    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run) const noexcept {
         const Count n = run.n;
-        const double t_end = (step + 1) * run.h;
-        double r[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
-            const double kick = run.half_h * run.acc[i];
+            const float kick = run.half_h * run.acc[i];
             run.v[i] = run.v[i] * run.half_drag + kick;
             run.kicks[i] += kick;
-            run.q[i] += run.h * run.v[i];
-            r[i] = run.q[i] - (run.from[i] + run.path_velocity[i] * t_end);
+            const float move = run.h * (run.v[i] - run.path_velocity[i]) - run.r_low[i];
+            const float moved = run.r[i] + move;
+            run.r_low[i] = (moved - run.r[i]) - move;
+            run.r[i] = moved;
         }
-        acceleration(n, r, run.acc);
+        acceleration(n, run.r, run.acc);
         for (int i = 0; i < n; ++i) {
-            const double kick = run.half_h * run.acc[i];
+            const float kick = run.half_h * run.acc[i];
             run.v[i] = (run.v[i] + kick) * run.half_drag;
             run.kicks[i] += kick;
         }
     }
 
     template <typename Count>
-    [[gnu::always_inline]] inline void finish(const VerletRun<Count>& run, BallMotion& ball, double impulse[kMaxAxes]) const noexcept {
+    [[gnu::always_inline]] inline void finish(const VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
         for (int i = 0; i < run.n; ++i) {
-            ball.position[axes[i]] = run.q[i];
+            ball.offset[axes[i]] = run.r[i];
             ball.velocity[axes[i]] = run.v[i];
             impulse[axes[i]] = mass * run.kicks[i];
         }
     }
 
     // The string's pull on the handle now: toward the ball, k·(|r| − L) when taut.
-    void reaction(const BallMotion& ball, const DynamicContext& c, double force[kMaxAxes]) const noexcept {
-        double r[kMaxAxes] = {};
-        for (int i = 0; i < count; ++i) r[i] = ball.position[axes[i]] - c.position[axes[i]];
-        double acc[kMaxAxes] = {};
+    // (ball_tick calls it after ball_expected_path: the offset is to the handle sensed now.)
+    void reaction(const BallMotion& ball, const DynamicContext&, float force[kMaxAxes]) const noexcept {
+        float r[kMaxAxes] = {};
+        for (int i = 0; i < count; ++i) r[i] = ball.offset[axes[i]];
+        float acc[kMaxAxes] = {};
         acceleration(count, r, acc);
         for (int i = 0; i < count; ++i) force[axes[i]] -= mass * acc[i];
     }
@@ -342,18 +354,18 @@ bool sling_rests(const DynamicContext& c) noexcept {
     if (!state.initialized || !(c.dt_s > 0)) return false;
     const SlotParams& p = *c.params;
     const BallState& ball = state.ball;
-    double r2 = 0;
+    float r2 = 0;
     for (int i = 0; i < p.axis_count; ++i) {
         const int a = axis_index(p.axes[i]);
         if (ball.now.velocity[a] != 0 || c.position[a] != ball.handle[a]) return false;
-        const double r = ball.now.position[a] - c.position[a];
+        const float r = ball.now.offset[a];
         r2 += r * r;
     }
     // The string is slack (Sling::acceleration's test, on the same r): no pull.
-    return !(std::sqrt(r2) > static_cast<double>(p.dynamic->string_length));
+    return !(std::sqrt(r2) > static_cast<float>(p.dynamic->string_length));
 }
 
-void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResult& result) noexcept {
+void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
     if (sling_rests(c)) {
         rest_sling(c, result);
         return;
@@ -364,8 +376,8 @@ void sling_dynamic(const DynamicContext& c, double force[kMaxAxes], DynamicResul
     result.finished = false;
 }
 
-void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, double force_a[kMaxAxes],
-                        double force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
+void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
+                        float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
     if (sling_rests(a) || sling_rests(b)) {  // nothing to overlap
         sling_dynamic(a, force_a, result_a);
         sling_dynamic(b, force_b, result_b);

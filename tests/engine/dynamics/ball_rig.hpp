@@ -88,13 +88,13 @@ inline Bounce pushes_only_bounce(double zeta, double omega) {
 // Calls a model directly. The handle is wherever the test puts it.
 class BallRig {
 public:
-    using Model = void (*)(const detail::DynamicContext&, double*, detail::DynamicResult&) noexcept;
+    using Model = void (*)(const detail::DynamicContext&, float*, detail::DynamicResult&) noexcept;
 
     BallRig(Model model, const EffectParams& params, const EngineConfig& config = EngineConfig{})
         : model_(model), params_(params), config_(config) {}
 
     struct Tick {
-        double force[kMaxAxes] = {};
+        double force[kMaxAxes] = {};  // the model's float force, widened for the tests' arithmetic
         detail::DynamicResult result{};
     };
 
@@ -110,7 +110,9 @@ public:
         const detail::SlotDynamicBlock block = detail::slot_dynamic_block(params_);
         const detail::SlotParams stored = detail::slot_params(params_, &block);
         const detail::DynamicContext c{&stored, &config_, position, velocity, acceleration, start_, dt_s, tau_us_, &state};
-        model_(c, t.force, t.result);
+        float force[kMaxAxes] = {};
+        model_(c, force, t.result);
+        for (int a = 0; a < kMaxAxes; ++a) t.force[a] = force[a];
         tau_us_ += static_cast<int64_t>(std::llround(dt_s * 1e6));
         return t;
     }
@@ -132,5 +134,11 @@ private:
 };
 
 inline double norm2(double x, double y) { return std::sqrt(x * x + y * y); }
+
+// The ball's position in the fixed frame on device axis a: the models keep it relative to
+// the handle sensed at the last tick (ball_state.hpp).
+inline double ball_position(const BallRig& rig, int a) {
+    return static_cast<double>(rig.state.ball.now.offset[a]) + rig.state.ball.handle[a];
+}
 
 }  // namespace feel::test

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ball_rig.hpp"
+#include "dynamics/ball_tick.hpp"
 
 namespace feel::test {
 namespace {
@@ -26,10 +28,10 @@ SlingPhysics sling_physics_of(const EffectParams& p, const EngineConfig& c) {
 // at the rig's position, moving at the rig's velocity.
 void place_ball(BallRig& rig, double x, double y, double vx, double vy) {
     rig.state.initialized = true;
-    rig.state.ball.now.position[0] = x;
-    rig.state.ball.now.position[1] = y;
-    rig.state.ball.now.velocity[0] = vx;
-    rig.state.ball.now.velocity[1] = vy;
+    rig.state.ball.now.offset[0] = static_cast<float>(x - rig.position[0]);
+    rig.state.ball.now.offset[1] = static_cast<float>(y - rig.position[1]);
+    rig.state.ball.now.velocity[0] = static_cast<float>(vx);
+    rig.state.ball.now.velocity[1] = static_cast<float>(vy);
     for (int a = 0; a < kMaxAxes; ++a) {
         rig.state.ball.handle[a] = rig.position[a];
         rig.state.ball.handle_velocity[a] = rig.velocity[a];
@@ -38,7 +40,7 @@ void place_ball(BallRig& rig, double x, double y, double vx, double vy) {
 
 double energy(const SlingPhysics& s, const detail::BallState& state) {
     const detail::BallMotion& b = state.now;
-    const double r = norm2(b.position[0] - state.handle[0], b.position[1] - state.handle[1]);
+    const double r = norm2(b.offset[0], b.offset[1]);
     const double stretch = std::max(0.0, r - s.L);
     return 0.5 * s.m * (b.velocity[0] * b.velocity[0] + b.velocity[1] * b.velocity[1]) + 0.5 * s.k * stretch * stretch;
 }
@@ -60,8 +62,8 @@ TEST(Sling, StartsHangingAtTheBobbinAndIsSlackWithinItsLength) {
         ASSERT_EQ(t.force[0], 0.0);
         ASSERT_EQ(t.force[1], 0.0);
         ASSERT_FALSE(t.result.finished);
-        EXPECT_DOUBLE_EQ(rig.state.ball.now.position[0], 1234.0);
-        EXPECT_DOUBLE_EQ(rig.state.ball.now.position[1], -777.0);
+        EXPECT_DOUBLE_EQ(ball_position(rig, 0), 1234.0);
+        EXPECT_DOUBLE_EQ(ball_position(rig, 1), -777.0);
     }
 }
 
@@ -78,8 +80,10 @@ TEST(Sling, ATautStringPullsTheHandleTowardTheBall) {
         const double r = norm2(bx, by);
         const double pull = r > s.L ? s.k * (r - s.L) : 0.0;
         const auto now = rig.tick(0);
-        EXPECT_NEAR(now.force[0], pull * bx / r, 1e-9 * (1 + pull)) << bx;
-        EXPECT_NEAR(now.force[1], pull * by / r, 1e-9 * (1 + pull)) << bx;
+        // Float (issue 14): the scales, the distance, the ratio and the pull each round by
+        // up to 2^-24, a few ulps of the pull.
+        EXPECT_NEAR(now.force[0], pull * bx / r, 1e-6 * (1 + pull)) << bx;
+        EXPECT_NEAR(now.force[1], pull * by / r, 1e-6 * (1 + pull)) << bx;
         const auto next = rig.tick(kBallTickS);
         const double shrink = 7.0 / 6.0 * std::pow(s.omega() * kBallTickS, 2);
         EXPECT_NEAR(next.force[0], pull * (1 - shrink) * bx / r, 0.1 * shrink * pull + 1e-9) << bx;
@@ -109,7 +113,7 @@ TEST(Sling, CirclesAStillHandleWithTheCentripetalPull) {
         EXPECT_NEAR(norm2(tick.result.mass_position[0], tick.result.mass_position[1]), R, 1e-3 * (R - s.L));
     }
     // Uniform motion: after t the ball has turned u·t/R.
-    const double angle = std::atan2(rig.state.ball.now.position[1], rig.state.ball.now.position[0]);
+    const double angle = std::atan2(ball_position(rig, 1), ball_position(rig, 0));
     EXPECT_NEAR(std::remainder(angle - u * t / R, 2 * kBallPi), 0.0, 1e-3);
 }
 
@@ -194,7 +198,7 @@ TEST(Sling, TheHandleFeelsEveryImpulseTheStringGives) {
         const double change = s.m * (rig.state.ball.now.velocity[a] - start[a]);
         EXPECT_NEAR(impulse[a], -change, 1e-6 * s.m * 6000) << a;
     }
-    EXPECT_GT(rig.state.ball.now.position[0], 0.0) << "the string dragged the ball across";
+    EXPECT_GT(ball_position(rig, 0), 0.0) << "the string dragged the ball across";
 }
 
 TEST(Sling, EnergyIsKeptWithAStillHandleAndNoAirResistance) {
@@ -234,11 +238,29 @@ TEST(Sling, AirResistanceSlowsAFreeBallExponentially) {
     for (int i = 1; i <= 200; ++i) {
         const auto t = rig.tick(kBallTickS);
         EXPECT_EQ(t.force[0], 0.0);
-        EXPECT_NEAR(rig.state.ball.now.velocity[0], u * std::exp(-s.c / s.m * i * kBallTickS), 1e-9 * u);
+        // The air's factor e^(−c·h/2m) is float (issue 14): off by up to 2^-24 relative, applied
+        // twice a step, one step a tick here: 2·i·2^-24 at tick i, at worst.
+        EXPECT_NEAR(rig.state.ball.now.velocity[0], u * std::exp(-s.c / s.m * i * kBallTickS), (2 * i + 1) * 0x1p-24 * u);
         // Position: the integral, to the splitting's (c·h/m)²/24.
         const double x = u * s.m / s.c * (1 - std::exp(-s.c / s.m * i * kBallTickS));
-        EXPECT_NEAR(rig.state.ball.now.position[0], x, 1e-4 * x);
+        EXPECT_NEAR(ball_position(rig, 0), x, 1e-4 * x);
     }
+}
+
+TEST(Sling, TheAirsFactorIsTheExponentialToTwoUlps) {
+    // ball_decay: e^(−x) of + and * only (the same bits on x86 and the board), against
+    // double exp on a dense grid over float's range, and its limits.
+    double worst_ulps = 0;
+    for (float x = 0; x < 87.0f; x = x < 1e-3f ? x + 1e-6f : x * 1.0001f) {
+        const double want = std::exp(-static_cast<double>(x));
+        const double ulp = std::ldexp(1.0, std::ilogb(want) - 23);
+        worst_ulps = std::max(worst_ulps, std::fabs(detail::ball_decay(x) - want) / ulp);
+    }
+    EXPECT_LE(worst_ulps, 2.0);
+    EXPECT_EQ(detail::ball_decay(0.0f), 1.0f);
+    EXPECT_EQ(detail::ball_decay(87.0f), 0.0f);
+    EXPECT_EQ(detail::ball_decay(std::numeric_limits<float>::infinity()), 0.0f);
+    EXPECT_TRUE(std::isnan(detail::ball_decay(std::numeric_limits<float>::quiet_NaN())));
 }
 
 TEST(Sling, TheTickRateDoesNotChangeTheMotion) {
@@ -261,8 +283,8 @@ TEST(Sling, TheTickRateDoesNotChangeTheMotion) {
             rig.velocity[1] = static_cast<float>(a * Omega * std::cos(Omega * t));
             rig.tick(dts[k]);
         }
-        x[k] = rig.state.ball.now.position[0];
-        y[k] = rig.state.ball.now.position[1];
+        x[k] = ball_position(rig, 0);
+        y[k] = ball_position(rig, 1);
     }
     EXPECT_GT(norm2(x[2], y[2]), 3000.0) << "spun out beyond the handle's circle";
     EXPECT_NEAR(x[0], x[2], 0.2);
@@ -355,7 +377,7 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
             const Context b1{&pb, &config, position, velocity, acceleration, start, dt, 0, &alone_b};
             const Context a2{&pa, &config, position, velocity, acceleration, start, dt, 0, &together_a};
             const Context b2{&pb, &config, position, velocity, acceleration, start, dt, 0, &together_b};
-            double fa1[kMaxAxes] = {}, fb1[kMaxAxes] = {}, fa2[kMaxAxes] = {}, fb2[kMaxAxes] = {};
+            float fa1[kMaxAxes] = {}, fb1[kMaxAxes] = {}, fa2[kMaxAxes] = {}, fb2[kMaxAxes] = {};
             detail::DynamicResult ra1, rb1, ra2, rb2;
             detail::sling_dynamic(a1, fa1, ra1);
             if (b_plays) {
@@ -369,7 +391,7 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
                 ASSERT_EQ(fb1[ax], fb2[ax]) << "case " << (&k - cases) << " tick " << i << " axis " << ax;
                 ASSERT_EQ(ra1.mass_position[ax], ra2.mass_position[ax]) << "case " << (&k - cases) << " tick " << i;
                 ASSERT_EQ(rb1.mass_velocity[ax], rb2.mass_velocity[ax]) << "case " << (&k - cases) << " tick " << i;
-                ASSERT_EQ(alone_a.ball.now.position[ax], together_a.ball.now.position[ax])
+                ASSERT_EQ(alone_a.ball.now.offset[ax], together_a.ball.now.offset[ax])
                     << "case " << (&k - cases) << " tick " << i;
                 if (b_plays) {  // before its first tick b's ball is not the live member of its state
                     ASSERT_EQ(alone_b.ball.now.velocity[ax], together_b.ball.now.velocity[ax])
@@ -378,7 +400,7 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
             }
         }
         // The motion was real: both balls were swung out beyond their strings.
-        EXPECT_GT(std::fabs(alone_a.ball.now.position[0]) + std::fabs(alone_b.ball.now.position[0]), 100.0);
+        EXPECT_GT(std::fabs(alone_a.ball.now.offset[0]) + std::fabs(alone_b.ball.now.offset[0]), 100.0);
     }
 }
 
