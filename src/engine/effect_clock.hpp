@@ -15,6 +15,14 @@
 
 namespace feel::detail {
 
+// A tick's length in seconds, as the conditions' and dynamics' contexts take it: µs / 10⁶ in
+// float, the correctly rounded quotient (10⁶ is exact in float, and so is a length up to
+// 2²⁴ µs, 16.7 s). For every such length it is the float that (float)(µs · 1e-6) in double
+// gave, which is what every reader used when the contexts carried double, so no force moved
+// by a bit (tests/engine/effect_clock_test.cpp checks each of 0..2²⁴ µs; µs · 1e-6f differs from it
+// for 3% of them). A longer tick rounds its µs first and may differ from that in its last bit.
+[[nodiscard]] inline float tick_seconds_of(int64_t dt_us) noexcept { return static_cast<float>(dt_us) / 1e6f; }
+
 enum class ClockPhase : uint8_t { delayed, playing, finished };
 
 struct ClockReading {

@@ -300,7 +300,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     // and acceleration. The reported position starts as the sensed one; clipping walls
     // may hold it at their surface.
     const int64_t dt_us = m.have_previous ? in.t_us - m.previous_t_us : 0;
-    const double dt_s = m.tick_seconds(dt_us);
+    const float dt_s = m.tick_seconds(dt_us);
     // The acceleration costs as much as the velocity and only inertia and Dynamic Inertia
     // (control_law_dynamic.cpp) read it: fitted only in ticks where one plays. Without one
     // created (most ticks) the slots are not looked at.
@@ -403,8 +403,8 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         float force[kMaxAxes] = {};
         const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {
-            // A dynamic adds its force in float; the balls, which integrate in double
-            // (docs/stability.md, "Where double remains"), round theirs once.
+            // A dynamic adds its force in float (the paddle's contact, which steps in double,
+            // rounds its push once: docs/stability.md, "Where double remains").
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;

@@ -9,6 +9,7 @@
 
 #include "conditions/condition.hpp"
 #include "dynamics/dynamic.hpp"
+#include "effect_clock.hpp"
 #include "feel/engine.hpp"
 #include "motion_estimator.hpp"
 #include "record_pool.hpp"
@@ -229,13 +230,12 @@ struct Engine::Impl {
         acceleration_readers += s.reads_acceleration ? 1 : 0;
     }
 
-    // The tick's length in seconds, as the conditions' and dynamics' contexts take it (double
-    // while they do): worked out again only when the length changes, which at a fixed loop
-    // rate is never, so a board without a double unit makes no double operation per tick.
-    double tick_seconds(int64_t dt_us) noexcept {
+    // The tick's length in seconds (detail::tick_seconds_of), worked out again only when the
+    // length changes, which at a fixed loop rate is never: a division a change, none a tick.
+    float tick_seconds(int64_t dt_us) noexcept {
         if (dt_us != tick_length_us) {
             tick_length_us = dt_us;
-            tick_length_s = static_cast<double>(dt_us) * 1e-6;
+            tick_length_s = detail::tick_seconds_of(dt_us);
         }
         return tick_length_s;
     }
@@ -347,7 +347,7 @@ struct Engine::Impl {
     detail::AxisObservers observers;     // friction's stop guard: the handle on each axis
     int64_t previous_t_us = 0;
     int64_t tick_length_us = 0;  // tick_seconds: the last tick's length, and in seconds
-    double tick_length_s = 0.0;
+    float tick_length_s = 0.0f;
 
     // Device control and the parameter memory (engine_commands.cpp).
     int32_t pool_total_bytes = 0;

@@ -1,10 +1,39 @@
 // Start delay, duration and iterations (§6.3, §6.6.i).
+#include <cmath>
+#include <cstdint>
+
+#include "effect_clock.hpp"
 #include "engine_fixture.hpp"
 
 namespace feel::test {
 namespace {
 
 using EffectClock = EngineFixture;
+
+// The tick length the conditions and dynamics read, in float (issue 14): µs / 10⁶ must be
+// the float nearest the true quotient for every tick the contexts see, which is the float
+// the engine's double (float)(µs · 1e-6) gave before, so no force moved by a bit. Checked
+// against both: the quotient in double (exact to 2^-53, far inside a float's half ulp) and
+// the former expression, for every length from 0 to 2^24 µs (16.7 s), and in its last bit
+// beyond.
+TEST(TickLength, FloatSecondsAreTheNearestFloatToTheMicrosecondsOverAMillion) {
+    int64_t off_nearest = 0, off_former = 0;
+    for (int64_t us = 0; us <= (int64_t{1} << 24); ++us) {
+        const float s = detail::tick_seconds_of(us);
+        const double exact = static_cast<double>(us) / 1e6;
+        const float below = std::nextafter(s, 0.0f), above = std::nextafter(s, 1e30f);
+        // Nearest: neither neighbour is closer to the quotient.
+        if (std::fabs(below - exact) < std::fabs(s - exact) || std::fabs(above - exact) < std::fabs(s - exact))
+            ++off_nearest;
+        if (s != static_cast<float>(static_cast<double>(us) * 1e-6)) ++off_former;
+    }
+    EXPECT_EQ(off_nearest, 0);
+    EXPECT_EQ(off_former, 0);
+    for (const int64_t us : {int64_t{1} << 25, int64_t{3'600'000'000}, int64_t{86'400'000'000}}) {
+        const double exact = static_cast<double>(us) / 1e6;
+        EXPECT_NEAR(detail::tick_seconds_of(us), exact, exact * 0x1p-23) << us << " µs";
+    }
+}
 
 TEST_F(EffectClock, StartDelayHoldsTheWaveBackAndItStartsFromItsBeginning) {
     EffectParams p = periodic_on_x(EffectType::sine, 5000, 0, 20'000, 0, 60'000);

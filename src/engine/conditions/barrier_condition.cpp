@@ -120,7 +120,7 @@ void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     tick.force = face.into * saturated_spring_force(face.k, face_depth(face, s));
     tick.stiffness = std::fabs(face.k);
     tick.velocity = dot(c, u, c.velocity);
-    tick.dt_s = static_cast<float>(c.dt_s);
+    tick.dt_s = c.dt_s;
     tick.resolution = c.config->sensor_step;
     const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
     for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];

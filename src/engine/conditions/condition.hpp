@@ -47,7 +47,7 @@ struct ConditionContext {
     const float* acceleration = nullptr;    // [kMaxAxes] estimated, position units/s²
     const float* start_position = nullptr;  // [kMaxAxes] sensed position at the effect's first tick
     const float* direction = nullptr;       // [kMaxAxes] the effect's direction factors (direction.hpp)
-    double dt_s = 0;                        // time since the previous tick, s (0 on the first)
+    float dt_s = 0;                         // time since the previous tick, s (0 on the first)
     int64_t tau_us = 0;                     // time since the effect began playing
     ConditionState* state = nullptr;        // this effect's state, persists across ticks
     float* reported_position = nullptr;     // [kMaxAxes] clipping walls overwrite their axis

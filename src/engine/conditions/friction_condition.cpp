@@ -216,8 +216,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     // Single precision (issue 14); what is per tick or per command rather than per block
     // and tick is worked out once (remember_tick, remember_law).
     FrictionState& state = c.state->friction;
-    // (The context's tick length is double while the engine's is: its one conversion.)
-    const float dt_s = static_cast<float>(c.dt_s);
+    const float dt_s = c.dt_s;
     if (state.tick_dt != dt_s) remember_tick(state, *c.config, dt_s);
     EffectTick e;
     e.context = &c;

@@ -109,11 +109,6 @@ struct PreslidingRule {
 // >= 0) on this device at this tick period (s). 0 for f = 0. dt_s <= 0 uses the guards
 // only (no tick to judge passivity by).
 [[nodiscard]] float presliding_distance(const EngineConfig& config, float dt_s, float f) noexcept;
-// For a caller whose tick length is still double (ConditionContext::dt_s): the conversion
-// is the caller's; drop this once no caller passes a double.
-[[nodiscard]] inline float presliding_distance(const EngineConfig& config, double dt_s, float f) noexcept {
-    return presliding_distance(config, static_cast<float>(dt_s), f);
-}
 
 // e^-u for the travel u >= 0 of one tick in presliding distances. A tick's travel is a few
 // counts and the zone tens to hundreds (docs/stability.md), so u is mostly below 1/4: there

@@ -56,10 +56,9 @@ struct FrictionState {
     // 1/fade speed. (The presliding rule is worked out again with a block's law: rarely.)
     StopGuardTick guard_tick{};
     float inverse_fade_speed = 0.0f;
-    // friction: the tick length (s) the above are for, single precision (issue 14).
+    // The tick length (s) the above are for, single precision (issue 14), as the contexts
+    // carry it; texture keeps guard_tick and inverse_fade_speed under the same key.
     float tick_dt = -1.0f;
-    // texture: the tick length guard_tick is for (texture_condition.cpp keeps it in double).
-    double tick_dt_s = -1.0;
 };
 
 }  // namespace feel::detail

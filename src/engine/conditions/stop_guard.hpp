@@ -120,11 +120,6 @@ struct StopGuardTick {
 // 2 counts over the observer's time constant: the speed at which its prediction has bite.
 // (Worked out where it is read, once per line and tick, rather than kept: issue 14's RAM.)
 [[nodiscard]] inline float fast_speed(const StopGuardTick& t) noexcept { return 2.0f * t.count / kStopGuardTime; }
-// For a caller whose tick length is still double (ConditionContext::dt_s): the conversion
-// is the caller's; drop this once no caller passes a double.
-[[nodiscard]] inline StopGuardTick stop_guard_tick(const EngineConfig& config, double dt_s) noexcept {
-    return stop_guard_tick(config, static_cast<float>(dt_s));
-}
 
 // Advances the observer by one tick: `position` sensed, `applied` the engine's force of the
 // last tick along the line. Returns whether it has a state to judge by (false at its first
@@ -185,13 +180,6 @@ struct AxisObservers {
 void observe_axes(AxisObservers& observers, const EngineConfig& config, float dt_s, int64_t t_us,
                   int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
                   int axes) noexcept;
-// For a caller whose tick length is still double (Engine::tick): the conversion is the
-// caller's; drop this once no caller passes a double.
-inline void observe_axes(AxisObservers& observers, const EngineConfig& config, double dt_s, int64_t t_us,
-                         int64_t previous_t_us, const float* position, const float* velocity, const float* applied,
-                         int axes) noexcept {
-    observe_axes(observers, config, static_cast<float>(dt_s), t_us, previous_t_us, position, velocity, applied, axes);
-}
 
 // Sets the bristle to hold against `others` (within ±1) and returns that force.
 inline float hold_against(Bristle& bristle, float others, float pos_coefficient, float neg_coefficient) noexcept {

@@ -55,14 +55,21 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const float s = along(u, c.position);
     const float pos = static_cast<float>(t.pos_roughness), neg = static_cast<float>(t.neg_roughness);
     const float roughness = pos > neg ? pos : neg;
-    const float presliding = static_cast<float>(presliding_distance(*c.config, c.dt_s, roughness));
+    // What is per tick length rather than per tick is kept with friction's, under its key:
+    // the stop guard's gains and the microdamping's 1/fade speed (friction_condition.cpp).
+    if (state.tick_dt != c.dt_s) {
+        state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
+        state.inverse_fade_speed = 1.0f / (kBristleDampingFade * c.config->velocity_ref);
+        state.tick_dt = c.dt_s;
+    }
+    const float presliding = presliding_distance(*c.config, c.dt_s, roughness);
     FrictionBlock& block = state.block[0];
     Bristle& bristle = block.bristle;
     const bool first = !bristle.primed;  // nothing held yet: take the others' push from here
     const bool at_rest = first || s == bristle.anchor;
     float z = advance(bristle, s, 0.0f, presliding > 0 ? 1.0f / presliding : 0.0f);
     const float width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
-    const float bump = static_cast<float>(texture_bump(s, t.spacing, width));
+    const float bump = texture_bump(s, t.spacing, width);
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     // The others' force in this texture's units, as for friction (friction_condition.cpp).
     const bool others_known = c.others_force != nullptr && output_gain != 0;
@@ -81,15 +88,10 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
     if (presliding > 0 && c.dt_s > 0) {
-        const float inverse_fade_speed = 1.0f / (static_cast<float>(kBristleDampingFade) * c.config->velocity_ref);
-        f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), inverse_fade_speed);
+        f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), state.inverse_fade_speed);
     }
     const float limit = roughness * bump;
     if (c.applied_force != nullptr && limit > 0) {
-        if (state.tick_dt_s != c.dt_s) {
-            state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
-            state.tick_dt_s = c.dt_s;
-        }
         if (state.guard_tick.on) {
             const float others = c.others_force != nullptr ? along(u, c.others_force)
                                                             : along(u, c.applied_force) - block.guard.own;

@@ -67,7 +67,7 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     tick.force = into * saturated_spring_force(k, depth);
     tick.stiffness = std::fabs(k);
     tick.velocity = dot(c, u, c.velocity);
-    tick.dt_s = static_cast<float>(c.dt_s);
+    tick.dt_s = c.dt_s;
     tick.resolution = c.config->sensor_step;
     const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
     for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];

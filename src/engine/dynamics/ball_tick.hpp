@@ -84,7 +84,7 @@ inline constexpr float kBallMaxAdvanceS = 0.1f;
 }
 
 // The tick's length, s, as the balls compute with it.
-[[nodiscard]] inline float ball_tick_s(const DynamicContext& c) noexcept { return static_cast<float>(c.dt_s); }
+[[nodiscard]] inline float ball_tick_s(const DynamicContext& c) noexcept { return c.dt_s; }
 
 // The handle over a step, per device axis: moving at constant velocity from where it was
 // at the step's start (the ball's offset is to that point).

@@ -179,7 +179,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     const float hysteresis = c.config->sensor_step;
     // The catch-up's, and the prediction's: the next tick as long. The laws are float (their
     // time too: a tick of at most seconds, to 6e-8 of itself; the engine's clock is integer µs).
-    const float step = static_cast<float>(c.dt_s);
+    const float step = c.dt_s;
     if (step > 0) {
         for (int i = 0; i < n; ++i) {
             if (st.laws[i].step_s != step) {

@@ -53,7 +53,7 @@ struct DynamicContext {
     // condition or a Dynamic Inertia plays, else 0
     const float* acceleration = nullptr;
     const float* start_position = nullptr;  // [kMaxAxes] handle at the effect's first playing tick
-    double dt_s = 0;                        // time since the previous tick, s (0 on the first)
+    float dt_s = 0;                         // time since the previous tick, s (0 on the first)
     int64_t tau_us = 0;                     // time since the effect began playing
     DynamicState* state = nullptr;
 };

@@ -109,7 +109,8 @@ public:
         const float acceleration[kMaxAxes] = {};
         const detail::SlotDynamicBlock block = detail::slot_dynamic_block(params_);
         const detail::SlotParams stored = detail::slot_params(params_, &block);
-        const detail::DynamicContext c{&stored, &config_, position, velocity, acceleration, start_, dt_s, tau_us_, &state};
+        // The engine's tick length is float; the rig's double rounds as the models once did.
+        const detail::DynamicContext c{&stored, &config_, position, velocity, acceleration, start_, static_cast<float>(dt_s), tau_us_, &state};
         float force[kMaxAxes] = {};
         model_(c, force, t.result);
         for (int a = 0; a < kMaxAxes; ++a) t.force[a] = force[a];

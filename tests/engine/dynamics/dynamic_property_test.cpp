@@ -149,7 +149,7 @@ RC_GTEST_PROP(ControlLawProperty, FiniteAndWithinTheMotorLimitForAnyParametersRa
         const float acceleration[kMaxAxes] = {};
         const detail::SlotDynamicBlock block = detail::slot_dynamic_block(p);
         const detail::SlotParams stored = detail::slot_params(p, &block);
-        const detail::DynamicContext context{&stored, &config, in.position, velocity, acceleration, in.position, n == 0 ? 0.0 : static_cast<double>(dt_us) * 1e-6, t_us, &state};
+        const detail::DynamicContext context{&stored, &config, in.position, velocity, acceleration, in.position, n == 0 ? 0.0f : static_cast<float>(static_cast<double>(dt_us) * 1e-6), t_us, &state};
         float raw[kMaxAxes] = {};
         detail::DynamicResult result;
         detail::render_dynamic(context, raw, result);

@@ -370,7 +370,7 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
             } else {
                 velocity[0] = velocity[1] = 0;
             }
-            const double dt = i == 0 ? 0 : i % 97 == 0 ? 0.25 : i % 89 == 0 ? 0 : kBallTickS;
+            const float dt = static_cast<float>(i == 0 ? 0 : i % 97 == 0 ? 0.25 : i % 89 == 0 ? 0 : kBallTickS);
             const bool b_plays = i >= 5;
             using Context = detail::DynamicContext;
             const Context a1{&pa, &config, position, velocity, acceleration, start, dt, 0, &alone_a};
