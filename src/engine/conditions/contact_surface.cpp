@@ -2,7 +2,8 @@
 #include "conditions/contact_surface.hpp"
 
 #include <cmath>
-#include <numbers>
+#include <cstdint>
+#include <utility>
 
 #include "feel/units.hpp"
 #include "turn_trig.hpp"
@@ -12,6 +13,76 @@ namespace {
 
 bool is_angle_element(EffectType type) noexcept {
     return type == EffectType::angle_wall || type == EffectType::angle_barrier;
+}
+
+// Sine and cosine of a compass angle in float, from integers. A wall's clipping needs u to
+// float's last bit: a handle 7000 units along an oblique wall is reported onto the line to
+// 1e-3 units, and float's own turn_trig.hpp (within 2 ulps) put it 1.3e-3 off. Double's
+// sin and cos were the M4's only double here (a software routine each); this is 64-bit
+// integer multiplication, which both targets do in hardware, with the same bits on both.
+//
+// Fixed point Q31 (2^31 is 1): the angle's octant is taken exactly in hundredths of a
+// degree, so the series below runs on θ ≤ π/4, where sin to θ¹¹ and cos to θ¹² are within
+// 1e-11; each product rounds by 2^-32, so each value is within about 2e-9 of the truth
+// before it is rounded once to float (from an int32, then an exact scaling). For the
+// larger component (0.7 to 1) that is 0.03 of float's ulp: it is the correctly rounded
+// float but for a value that close to a tie; the smaller is within half its ulp + 2e-9.
+constexpr int kQ = 31;
+constexpr int64_t kHalf = int64_t{1} << (kQ - 1);
+constexpr int64_t q31(double x) { return static_cast<int64_t>(x * 0x1p31 + (x < 0 ? -0.5 : 0.5)); }
+int64_t mul_q31(int64_t a, int64_t b) noexcept { return (a * b + kHalf) >> kQ; }
+
+// θ = m·π/18000 for m hundredths of a degree: the constant in Q52 (m < 2^13, so the
+// product stays below 2^53).
+constexpr int64_t kRadiansPerHundredthQ52 = static_cast<int64_t>(3.14159265358979323846 / 18000.0 * 0x1p52 + 0.5);
+// The series' coefficients, Q31, from the highest power down: sin θ = θ·(1 + θ²·S(θ²)),
+// S's −1/3!, 1/5!, ..., −1/11!; cos θ = 1 + θ²·C(θ²), C's −1/2!, 1/4!, ..., 1/12!.
+constexpr int64_t kSinSeries[] = {q31(-1.0 / 39916800), q31(1.0 / 362880), q31(-1.0 / 5040), q31(1.0 / 120),
+                                  q31(-1.0 / 6)};
+constexpr int64_t kCosSeries[] = {q31(1.0 / 479001600), q31(-1.0 / 3628800), q31(1.0 / 40320), q31(-1.0 / 720),
+                                  q31(1.0 / 24), q31(-0.5)};
+
+struct SinCos {
+    float sin, cos;
+};
+
+// sin and cos of m hundredths of a degree, 0 < m <= 4500, as Q31 (both below 1).
+void octant_sin_cos(int32_t m, int64_t& sin_q, int64_t& cos_q) noexcept {
+    const int64_t theta = (m * kRadiansPerHundredthQ52 + (int64_t{1} << 20)) >> 21;
+    const int64_t t2 = mul_q31(theta, theta);
+    int64_t s = 0;
+    for (const int64_t k : kSinSeries) s = k + mul_q31(t2, s);
+    sin_q = theta + mul_q31(theta, mul_q31(t2, s));
+    int64_t c = 0;
+    for (const int64_t k : kCosSeries) c = k + mul_q31(t2, c);
+    cos_q = (int64_t{1} << kQ) + mul_q31(t2, c);
+}
+
+// A Q31 value below 1 in magnitude to float: one rounding (int32 to float), then an exact
+// scaling by a power of two.
+float float_of_q31(int64_t v) noexcept { return static_cast<float>(static_cast<int32_t>(v)) * 0x1p-31f; }
+
+// Exact at the four axis angles (0, 9000, 18000, 27000), so that horizontal and vertical
+// angle walls clip and push along one axis only.
+SinCos compass_sin_cos(int32_t angle) noexcept {
+    angle %= 36000;
+    if (angle < 0) angle += 36000;
+    const int32_t quadrant = angle / 9000;
+    const int32_t within = angle % 9000;
+    float s = 0, c = 1;  // of `within`
+    if (within != 0) {
+        int64_t sin_q = 0, cos_q = 0;
+        octant_sin_cos(within <= 4500 ? within : 9000 - within, sin_q, cos_q);
+        if (within > 4500) std::swap(sin_q, cos_q);  // sin(90° − x) = cos x
+        s = float_of_q31(sin_q);
+        c = float_of_q31(cos_q);
+    }
+    switch (quadrant) {
+        case 0: return {s, c};
+        case 1: return {c, -s};   // +90°
+        case 2: return {-s, -c};  // +180°
+        default: return {-c, s};  // +270°
+    }
 }
 
 }  // namespace
@@ -24,28 +95,11 @@ void element_direction(const SlotParams& params, float u[kMaxAxes]) noexcept {
         u[axis_index(params.axes[0])] = 1.0f;
         return;
     }
-    // sin and cos of the compass angle, rounded once to float (per command, so libm's
-    // double sin and cos cost the tick nothing: a handle 7000 units along an oblique wall
-    // needs u to float's last bit for its clipped report to sit on the line; float's own
-    // turn_trig.hpp, within 2 ulps, put it 1.3e-3 units off, past the clipping test's
-    // 1e-3, so this stays double: issue 14, docs/firmware.md), exact at
-    // the four axis angles so that horizontal and vertical angle walls clip and push along
-    // one axis only.
+    // u to float's last bit (compass_sin_cos), per command.
     const int32_t angle = type == EffectType::angle_wall ? params.wall.angle : params.barrier.angle;
-    float sin_a = 0, cos_a = 1;
-    switch (angle) {
-        case 0: break;
-        case 9000: sin_a = 1; cos_a = 0; break;
-        case 18000: cos_a = -1; break;
-        case 27000: sin_a = -1; cos_a = 0; break;
-        default: {
-            const double radians = angle * (std::numbers::pi / 18000.0);
-            sin_a = static_cast<float>(std::sin(radians));
-            cos_a = static_cast<float>(std::cos(radians));
-        }
-    }
-    u[axis_index(Axis::x)] = sin_a;
-    u[axis_index(Axis::y)] = cos_a;
+    const SinCos u_angle = compass_sin_cos(angle);
+    u[axis_index(Axis::x)] = u_angle.sin;
+    u[axis_index(Axis::y)] = u_angle.cos;
 }
 
 float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept {

@@ -36,8 +36,8 @@
 // device's passivity bound.
 //
 // Single precision (issue 14 §2): positions, forces and directions are float, as the
-// tick's other conditions; u is worked out once per command (in double, rounded once to
-// float), not per tick.
+// tick's other conditions; u is worked out once per command (in 64-bit integers, rounded
+// once to float: no double on a Cortex-M4F), not per tick.
 #pragma once
 
 #include <cstdint>

@@ -22,7 +22,8 @@ constexpr float kLimit = static_cast<float>(kFullScale);
 
 // A tick's booking is clamped to this many energy units before it becomes ledger units,
 // and the ledger to kLedgerCeiling, so neither can overflow int64 (the largest a real
-// port books is a full-scale force over the whole travel, about 10^9).
+// port books is a full-scale force over the whole travel, about 10^9; booked, at most
+// 10^12 · 65536 < 2^56, is within truncate_to_int64's range).
 constexpr float kLargestBooking = 1e12f;
 constexpr int64_t kLedgerCeiling = int64_t{1} << 62;
 
@@ -90,7 +91,7 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
         if (std::isfinite(generated)) {
             // Exact from here on: an integer sum (passivity.hpp, "single precision").
             const float booked = std::clamp(generated, -kLargestBooking, kLargestBooking) * kLedgerScale;
-            const int64_t total = state.generated_energy + static_cast<int64_t>(booked);
+            const int64_t total = state.generated_energy + truncate_to_int64(booked);
             state.generated_energy = std::clamp(total, int64_t{0}, kLedgerCeiling);
         } else {
             state.generated_energy = 0;

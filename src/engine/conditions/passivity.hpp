@@ -89,6 +89,20 @@ namespace feel::detail {
 // Ledger units per energy unit (force units · position units).
 inline constexpr float kLedgerScale = 65536.0f;
 
+// static_cast<int64_t>(x), truncating toward zero, for |x| < 2^63, in 32-bit conversions:
+// a float's cast to int64 is libgcc's __aeabi_f2lz on the Cortex-M4F, which computes in
+// soft-float double. Exact: a float of magnitude 2^31 or more has at most 24 significant
+// bits, all at 2^8 or above, so the integer part of x·2^-32 has at most 24 and times 2^32
+// is a float, and what is left of x (a multiple of 2^8 below 2^32 in magnitude, with the
+// sign of x) is a float too, whose unsigned cast is one instruction.
+[[nodiscard]] inline int64_t truncate_to_int64(float x) noexcept {
+    if (x > -2147483648.0f && x < 2147483648.0f) return static_cast<int32_t>(x);
+    const int32_t high = static_cast<int32_t>(x * 0x1p-32f);
+    const float low = x - static_cast<float>(high) * 0x1p32f;  // the sign of x, |low| < 2^32
+    const int64_t low_part = low >= 0 ? int64_t{static_cast<uint32_t>(low)} : -int64_t{static_cast<uint32_t>(-low)};
+    return int64_t{high} * 4294967296 + low_part;
+}
+
 // One tick of a contact port.
 struct PortTick {
     float coordinate = 0;           // s(n): the sensed position along u, position units

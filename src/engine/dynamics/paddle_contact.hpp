@@ -39,35 +39,42 @@
 // does not depend on where the ticks fall. The tick is cut into pieces short enough
 // (ω·h ≤ 1/2) that a stage cannot begin and end unseen inside one.
 //
+// Precision: float, on every build (issue 14: a Cortex-M4F has a single-precision FPU
+// only). The exact step is tether_step's float instantiation, the control laws' (its
+// increments keep a piece's rounding that of the change, not of the state, and near
+// critical damping it takes its series); the bisection stops where float cannot split the
+// bracket further (2^-24 of the piece). A bounce's velocity comes out within a few tens of
+// float's 2^-24 of the closed form (tests/engine/dynamics/paddle_test.cpp).
+//
 // Real-time safe: no allocation; a bounded number of steps per tick.
 #pragma once
 
 namespace feel::detail {
 
 struct PaddleContactParams {
-    double mass = 1;           // m, force units per (position unit/s²), > 0
-    double stiffness = 1;      // k, force units per position unit, > 0
-    double damping = 0;        // b, force units per (position unit/s), >= 0
-    double gravity = 0;        // g, position units/s² toward the paddle (along −n), any sign
-    double damper_offset = 0;  // δ, position units/s: the damper reads v + δ
+    float mass = 1;           // m, force units per (position unit/s²), > 0
+    float stiffness = 1;      // k, force units per position unit, > 0
+    float damping = 0;        // b, force units per (position unit/s), >= 0
+    float gravity = 0;        // g, position units/s² toward the paddle (along −n), any sign
+    float damper_offset = 0;  // δ, position units/s: the damper reads v + δ
 };
 
 struct PaddleContact {
-    double y = 0;           // position units, along n from the paddle's rest plane
-    double v = 0;           // position units/s, dy/dt
-    bool pressed = false;   // the ball is pressing the paddle (F > 0)
-    double contact_s = 0;   // time spent pressing, s, accumulated
+    float y = 0;           // position units, along n from the paddle's rest plane
+    float v = 0;           // position units/s, dy/dt
+    bool pressed = false;  // the ball is pressing the paddle (F > 0)
+    float contact_s = 0;   // time spent pressing, s, accumulated
 };
 
 // The contact's push on the ball along n in state (y, v), force units, >= 0.
-[[nodiscard]] double paddle_contact_force(const PaddleContactParams& p, double y, double v) noexcept;
+[[nodiscard]] float paddle_contact_force(const PaddleContactParams& p, float y, float v) noexcept;
 
 // Whether a ball in state (y, v) presses the paddle: y < 0 and the push is positive.
-[[nodiscard]] bool paddle_presses(const PaddleContactParams& p, double y, double v) noexcept;
+[[nodiscard]] bool paddle_presses(const PaddleContactParams& p, float y, float v) noexcept;
 
 // Advances the contact exactly by dt_s (>= 0), stage changes included. Returns the impulse
 // the paddle gave the ball along n over the step, force units·s (>= 0), from the momentum
 // balance m·Δv = J − m·g·dt.
-double advance_paddle_contact(PaddleContact& c, const PaddleContactParams& p, double dt_s) noexcept;
+float advance_paddle_contact(PaddleContact& c, const PaddleContactParams& p, float dt_s) noexcept;
 
 }  // namespace feel::detail

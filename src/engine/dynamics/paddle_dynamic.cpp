@@ -102,29 +102,26 @@ struct Paddle {
         along_n.v = along(normal, ball.velocity) - handle_speed;
         along_n.pressed = ball.pressed;
         along_n.contact_s = ball.contact_s;
-        const float start_y = along(normal, ball.offset);
-        const float start_v = along(normal, ball.velocity) - handle_speed;
+        const float start_y = along_n.y;
+        const float start_v = along_n.v;
         const float drifted_y = start_y + start_v * h;
-        // The contact's exact step is tether_step's, in double (paddle_contact.hpp): the
-        // ball's state goes in and comes out rounded to float once.
-        const float push = static_cast<float>(advance_paddle_contact(along_n, law, h));
-        const float end_y = static_cast<float>(along_n.y);
-        const float end_v = static_cast<float>(along_n.v);
+        // The contact's exact step (paddle_contact.hpp, float as the ball).
+        const float push = advance_paddle_contact(along_n, law, h);
         for (int a : kPlane) {
-            ball.offset[a] += (ball.velocity[a] - handle.velocity[a]) * h + normal[a] * (end_y - drifted_y);
-            ball.velocity[a] += normal[a] * (end_v - start_v);
+            ball.offset[a] += (ball.velocity[a] - handle.velocity[a]) * h + normal[a] * (along_n.y - drifted_y);
+            ball.velocity[a] += normal[a] * (along_n.v - start_v);
             impulse[a] = push * normal[a];
         }
         ball.pressed = along_n.pressed;
-        ball.contact_s = static_cast<float>(along_n.contact_s);
+        ball.contact_s = along_n.contact_s;
     }
 
     // The push on the handle now: the reaction of the contact's push on the ball.
     // (ball_tick calls it after ball_expected_path: the offset is to the handle sensed now.)
     void reaction(const BallMotion& ball, const DynamicContext& c, float force[kMaxAxes]) const noexcept {
         if (!ball.pressed) return;
-        const float push = static_cast<float>(paddle_contact_force(
-            contact, along(normal, ball.offset), along(normal, ball.velocity) - along(normal, c.velocity)));
+        const float push = paddle_contact_force(contact, along(normal, ball.offset),
+                                                along(normal, ball.velocity) - along(normal, c.velocity));
         for (int a : kPlane) force[a] -= push * normal[a];
     }
 };

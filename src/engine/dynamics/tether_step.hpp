@@ -30,9 +30,10 @@
 //
 // Precision. The control laws use it in float (SpringDamperF: issue 14, a Cortex-M4F has a
 // single-precision FPU only; docs/dynamics.md, "Precision", says what float costs and why
-// it is enough); the same template in double serves a caller that still computes in double
-// (the paddle's contact). In float the sine and cosine are turn_trig.hpp's (the same bits
-// on every platform), the exponentials libm's float ones; in double, libm's.
+// it is enough), and so does the paddle's contact (paddle_contact.hpp); the same template in
+// double is the tests' reference (no engine code instantiates it). In float the sine and
+// cosine are turn_trig.hpp's (the same bits on every platform), the exponentials libm's
+// float ones; in double, libm's.
 //
 // Real-time safe: no allocation, no exceptions, no state.
 #pragma once
@@ -58,7 +59,7 @@ struct BasicMassState {
 
 using SpringDamper = BasicSpringDamper<double>;
 using MassState = BasicMassState<double>;
-using SpringDamperF = BasicSpringDamper<float>;  // the control laws'
+using SpringDamperF = BasicSpringDamper<float>;  // the control laws' and the paddle's
 using MassStateF = BasicMassState<float>;
 
 // The scalar of a step's time and level: the state's own (not deduced from the argument, so
@@ -110,7 +111,7 @@ template <typename T>
 }  // namespace feel::detail
 
 // The definitions: a template, so that each precision is compiled where it is used. The
-// float one, the control laws', once in tether_step.cpp (declared extern there).
+// float one, the engine's, once in tether_step.cpp (declared extern here).
 #include "dynamics/tether_step_impl.hpp"
 
 namespace feel::detail {

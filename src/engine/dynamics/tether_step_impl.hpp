@@ -17,12 +17,15 @@ namespace tether_step_impl {
 // Cortex-M4F, and no libm sinf with its argument reduction for angles up to 10^38 in the
 // board's flash. An angle is a float of some ulp, so beyond 2^22 turns it holds whole or
 // half turns only; the fraction of a turn is taken exactly first (sin_turns wants |p| < 2^22).
+// From 2^23 on a float is a whole number (of turns: the fraction is 0), and below it the
+// whole turns fit an int32: no conversion to int64, whose routine on the Cortex-M4F
+// (__aeabi_f2lz) computes in soft-float double.
 inline float turns_of(float radians) noexcept {
     constexpr float kTurnsPerRadian = 0.159154943091895335769f;  // 1/2π
     const float p = radians * kTurnsPerRadian;
     if (std::fabs(p) < 0x1p22f) return p;
-    if (!(std::fabs(p) < 0x1p62f)) return p == p ? 0.0f : p;  // an even number of half turns, or NaN
-    return p - static_cast<float>(static_cast<int64_t>(p));
+    if (!(std::fabs(p) < 0x1p23f)) return p == p ? 0.0f : p;  // whole turns, or NaN
+    return p - static_cast<float>(static_cast<int32_t>(p));
 }
 inline float sin_of(float x) noexcept {
     const float p = turns_of(x);

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "conditions/passivity.hpp"
@@ -226,5 +228,33 @@ RC_GTEST_PROP(PassivityController, StaysWithinItsBounds, ()) {
     RC_ASSERT(generated_energy(state) >= 0.0);
 }
 
+
+// The ledger's conversion against the cast it replaces (on x86 the cast is exact by the
+// language's definition): every float from the edges of each binade up to 2^62, both
+// signs, with the values either side of each, and the two ends of int32.
+TEST(LedgerConversion, TruncatesToInt64AsTheCastDoes) {
+    int checked = 0;
+    for (int e = -2; e <= 62; ++e) {
+        const float base = std::ldexp(1.0f, e);
+        for (float x : {base, std::nextafter(base, 0.0f), std::nextafter(base, 2 * base), base * 1.5f,
+                        std::nextafter(base * 1.5f, 0.0f), base * 1.999999f}) {
+            for (float s : {x, -x}) {
+                ASSERT_EQ(truncate_to_int64(s), static_cast<int64_t>(s)) << "x = " << s;
+                ++checked;
+            }
+        }
+    }
+    for (float x : {2147483520.0f, 2147483648.0f, -2147483648.0f, -2147483520.0f, 0.0f, -0.0f, 0.99f, -0.99f}) {
+        EXPECT_EQ(truncate_to_int64(x), static_cast<int64_t>(x)) << "x = " << x;
+    }
+    EXPECT_GT(checked, 700);
+}
+
+RC_GTEST_PROP(LedgerConversion, AgreesWithTheCastOnAnyFloatInRange, (uint32_t bits)) {
+    float x = 0;
+    std::memcpy(&x, &bits, sizeof x);
+    RC_PRE(std::isfinite(x) && std::fabs(x) < 0x1p62f);
+    RC_ASSERT(truncate_to_int64(x) == static_cast<int64_t>(x));
+}
 }  // namespace
 }  // namespace feel::detail
