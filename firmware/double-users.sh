@@ -27,6 +27,10 @@ cut -f2 "$list.raw" | arm-none-eabi-c++filt | sed -E 's/(feel::)?(detail::)?(\(a
 paste <(cut -f1,3 "$list.raw") "$list.names" >"$list"
 rm -f "$list.raw" "$list.names"
 total=$(awk -F'\t' '{ n += $2 } END { print n + 0 }' "$list")
+if [[ $total -eq 0 ]]; then
+    echo "double precision in the engine: none (no function calls a soft-float double or libm double routine)"
+    exit 0
+fi
 echo "double precision in the engine: $(wc -l <"$list") functions call soft-float double or libm double routines $total times, by source file (the functions: $list):"
 awk -F'\t' '{ n[$1] += 1; c[$1] += $2 }
     END { for (f in n) printf "  %-26s %4d calls in %d function%s\n", f, c[f], n[f], n[f] == 1 ? "" : "s" }' "$list" | sort -k2,2nr
