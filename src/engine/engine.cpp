@@ -18,6 +18,8 @@
 
 #include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include "conditions/condition.hpp"
 #include "conditions/contact_surface.hpp"
@@ -106,39 +108,82 @@ struct SlingPairing {
 
 }  // namespace
 
+namespace {
+
+// check_engine_config's fields as tables, in the order they are checked (the first that
+// fails is the error): on the Cortex-M4 build, where flash is counted (docs/firmware.md),
+// each check written out as code built its own 88-byte Error (976 bytes for the function);
+// a row is 12 or 8 bytes.
+struct ConfigCountRule {
+    const char* name;
+    uint16_t offset;  // of an int32_t in EngineConfig
+    int32_t max;      // kUpToMaxEffects: the device's max_effects
+    int32_t min;
+};
+constexpr int32_t kUpToMaxEffects = -1;
+
+struct ConfigScaleRule {
+    const char* name;
+    uint16_t offset;  // of a float in EngineConfig
+    bool zero_allowed;
+};
+
+constexpr ConfigCountRule kConfigCounts[] = {
+    {"axis_count", offsetof(EngineConfig, axis_count), kMaxAxes, 1},
+    {"max_effects", offsetof(EngineConfig, max_effects), 65535, 1},
+    {"max_samples", offsetof(EngineConfig, max_samples), 1 << 24, 0},
+    {"pool_bytes", offsetof(EngineConfig, pool_bytes), 1 << 30, 0},
+    {"max_dynamics", offsetof(EngineConfig, max_dynamics), kUpToMaxEffects, 0},
+    {"max_stateful_conditions", offsetof(EngineConfig, max_stateful_conditions), kUpToMaxEffects, 0},
+    {"report_capacity", offsetof(EngineConfig, report_capacity), 65535, 1},  // after the scales
+};
+
+constexpr ConfigScaleRule kConfigScales[] = {
+    {"velocity_ref", offsetof(EngineConfig, velocity_ref), false},
+    {"acceleration_ref", offsetof(EngineConfig, acceleration_ref), false},
+    {"sensor_step", offsetof(EngineConfig, sensor_step), false},
+    {"device_damping", offsetof(EngineConfig, device_damping), true},
+    {"device_mass", offsetof(EngineConfig, device_mass), true},
+    {"wall_stiffness", offsetof(EngineConfig, wall_stiffness), false},
+    {"dynamic_mass_ref", offsetof(EngineConfig, dynamic_mass_ref), false},
+    {"dynamic_stiffness_ref", offsetof(EngineConfig, dynamic_stiffness_ref), false},
+    {"dynamic_damping_ref", offsetof(EngineConfig, dynamic_damping_ref), false},
+    {"gravity_ref", offsetof(EngineConfig, gravity_ref), false},
+};
+
+// The counts in rules[first, last) into `out`; whether one failed.
+bool refuse_config_counts(const EngineConfig& c, int first, int last, Error& out) noexcept {
+    for (int i = first; i < last; ++i) {
+        const ConfigCountRule& r = kConfigCounts[i];
+        int32_t value = 0;
+        std::memcpy(&value, reinterpret_cast<const unsigned char*>(&c) + r.offset, sizeof value);
+        const Range allowed{r.min, r.max == kUpToMaxEffects ? c.max_effects : r.max};
+        if (!allowed.contains(value)) {
+            out = Error::out_of_range(r.name, value, allowed);
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
 Error detail::check_engine_config(const EngineConfig& c) noexcept {
-    if (!Range{1, kMaxAxes}.contains(c.axis_count)) return Error::out_of_range("axis_count", c.axis_count, {1, kMaxAxes});
-    if (!Range{1, 65535}.contains(c.max_effects)) return Error::out_of_range("max_effects", c.max_effects, {1, 65535});
-    if (!Range{0, 1 << 24}.contains(c.max_samples)) return Error::out_of_range("max_samples", c.max_samples, {0, 1 << 24});
-    if (!Range{0, 1 << 30}.contains(c.pool_bytes)) return Error::out_of_range("pool_bytes", c.pool_bytes, {0, 1 << 30});
-    if (!Range{0, c.max_effects}.contains(c.max_dynamics))
-        return Error::out_of_range("max_dynamics", c.max_dynamics, {0, c.max_effects});
-    if (!Range{0, c.max_effects}.contains(c.max_stateful_conditions))
-        return Error::out_of_range("max_stateful_conditions", c.max_stateful_conditions, {0, c.max_effects});
-    if (!(c.velocity_ref > 0) || !std::isfinite(c.velocity_ref))
-        return Error::invalid("velocity_ref", "must be a finite number > 0");
-    if (!(c.acceleration_ref > 0) || !std::isfinite(c.acceleration_ref))
-        return Error::invalid("acceleration_ref", "must be a finite number > 0");
-    if (!(c.sensor_step > 0) || !std::isfinite(c.sensor_step))
-        return Error::invalid("sensor_step", "must be a finite number > 0");
-    if (!(c.device_damping >= 0) || !std::isfinite(c.device_damping))
-        return Error::invalid("device_damping", "must be a finite number >= 0");
-    if (!(c.device_mass >= 0) || !std::isfinite(c.device_mass))
-        return Error::invalid("device_mass", "must be a finite number >= 0");
-    if (!(c.wall_stiffness > 0) || !std::isfinite(c.wall_stiffness))
-        return Error::invalid("wall_stiffness", "must be a finite number > 0");
-    const float dynamic_refs[] = {c.dynamic_mass_ref, c.dynamic_stiffness_ref, c.dynamic_damping_ref, c.gravity_ref};
-    const char* dynamic_names[] = {"dynamic_mass_ref", "dynamic_stiffness_ref", "dynamic_damping_ref", "gravity_ref"};
-    for (int i = 0; i < 4; ++i) {
-        if (!(dynamic_refs[i] > 0) || !std::isfinite(dynamic_refs[i]))
-            return Error::invalid(dynamic_names[i], "must be a finite number > 0");
+    Error out;
+    constexpr int kReportCapacity = 6;  // kConfigCounts' last row, checked after the scales
+    if (refuse_config_counts(c, 0, kReportCapacity, out)) return out;
+    for (const ConfigScaleRule& r : kConfigScales) {
+        float v = 0.0f;
+        std::memcpy(&v, reinterpret_cast<const unsigned char*>(&c) + r.offset, sizeof v);
+        if (!(r.zero_allowed ? v >= 0 : v > 0) || !std::isfinite(v)) {
+            return Error::invalid(r.name, r.zero_allowed ? "must be a finite number >= 0"
+                                                         : "must be a finite number > 0");
+        }
     }
     if (!(c.interim_report_hz >= 1.0f && c.interim_report_hz <= 1000.0f))
         return Error::invalid("interim_report_hz", "must be between 1 and 1000 Hz");
-    if (!Range{1, 65535}.contains(c.report_capacity))
-        return Error::out_of_range("report_capacity", c.report_capacity, {1, 65535});
-    if (Error e = detail::check_supported_types(c)) return e;
-    return {};
+    if (refuse_config_counts(c, kReportCapacity, kReportCapacity + 1, out)) return out;
+    return detail::check_supported_types(c);
 }
 
 int64_t detail::period_us_of(float hz) noexcept {

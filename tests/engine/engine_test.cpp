@@ -1,5 +1,6 @@
 // The engine's common machinery: gains, summing, clamping, slots and handles.
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "engine_fixture.hpp"
@@ -138,6 +139,67 @@ TEST_F(EngineMachinery, InvalidConfigRefusesEveryCreate) {
     TickOutput out;
     bad.tick(TickInput{}, out);
     EXPECT_EQ(out.force[0], 0.0f);
+}
+
+// Every field of EngineConfig with a rule, just outside it: the refusal names the field and
+// the value with the range engine.hpp documents, or the rule's sentence, in the order the
+// fields are checked (the config is otherwise the default).
+TEST_F(EngineMachinery, InvalidConfigNamesTheFieldAndItsRange) {
+    struct Case {
+        void (*set)(EngineConfig&);
+        const char* field;
+        int64_t value, min, max;  // for a range
+        const char* rule;         // else
+    };
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    const Case cases[] = {
+        {[](EngineConfig& c) { c.axis_count = 0; }, "axis_count", 0, 1, kMaxAxes, nullptr},
+        {[](EngineConfig& c) { c.max_effects = 65536; }, "max_effects", 65536, 1, 65535, nullptr},
+        {[](EngineConfig& c) { c.max_samples = (1 << 24) + 1; }, "max_samples", (1 << 24) + 1, 0, 1 << 24, nullptr},
+        {[](EngineConfig& c) { c.pool_bytes = -1; }, "pool_bytes", -1, 0, 1 << 30, nullptr},
+        {[](EngineConfig& c) { c.max_effects = 8, c.max_dynamics = 9; }, "max_dynamics", 9, 0, 8, nullptr},
+        {[](EngineConfig& c) { c.max_effects = 8, c.max_stateful_conditions = 9; }, "max_stateful_conditions", 9, 0, 8,
+         nullptr},
+        {[](EngineConfig& c) { c.velocity_ref = 0; }, "velocity_ref", 0, 0, 0, "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.acceleration_ref = kNaN; }, "acceleration_ref", 0, 0, 0,
+         "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.sensor_step = -1; }, "sensor_step", 0, 0, 0, "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.device_damping = -1; }, "device_damping", 0, 0, 0, "must be a finite number >= 0"},
+        {[](EngineConfig& c) { c.device_mass = kNaN; }, "device_mass", 0, 0, 0, "must be a finite number >= 0"},
+        {[](EngineConfig& c) { c.wall_stiffness = 0; }, "wall_stiffness", 0, 0, 0, "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.dynamic_mass_ref = 0; }, "dynamic_mass_ref", 0, 0, 0, "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.dynamic_stiffness_ref = -2; }, "dynamic_stiffness_ref", 0, 0, 0,
+         "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.dynamic_damping_ref = kNaN; }, "dynamic_damping_ref", 0, 0, 0,
+         "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.gravity_ref = 0; }, "gravity_ref", 0, 0, 0, "must be a finite number > 0"},
+        {[](EngineConfig& c) { c.interim_report_hz = 1001; }, "interim_report_hz", 0, 0, 0,
+         "must be between 1 and 1000 Hz"},
+        {[](EngineConfig& c) { c.report_capacity = 0; }, "report_capacity", 0, 1, 65535, nullptr},
+    };
+    for (const Case& k : cases) {
+        EngineConfig c;
+        k.set(c);
+        const Error e = Engine(c).create(constant_on_x(1000, kInfiniteUs)).error;
+        EXPECT_EQ(e.code, ErrorCode::invalid_parameter) << k.field;
+        EXPECT_STREQ(e.field, k.field);
+        EXPECT_EQ(e.has_range, k.rule == nullptr) << k.field;
+        if (k.rule == nullptr) {
+            EXPECT_EQ(e.value, k.value) << k.field;
+            EXPECT_EQ(e.allowed.min, k.min) << k.field;
+            EXPECT_EQ(e.allowed.max, k.max) << k.field;
+        } else {
+            EXPECT_STREQ(e.rule, k.rule);
+        }
+    }
+    // Two faults: the first in the order of the checks is named (the counts before the scales,
+    // report_capacity after them).
+    EngineConfig two;
+    two.report_capacity = 0;
+    two.gravity_ref = 0;
+    EXPECT_STREQ(Engine(two).create(constant_on_x(1000, kInfiniteUs)).error.field, "gravity_ref");
+    two.max_effects = 0;
+    EXPECT_STREQ(Engine(two).create(constant_on_x(1000, kInfiniteUs)).error.field, "max_effects");
 }
 
 TEST_F(EngineMachinery, InvalidParamsAreRefusedByTheSharedValidator) {
