@@ -43,7 +43,6 @@
 #include <cstddef>
 #include <cstring>
 #include <span>
-#include <string_view>
 
 #include "effect_field_rules.hpp"
 
@@ -108,7 +107,7 @@ public:
         return add(digits + n);
     }
 
-    [[nodiscard]] std::string_view view() const noexcept { return {buf_, len_}; }
+    [[nodiscard]] const char* c_str() const noexcept { return buf_; }
 
 private:
     char buf_[48] = {};
@@ -118,28 +117,38 @@ private:
 // Every check below returns true when it refuses the effect, having written why into `out`,
 // the one Error validate_effect returns: on the Cortex-M4 an Error (88 bytes) handed back by
 // value through each caller was copied at every level. The range goes by reference (16
-// bytes by value at each call).
-[[nodiscard]] bool refuse(Error& out, std::string_view field, const char* rule) noexcept {
-    out = Error::invalid(field, rule);
+// bytes by value at each call). The refusal is written in place, from the field's C string
+// (the bytes Error::invalid and Error::out_of_range write): their string_view of a C string
+// was an out-of-line strlen at each call site, and the Error they return a temporary copied
+// into `out`.
+[[nodiscard]] bool refuse_with(Error& out, const char* field, const char* rule, const Range* allowed,
+                               int64_t value) noexcept {
+    out = Error{};
+    out.code = ErrorCode::invalid_parameter;
+    for (size_t i = 0; i + 1 < sizeof out.field && field[i] != '\0'; ++i) out.field[i] = field[i];
+    out.rule = rule;
+    if (allowed != nullptr) {
+        out.value = value;
+        out.allowed = *allowed;
+        out.has_range = true;
+    }
     return true;
 }
 
 [[nodiscard]] bool refuse(Error& out, const char* field, const char* rule) noexcept {
-    return refuse(out, std::string_view(field), rule);
+    return refuse_with(out, field, rule, nullptr, 0);
 }
 
-[[nodiscard]] bool in_range(std::string_view field, int64_t value, const Range& allowed, Error& out) noexcept {
-    if (allowed.contains(value)) return false;
-    out = Error::out_of_range(field, value, allowed);
-    return true;
+[[nodiscard]] bool refuse(Error& out, const Path& field, const char* rule) noexcept {
+    return refuse(out, field.c_str(), rule);
 }
 
 [[nodiscard]] bool in_range(const char* field, int64_t value, const Range& allowed, Error& out) noexcept {
-    return in_range(std::string_view(field), value, allowed, out);
+    return !allowed.contains(value) && refuse_with(out, field, "is out of range", &allowed, value);
 }
 
 [[nodiscard]] bool in_range(const Path& field, int64_t value, const Range& allowed, Error& out) noexcept {
-    return in_range(field.view(), value, allowed, out);
+    return in_range(field.c_str(), value, allowed, out);
 }
 
 // --- the field table ------------------------------------------------------------------
@@ -167,9 +176,7 @@ private:
         if (index >= 0) field.index(index);
         if (*block != '\0') field.add(".");
         field.add(r.name);
-        out = choice ? Error::invalid(field.view(), kChoices[r.check - kChoice].rule)
-                     : Error::out_of_range(field.view(), value, allowed);
-        return true;
+        return choice ? refuse(out, field, kChoices[r.check - kChoice].rule) : in_range(field, value, allowed, out);
     }
     return false;
 }
@@ -214,7 +221,7 @@ private:
         if (in_range(Path("axes").index(i), a, Range{0, kMaxAxes - 1}, out)) return true;
         for (int j = 0; j < i; ++j) {
             if (p.axes[j] == p.axes[i]) {
-                return refuse(out, Path("axes").index(i).view(),
+                return refuse(out, Path("axes").index(i),
                                       "an axis may appear only once in an effect's axes");
             }
         }
@@ -282,7 +289,7 @@ private:
 [[nodiscard]] bool check_vector(const EffectParams& p, const char* name, Error& out) noexcept {
     // Distinct axes of one kind are at most three; this guards value[3] all the same.
     if (p.axis_count > 3) {
-        return refuse(out, Path("direction.").add(name).view(),
+        return refuse(out, Path("direction.").add(name),
                               "a cartesian or moments direction has at most 3 components, "
                               "one per axis");
     }
@@ -295,7 +302,7 @@ private:
         any = any || v != 0;
     }
     if (!any) {
-        return refuse(out, Path("direction.").add(name).view(),
+        return refuse(out, Path("direction.").add(name),
                               "the zero vector names no direction");
     }
     return false;
@@ -371,7 +378,7 @@ private:
     if (check_fields("conditions", i, &c, kOffsetMode, out)) return true;
     if (c.offset_mode == OffsetMode::relative && type != EffectType::spring &&
         type != EffectType::angle_spring) {
-        return refuse(out, Path("conditions").index(i).add(".offset_mode").view(),
+        return refuse(out, Path("conditions").index(i).add(".offset_mode"),
                               "a relative offset is a position (the handle's at the start), so "
                               "only springs take it; damper, inertia and friction offsets are "
                               "absolute");
@@ -393,7 +400,7 @@ private:
     if (check_condition_block(p.conditions[0], 0, p.type, out)) return true;
     for (int i = 1; i < p.axis_count; ++i) {
         if (!(p.conditions[i] == ConditionBlock{})) {
-            return refuse(out, Path("conditions").index(i).view(),
+            return refuse(out, Path("conditions").index(i),
                                   "a condition with a direction has one block, conditions[0], applied "
                                   "along the direction; leave the others at their defaults, or give "
                                   "one block per axis and no direction");
@@ -411,7 +418,7 @@ private:
     if (angled) {
         if (in_range(Path(block).add(".angle"), angle, range::kAngle, out)) return true;
     } else if (angle != 0) {
-        return refuse(out, Path(block).add(".angle").view(), axis_rule);
+        return refuse(out, Path(block).add(".angle"), axis_rule);
     }
     return check_fields(block, base, tail, out);
 }
