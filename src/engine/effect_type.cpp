@@ -2,6 +2,7 @@
 #include "feel/effect_type.hpp"
 
 #include <array>
+#include <cstdint>
 
 namespace feel {
 namespace {
@@ -49,21 +50,52 @@ constexpr std::array<TypeInfo, kEffectTypeCount> kTypes = {{
     {"dynamic_paddle", EffectClass::dynamic, false},
 }};
 
-constexpr const TypeInfo& info(EffectType t) noexcept { return kTypes[static_cast<size_t>(t)]; }
+// What the functions below read, built from kTypes at compile time (kTypes itself is not
+// kept): a name's start and length and a byte of class and envelope, 6 bytes a type
+// against kTypes' 12 (a string_view, 8, and 2 bytes padded to 4). On the Cortex-M4 build
+// flash is counted (docs/firmware.md).
+struct TypeTables {
+    const char* name[kEffectTypeCount];
+    uint8_t name_length[kEffectTypeCount];
+    uint8_t traits[kEffectTypeCount];  // the class in bits 0..1, envelope support in bit 2
+};
+
+constexpr uint8_t kEnvelopeBit = 4;
+
+constexpr TypeTables type_tables() noexcept {
+    TypeTables t{};
+    for (size_t i = 0; i < kTypes.size(); ++i) {
+        t.name[i] = kTypes[i].name.data();
+        t.name_length[i] = static_cast<uint8_t>(kTypes[i].name.size());
+        t.traits[i] = static_cast<uint8_t>(static_cast<uint8_t>(kTypes[i].cls) | (kTypes[i].envelope ? kEnvelopeBit : 0));
+    }
+    return t;
+}
+
+constexpr TypeTables kTypeTables = type_tables();
+static_assert(static_cast<int>(EffectClass::dynamic) < kEnvelopeBit, "the class fits below the envelope bit");
 
 }  // namespace
 
-std::string_view effect_type_name(EffectType t) noexcept { return info(t).name; }
+std::string_view effect_type_name(EffectType t) noexcept {
+    const auto i = static_cast<size_t>(t);
+    return {kTypeTables.name[i], kTypeTables.name_length[i]};
+}
 
 std::optional<EffectType> effect_type_from_name(std::string_view name) noexcept {
-    for (size_t i = 0; i < kTypes.size(); ++i) {
-        if (kTypes[i].name == name) return static_cast<EffectType>(i);
+    for (int i = 0; i < kEffectTypeCount; ++i) {
+        if (effect_type_name(static_cast<EffectType>(i)) == name) return static_cast<EffectType>(i);
     }
     return std::nullopt;
 }
 
-EffectClass effect_class(EffectType t) noexcept { return info(t).cls; }
-bool supports_envelope(EffectType t) noexcept { return info(t).envelope; }
+EffectClass effect_class(EffectType t) noexcept {
+    return static_cast<EffectClass>(kTypeTables.traits[static_cast<size_t>(t)] & (kEnvelopeBit - 1));
+}
+
+bool supports_envelope(EffectType t) noexcept {
+    return (kTypeTables.traits[static_cast<size_t>(t)] & kEnvelopeBit) != 0;
+}
 
 bool is_periodic(EffectType t) noexcept {
     return t >= EffectType::sine && t <= EffectType::saw_down;
