@@ -148,7 +148,7 @@ int64_t detail::period_us_of(float hz) noexcept {
     const int64_t significand = (bits & 0x7fffffu) | 0x800000u;  // hz is normal (1..1000)
     // 1..1000 Hz: the exponent is -23..-14, so the dividend stays below 2^43; the significand
     // is 24 bits, so the board divides it without a 64-bit division (time_division.hpp).
-    return divide_time(int64_t{1'000'000} << -exponent, static_cast<int32_t>(significand)).quotient;
+    return time_quotient(int64_t{1'000'000} << -exponent, static_cast<int32_t>(significand));
 }
 
 void detail::prepare_slot(Slot& s) noexcept {

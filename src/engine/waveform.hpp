@@ -41,7 +41,7 @@ namespace feel::detail {
 // remainder; only an endless wave past 2^31 µs (36 minutes) takes the 64-bit one (time_division.hpp).
 [[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, int32_t phase) noexcept {
     const int32_t into_cycle = tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
-                                                   : divide_time(tau_us, period_us).remainder;
+                                                   : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
     float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) +
               static_cast<float>(phase) * (1.0f / 36000.0f);
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.

@@ -16,7 +16,8 @@ namespace {
 // The frame playing at τ.
 const int16_t* frame_at(const SlotCustomBlock& c, const int16_t* samples, int64_t tau_us) noexcept {
     const int32_t frames = c.sample_count / c.channels;  // ≥ 1: the validator's sample count
-    const int64_t frame = divide_time(divide_time(tau_us, c.sample_period_us).quotient, frames).remainder;
+    const int64_t played = time_quotient(tau_us, c.sample_period_us);  // frames since τ = 0
+    const int64_t frame = played - time_quotient(played, frames) * frames;
     return samples + frame * c.channels;
 }
 
