@@ -15,7 +15,12 @@ image=$((text + data))
 echo "feel on a Cortex-M4F (-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os, the engine link-time optimised, FEEL_MAX_AXES=2):"
 echo "flash (bytes; goal 49152 for the engine with what it calls):"
 printf '  engine            %6d  (its code and constants)\n' "$engine"
-printf '  libgcc            %6d  (64-bit division and int64 -> float conversion: called by the engine)\n' "$libgcc"
+if [ "$libgcc" -eq 0 ]; then
+    libgcc_what='none called: the engine divides times and converts int64 to float in 32 bits itself'
+else
+    libgcc_what='called by the engine: 64-bit division or int64 -> float conversion, most likely'
+fi
+printf '  libgcc            %6d  (%s)\n' "$libgcc" "$libgcc_what"
 printf '  libm              %6d  (float expf, expm1f, tanhf, sqrtf, roundf, ... from newlib: called by the engine; no double function is linked)\n' "$libm"
 printf '  engine + callees  %6d  goal 49152\n' $((engine + libgcc + libm))
 printf '  C runtime         %6d  (newlib: printf, exit, semihosting for the harness; malloc for the engine at start-up)\n' "$runtime"

@@ -30,6 +30,7 @@
 #include "feel/effect_validation.hpp"
 #include "motion_estimator.hpp"
 #include "sample_pool.hpp"
+#include "time_division.hpp"
 #include "waves/wave.hpp"
 
 namespace feel {
@@ -190,9 +191,9 @@ int64_t detail::period_us_of(float hz) noexcept {
     const auto bits = std::bit_cast<uint32_t>(hz);
     const int exponent = static_cast<int>(bits >> 23) - 150;    // hz = significand · 2^exponent
     const int64_t significand = (bits & 0x7fffffu) | 0x800000u;  // hz is normal (1..1000)
-    // 1..1000 Hz: the exponent is -23..-14, so the dividend stays below 2^43. Signed: the
-    // board's library has the signed 64-bit division already (the effects' clocks).
-    return (int64_t{1'000'000} << -exponent) / significand;
+    // 1..1000 Hz: the exponent is -23..-14, so the dividend stays below 2^43; the significand
+    // is 24 bits, so the board divides it without a 64-bit division (time_division.hpp).
+    return time_quotient(int64_t{1'000'000} << -exponent, static_cast<int32_t>(significand));
 }
 
 void detail::prepare_slot(Slot& s) noexcept {

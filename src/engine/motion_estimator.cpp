@@ -92,6 +92,8 @@
 
 #include <cmath>
 
+#include "int64_to_float.hpp"
+
 namespace feel::detail {
 namespace {
 
@@ -149,10 +151,14 @@ float det3(float a, float b, float c, float d, float e, float f, float g, float 
 
 // Σ m^p·X over m = 0..n-1 for a constant X (p = 0, 1, 2): a window at rest, or the newest
 // sample's share of a window's sums. Exact in 64-bit integers.
-void constant_sums(int64_t n, int64_t value, int64_t out[3]) noexcept {
+// n is a window's length in samples, at most kHistory: Σ m and Σ m² are int32 (the division
+// by 2 and 6 stays 32-bit: a Cortex-M4 has no 64-bit division in hardware) and exact.
+static_assert((MotionEstimator::kHistory - 1) * MotionEstimator::kHistory * (2 * MotionEstimator::kHistory - 1) <=
+              INT32_MAX);
+void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[0] = n * value;
-    out[1] = n * (n - 1) / 2 * value;
-    out[2] = (n - 1) * n * (2 * n - 1) / 6 * value;
+    out[1] = int64_t{n * (n - 1) / 2} * value;
+    out[2] = int64_t{(n - 1) * n * (2 * n - 1) / 6} * value;
 }
 
 // Where the running-sum fits start their downward search: kRungsUp above the rung accepted
@@ -345,8 +351,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     sums_axes_ = axes;
 
     refresh_time_pattern();
-    newest_interval_u_ = count_ >= 2 ? static_cast<float>(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
-    frozen_interval_u_ = static_cast<float>(frozen_interval_us_) * kUnitsPerUs;
+    newest_interval_u_ = count_ >= 2 ? float_of_int64(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
+    frozen_interval_u_ = float_of_int64(frozen_interval_us_) * kUnitsPerUs;
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
     for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
@@ -451,9 +457,9 @@ void MotionEstimator::window_sums(int axis, int r, int64_t x0, float out[3]) con
     int64_t newest[3];
     constant_sums(n, x0, newest);
     const float unit = fixed_unit_;
-    const float sy = static_cast<float>(s[0] - newest[0]) * unit;
-    const float smy = static_cast<float>(s[1] - newest[1]) * unit;
-    const float smmy = static_cast<float>(s[2] - newest[2]) * unit;
+    const float sy = float_of_int64(s[0] - newest[0]) * unit;
+    const float smy = float_of_int64(s[1] - newest[1]) * unit;
+    const float smmy = float_of_int64(s[2] - newest[2]) * unit;
     const float alpha = newest_interval_u_;
     const float beta = frozen_interval_u_;
     out[0] = sy;
@@ -466,7 +472,12 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     // Steady: every interval in the window is T, so max_n follows from T alone, and the
     // pattern is the one already computed if it was computed for the same T and max_n.
     if (count_ >= 2 && steady_interval_us_ > 0) {
-        const int64_t fit = kMaxWindowUs / steady_interval_us_;
+        // The quotient in 32 bits (a Cortex-M4 has no 64-bit division): an interval longer
+        // than the window fits no whole interval in it.
+        static_assert(kMaxWindowUs <= INT32_MAX);
+        const int32_t fit = steady_interval_us_ > kMaxWindowUs
+                                ? 0
+                                : static_cast<int32_t>(kMaxWindowUs) / static_cast<int32_t>(steady_interval_us_);
         int max_n = count_ - 1;
         if (fit < max_n) max_n = fit < 1 ? 1 : static_cast<int>(fit);
         if (steady_run_ >= max_n && p.steady_interval_us == steady_interval_us_ && p.max_n == max_n) return;
@@ -475,7 +486,7 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     for (int i = 0; i < count_; ++i) {
         const int64_t age_us = elapsed_us(t_low_[head_], t_low_[(head_ + i) & kMask]);
         if (i > 1 && age_us > kMaxWindowUs) break;  // the newest two samples are always usable
-        p.u[i] = -static_cast<float>(age_us) * kUnitsPerUs;
+        p.u[i] = -float_of_int64(age_us) * kUnitsPerUs;
         max_n = i;
     }
     p.max_n = max_n;

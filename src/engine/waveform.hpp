@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "feel/effect_type.hpp"
+#include "time_division.hpp"
 #include "turn_trig.hpp"
 
 namespace feel::detail {
@@ -37,10 +38,10 @@ namespace feel::detail {
 // taken in integers first, so that long times keep full precision. A wave of finite
 // duration has τ below it (at most 65e6 µs), so the remainder is a 32-bit one (a Cortex-M4
 // divides 32 bits in hardware, 64 in a library call) and the same integer as the 64-bit
-// remainder; only an endless wave past 2^31 µs (36 minutes) takes the 64-bit one.
+// remainder; only an endless wave past 2^31 µs (36 minutes) takes the 64-bit one (time_division.hpp).
 [[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, int32_t phase) noexcept {
     const int32_t into_cycle = tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
-                                                   : static_cast<int32_t>(tau_us % period_us);
+                                                   : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
     float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) +
               static_cast<float>(phase) * (1.0f / 36000.0f);
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "feel/units.hpp"
+#include "int64_to_float.hpp"
 
 namespace feel::detail {
 
@@ -63,7 +64,7 @@ float saturated_spring_force(float k, float depth) noexcept {
 }
 
 float generated_energy(const ContactState& state) noexcept {
-    return static_cast<float>(state.generated_energy) / kLedgerScale;
+    return float_of_int64(state.generated_energy) / kLedgerScale;
 }
 
 float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept {
@@ -100,7 +101,7 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
 
     float force = tick.force;
     if (control && state.generated_energy > 0 && tick.dt_s > 0 && force != 0 && tick.velocity != 0) {
-        const float ledger = static_cast<float>(state.generated_energy) * (1.0f / kLedgerScale);
+        const float ledger = float_of_int64(state.generated_energy) * (1.0f / kLedgerScale);
         const float speed = std::fabs(tick.velocity);
         const float travel = std::max(speed * tick.dt_s, tick.resolution);
         const float wanted = ledger / (speed * travel);

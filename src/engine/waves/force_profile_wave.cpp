@@ -6,6 +6,7 @@
 // along the effect's direction (or its single axis); several channels drive the effect's
 // axes in order, each with its physical sign.
 #include "../envelope.hpp"
+#include "../time_division.hpp"
 #include "wave.hpp"
 
 namespace feel::detail {
@@ -14,8 +15,9 @@ namespace {
 
 // The frame playing at τ.
 const int16_t* frame_at(const SlotCustomBlock& c, const int16_t* samples, int64_t tau_us) noexcept {
-    const int64_t frames = c.sample_count / c.channels;
-    const int64_t frame = (tau_us / c.sample_period_us) % frames;
+    const int32_t frames = c.sample_count / c.channels;  // ≥ 1: the validator's sample count
+    const int64_t played = time_quotient(tau_us, c.sample_period_us);  // frames since τ = 0
+    const int64_t frame = played - time_quotient(played, frames) * frames;
     return samples + frame * c.channels;
 }
 

@@ -1,0 +1,48 @@
+// int64 → float, correctly rounded, without a 64-bit conversion instruction.
+//
+// static_cast<float>(int64_t) rounds to the nearest float, ties to even, on every IEEE
+// target; x86-64 does it in one instruction (cvtsi2ss), but a Cortex-M4F's FPU converts only
+// 32-bit integers, so the cast there is libgcc's __aeabi_l2f, whose object also brings the
+// soft-float add it uses (about 540 bytes of flash for the few call sites: the tick length,
+// the estimator's times and sums, the passivity ledger).
+//
+// float_of_int64 gives the same bits from one 32-bit conversion. A value that fits int32 is
+// converted directly. A larger magnitude m (2³¹ ≤ m ≤ 2⁶³) is shifted right by s so that
+// 31 bits remain, [2³⁰, 2³¹), and every bit shifted out is ORed into the lowest kept bit
+// (a sticky bit). A float keeps 24 of those 31 bits, so the rounding bit is bit 6 of the
+// kept value and bits 0..5 only say "something below it is set": ORing the dropped bits
+// into bit 0 keeps that answer, and the FPU's conversion (round to nearest even, the
+// default mode) rounds the kept value exactly as it would round m. Multiplying by 2^s
+// (1 ≤ s ≤ 33) is exact, and so is the sign. tests/engine/int64_to_float_test.cpp checks it
+// against the cast at the boundaries and on random values.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+namespace feel::detail {
+
+// The conversion by one int32 → float; out of line, since the firmware calls it from several
+// places and flash is what it saves. Public so the x86 test can check it against the cast.
+[[gnu::noinline]] inline float float_of_int64_by_int32(int64_t v) noexcept {
+    if (v >= INT32_MIN && v <= INT32_MAX) return static_cast<float>(static_cast<int32_t>(v));
+    const bool negative = v < 0;
+    const uint64_t m = negative ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
+    const int s = 33 - std::countl_zero(m);  // m ≥ 2³¹: 1 ≤ s ≤ 33, m >> s in [2³⁰, 2³¹)
+    const uint64_t dropped = m & ((uint64_t{1} << s) - 1);
+    const auto kept = static_cast<int32_t>(static_cast<uint32_t>(m >> s) | (dropped != 0 ? 1u : 0u));
+    const float scale = std::bit_cast<float>(static_cast<uint32_t>(127 + s) << 23);  // 2^s
+    const float f = static_cast<float>(kept) * scale;
+    return negative ? -f : f;
+}
+
+// What the engine calls: the plain cast where the target converts 64-bit integers itself.
+[[nodiscard]] inline float float_of_int64(int64_t v) noexcept {
+#if defined(__x86_64__) || defined(__aarch64__)
+    return static_cast<float>(v);
+#else
+    return float_of_int64_by_int32(v);
+#endif
+}
+
+}  // namespace feel::detail
