@@ -40,6 +40,7 @@ struct Report {
     int64_t arrived = 0;  // read by the host, µs
     int64_t placed = 0;   // SenseClock's
     bool after_drop = false;
+    bool starved = false;  // read in a starved reader's drain (starved_link)
 };
 
 // The simulated link of the header: `seconds` of reports, with drops every ~`drop_every`.
@@ -154,6 +155,142 @@ TEST(SenseClock, ASilentDeviceIsReanchoredByItsNextReport) {
     int64_t s = 0;
     clock.place(std::span<const int64_t>(&a, 1), std::span<int64_t>(&s, 1));
     EXPECT_NEAR(static_cast<double>(s - before), 2'004'000.0, kPeriodUs);
+}
+
+// A starved host (the VM's pid-emulation check under load: 405 reports in one drain, for
+// 374 of the gadget's ticks, stale ones among them): the link of the header with a reader
+// that, from `starve_from` on, every `starve_every` seconds sleeps `starve_s` seconds and
+// then reads, with everything queued, `stale` copies of the last reports it had read before
+// (each with its true sense time: old). During the first `slow_learning_s` seconds the device
+// sends only every other tick (a starved gadget skipping ticks while the clock learns: the
+// period learned is twice the device's). Truth: the sense and read times.
+std::vector<Report> starved_link(double seconds, double slow_learning_s, double starve_from, double starve_every,
+                                 double starve_s, int stale, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Report> queued;
+    for (int64_t i = 0; static_cast<double>(i) * kPeriodUs < seconds * 1e6; ++i) {
+        if (static_cast<double>(i) * kPeriodUs < slow_learning_s * 1e6 && i % 2 == 1) continue;
+        Report r;
+        r.sensed = 100'000 + i * kPeriodUs;
+        r.arrived = r.sensed + 1000 + static_cast<int64_t>(unit(rng) * 1000);
+        queued.push_back(r);
+    }
+    std::vector<Report> out;
+    std::size_t next = 0;
+    int64_t now = 0;
+    double next_starve = starve_from * 1e6;
+    while (next < queued.size()) {
+        now = std::max(now, queued[next].arrived) + static_cast<int64_t>(unit(rng) * 500);
+        const bool starved = starve_every > 0 && static_cast<double>(now) >= next_starve;
+        if (starved) {
+            now += static_cast<int64_t>(starve_s * 1e6);
+            next_starve += starve_every * 1e6;
+            const std::size_t read_before = out.size();
+            for (std::size_t k = read_before - std::min<std::size_t>(read_before, static_cast<std::size_t>(stale));
+                 k < read_before; ++k) {
+                Report copy = out[k];  // a stale copy, read again
+                copy.arrived = now;
+                copy.starved = true;
+                out.push_back(copy);
+            }
+        } else if (unit(rng) < 0.02) {
+            now += 10'000 + static_cast<int64_t>(unit(rng) * 100'000);
+        }
+        while (next < queued.size() && queued[next].arrived <= now) {
+            Report r = queued[next++];
+            r.arrived = now;
+            r.starved = starved;
+            out.push_back(r);
+        }
+        now += 50;
+    }
+    return out;
+}
+
+// What the bound promises on any sequence: sense times strictly increasing, none more than
+// kMaxLeadUs after its arrival. Returns the largest lead seen.
+int64_t expect_lead_bounded(const std::vector<Report>& reports) {
+    int64_t most = INT64_MIN;
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        most = std::max(most, reports[i].placed - reports[i].arrived);
+        EXPECT_LE(reports[i].placed - reports[i].arrived, SenseClock::kMaxLeadUs) << "report " << i;
+        if (i > 0) {
+            EXPECT_GT(reports[i].placed, reports[i - 1].placed) << "report " << i;
+        }
+    }
+    return most;
+}
+
+TEST(SenseClock, APeriodLearnedTooLongNeverRunsTheClockAheadOfTheArrivals) {
+    // Learned over a second in which the device sent every other tick: T reads 8 ms where the
+    // device reports every 4 ms. Unbounded, each report would put its slot 4 ms further
+    // ahead of its arrival: 250 reports a second, a second of lead every second.
+    std::vector<Report> reports = starved_link(12.0, 1.0, 0, 0, 0, 0, 5);
+    SenseClock clock;
+    double learned_period = 0;
+    // Drain by drain, to see the period first learned.
+    std::size_t i = 0;
+    while (i < reports.size()) {
+        std::size_t j = i;
+        std::vector<int64_t> arrivals;
+        while (j < reports.size() && reports[j].arrived == reports[i].arrived) arrivals.push_back(reports[j++].arrived);
+        std::vector<int64_t> sense(arrivals.size());
+        clock.place(arrivals, sense);
+        if (learned_period == 0 && clock.learned()) learned_period = clock.period_us();
+        for (std::size_t k = 0; k < sense.size(); ++k) reports[i + k].placed = sense[k];
+        i = j;
+    }
+    ASSERT_GT(learned_period, 1.5 * kPeriodUs) << "the scenario: a period learned far too long";
+    const int64_t most = expect_lead_bounded(reports);
+    std::printf("[ measured ] period learned %.0f us, in the end %.1f us; the largest lead %lld us; %lld drains "
+                "compressed\n",
+                learned_period, clock.period_us(), static_cast<long long>(most),
+                static_cast<long long>(clock.drains_compressed()));
+    EXPECT_GT(clock.drains_compressed(), 0);
+    // The period is corrected (the fit, let through once drains had to be compressed), and
+    // then the grid's properties hold again: the last 4 s, intervals as the truth's.
+    EXPECT_NEAR(clock.period_us(), kPeriodUs, 0.002 * kPeriodUs);
+    int off = 0, intervals = 0;
+    for (std::size_t k = 1; k < reports.size(); ++k) {
+        if (reports[k].sensed < reports.back().sensed - 4'000'000) continue;
+        const double truth = static_cast<double>(reports[k].sensed - reports[k - 1].sensed);
+        off += std::abs(static_cast<double>(reports[k].placed - reports[k - 1].placed) - truth) > 0.01 * kPeriodUs;
+        ++intervals;
+    }
+    EXPECT_EQ(off, 0) << "of " << intervals << " intervals";
+}
+
+TEST(SenseClock, DrainsHoldingStaleReportsNeverRunTheClockAheadForGood) {
+    // Every 2.5 s from 3 s on, the reader sleeps 1.5 s and then reads the 375 reports
+    // queued and 40 stale copies: a drain holding 40 reports more than periods have passed.
+    // Unbounded, each such drain left 160 ms of lead over the arrivals for good.
+    constexpr int kStale = 40;
+    std::vector<Report> reports = starved_link(16.0, 0, 3.0, 2.5, 1.5, kStale, 9);
+    SenseClock clock;
+    place_all(clock, reports);
+    ASSERT_TRUE(clock.learned());
+    const int64_t most = expect_lead_bounded(reports);
+    std::printf("[ measured ] the largest lead %lld us; %lld drains compressed; period %.1f us\n",
+                static_cast<long long>(most), static_cast<long long>(clock.drains_compressed()),
+                clock.period_us());
+    EXPECT_GE(clock.drains_compressed(), 4);
+    // Against the truth: outside the starved drains (whose reports are spread over the time
+    // there was, stale ones first), the offset of sense over truth (placed − sensed) stays
+    // within the bound of where it was before the first starvation: it does not add up,
+    // drain by drain.
+    int64_t before = 0;
+    for (const Report& r : reports)
+        if (r.arrived < 3'000'000) before = r.placed - r.sensed;
+    int64_t worst = 0;
+    for (std::size_t k = 0; k < reports.size(); ++k) {
+        if (reports[k].starved) continue;
+        worst = std::max(worst, reports[k].placed - reports[k].sensed - before);
+        EXPECT_LE(reports[k].placed - reports[k].sensed - before, SenseClock::kMaxLeadUs) << "report " << k;
+    }
+    std::printf("[ measured ] offset over the truth's, outside the starved drains: at most %lld us more than "
+                "before the first starvation\n",
+                static_cast<long long>(worst));
 }
 
 // The host's engine at three sets of times for the same sensed positions: a wall swept by

@@ -86,8 +86,18 @@ void SenseClock::refit() noexcept {
     }
     if (best_slot[1] <= best_slot[0]) return;
     const double fitted = period_us_ + (best[1] - best[0]) / static_cast<double>(best_slot[1] - best_slot[0]);
-    // A fit far off the period in use is a miscount, not a clock rate: kept out.
-    if (std::abs(fitted - period_us_) < 0.2 * period_us_) period_us_ = fitted;
+    // A fit far off the period in use is a miscount, not a clock rate: kept out. Unless the
+    // lead bound has had to compress drains since the last fit: the slots ran ahead of the
+    // arrivals, so the period in use is too long, and a shorter fit is the evidence of it
+    // (a period learned while the device skipped ticks): the period shortens by a fifth, and
+    // the fit starts afresh, since its older points are from the device's other rate.
+    if (std::abs(fitted - period_us_) < 0.2 * period_us_) {
+        period_us_ = fitted;
+    } else if (compressed_since_fit_ && fitted < period_us_) {
+        period_us_ *= 0.8;
+        fit_count_ = 0;
+    }
+    compressed_since_fit_ = false;
 }
 
 void SenseClock::note_excess(int64_t a, double excess) noexcept {
@@ -109,15 +119,19 @@ void SenseClock::place(std::span<const int64_t> arrivals, std::span<int64_t> sen
     }
     const auto n = static_cast<int64_t>(arrivals.size());
     const int64_t a = arrivals.back();
+    constexpr auto kLead = static_cast<double>(kMaxLeadUs);
     // The next n slots; the newest's excess over the least delay.
-    double newest = last_ + static_cast<double>(n) * period_us_;
-    double excess = static_cast<double>(a) - newest - floor_;
+    const double on_grid = last_ + static_cast<double>(n) * period_us_;
+    double excess = static_cast<double>(a) - on_grid - floor_;
     if (excess < 0) {
-        // Sooner than the least delay: the slots ran ahead; the floor comes down, and the
-        // excesses kept (relative to it) go up by as much.
-        floor_ += excess;
-        if (half_min_ < kNone) half_min_ -= excess;
-        if (prev_half_min_ < kNone) prev_half_min_ -= excess;
+        // Sooner than the least delay: the slots ran ahead; the floor comes down, no lower
+        // than the lead bound (below), and the excesses kept (relative to it) go up by as
+        // much. What the bound keeps the floor from taking, the drain's compression takes.
+        const double lowered = std::max(floor_ + excess, -kLead);
+        const double by = floor_ - lowered;
+        floor_ = lowered;
+        if (half_min_ < kNone) half_min_ += by;
+        if (prev_half_min_ < kNone) prev_half_min_ += by;
         excess = 0;
     }
     note_excess(a, excess);
@@ -128,24 +142,46 @@ void SenseClock::place(std::span<const int64_t> arrivals, std::span<int64_t> sen
     const double late = silent_before ? excess : std::min(half_min_, prev_half_min_);
     int64_t skip = 0;
     // (A quarter period of slack: a drop shows as a whole period, delay jitter does not.)
-    if ((covered || silent_before) && late >= 0.75 * period_us_) {
+    if ((covered || silent_before) && late >= 0.75 * period_us_)
         skip = static_cast<int64_t>(std::floor(late / period_us_ + 0.25));
+    // The lead bound: no report is placed more than kMaxLeadUs after its arrival. The latest
+    // the newest slot may be with the drain a period apart: a skip that would pass it is cut
+    // to the whole periods that fit; a drain whose slots do not fit even unskipped holds
+    // more reports than periods have passed (stale or repeated reports, a period too long):
+    // it is spread evenly over the time there is, from the last sense time to the bound.
+    double latest = kNone;
+    for (int64_t j = 0; j < n; ++j)
+        latest = std::min(latest, static_cast<double>(arrivals[static_cast<std::size_t>(j)]) + kLead +
+                                      static_cast<double>(n - 1 - j) * period_us_);
+    if (on_grid + static_cast<double>(skip) * period_us_ > latest)
+        skip = on_grid > latest ? 0 : static_cast<int64_t>(std::floor((latest - on_grid) / period_us_));
+    double newest = on_grid + static_cast<double>(skip) * period_us_;
+    double spacing = period_us_;
+    if (newest > latest) {
+        spacing = kNone;
+        for (int64_t j = 0; j < n; ++j)
+            spacing = std::min(spacing, (static_cast<double>(arrivals[static_cast<std::size_t>(j)]) + kLead - last_) /
+                                            static_cast<double>(j + 1));
+        spacing = std::max(spacing, 1.0);  // sense times still increase (by 1 µs at least)
+        newest = last_ + static_cast<double>(n) * spacing;
+        ++compressed_;
+        compressed_since_fit_ = true;
+    }
+    if (skip > 0) {
         const double shift = static_cast<double>(skip) * period_us_;
-        newest += shift;
-        excess -= shift;
         half_min_ -= shift;
         if (covered) prev_half_min_ -= shift;
         skipped_ += skip;
     }
     for (int64_t j = 0; j < n; ++j) {
         sense[static_cast<std::size_t>(j)] =
-            static_cast<int64_t>(std::llround(newest - static_cast<double>(n - 1 - j) * period_us_));
+            static_cast<int64_t>(std::llround(newest - static_cast<double>(n - 1 - j) * spacing));
     }
     last_ = newest;
     last_arrival_ = a;
     slot_ += n + skip;
     reports_ += n;
-    note_fit_point(a, excess);
+    note_fit_point(a, static_cast<double>(a) - newest - floor_);
 }
 
 int64_t SenseClock::place_silence(int64_t now_us) noexcept {
@@ -156,7 +192,10 @@ int64_t SenseClock::place_silence(int64_t now_us) noexcept {
     }
     const double wanted = static_cast<double>(now_us) - floor_;
     const auto k = std::max<int64_t>(1, std::llround((wanted - last_) / period_us_));
-    last_ += static_cast<double>(k) * period_us_;
+    // The lead bound holds here too (the next reports arrive after now_us, and start from
+    // this time): no later than now_us + kMaxLeadUs, still after the last sense time.
+    const double bound = static_cast<double>(now_us) + static_cast<double>(kMaxLeadUs);
+    last_ = std::max(last_ + 1.0, std::min(last_ + static_cast<double>(k) * period_us_, bound));
     slot_ += k;
     return std::llround(last_);
 }

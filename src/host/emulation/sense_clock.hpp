@@ -39,6 +39,23 @@
 //    fit's consequence, so counting it would let a short T confirm itself. Drops lengthen T
 //    by the drop rate (a few per thousand on a loaded VM: the velocity as much low).
 //
+//  * the lead bound: no report is placed more than kMaxLeadUs (100 ms) after its arrival,
+//    ŝ_i − a_i ≤ kMaxLeadUs. Physically ŝ_i − a_i = d_anchor − d_i ≤ d_anchor, the delay of
+//    the report the grid was anchored on: the newest of a drain, so at most about a period
+//    plus the link's delay (a few ms; a starved device's gap between reports); the period's
+//    learning error adds a few ms a second until the fit corrects it. Beyond that the slots
+//    have run ahead of the device, which a drain holding more reports than periods have
+//    passed does (stale or repeated reports in it, a period learned while the device skipped
+//    ticks), and before this bound every such drain lowered the floor for good: the grid
+//    never came back, and a starved host's clock ran seconds ahead of the arrivals. Now the
+//    floor comes down no further than −kMaxLeadUs; a drain whose slots would pass the bound
+//    has its skip cut to the whole periods that fit, or, if even its plain slots do not fit,
+//    is spread evenly over the time there is (from the last sense time to the bound; a
+//    microsecond apart at least, so a drain read within n µs of the last one at the bound
+//    may pass it by its n µs). Drains compressed since the last fit are evidence that the
+//    period is too long: a fit more than a fifth shorter, otherwise a miscount, then shortens
+//    it by a fifth. A stall render (place_silence) keeps the bound too.
+//
 // The sense times are the host's clock shifted by the least delay (ŝ ≈ s + d_min), a
 // constant offset the engine never sees: only differences matter to it. Their differences
 // are whole periods: the velocity the host estimates is then the one the device would,
@@ -59,6 +76,7 @@ public:
     static constexpr int64_t kLearnUs = 500'000;
     static constexpr int64_t kWindowUs = 500'000;       // the drop evidence window (two halves)
     static constexpr int64_t kFitBaselineUs = 1'000'000;  // the period fit's shortest baseline
+    static constexpr int64_t kMaxLeadUs = 100'000;        // the most a sense time is after its arrival
 
     // One drain: the read times (host µs, non-decreasing) of reports read back to back,
     // oldest first. Writes each one's sense time (host µs, increasing) to `sense`
@@ -71,6 +89,8 @@ public:
     [[nodiscard]] bool learned() const noexcept { return period_us_ > 0; }
     [[nodiscard]] double period_us() const noexcept { return period_us_; }  // 0 while learning
     [[nodiscard]] int64_t slots_skipped() const noexcept { return skipped_; }  // counted as dropped
+    // Drains spread over less than their periods to keep the lead bound.
+    [[nodiscard]] int64_t drains_compressed() const noexcept { return compressed_; }
     [[nodiscard]] double floor_us() const noexcept { return floor_; }        // the least delay seen
     [[nodiscard]] int64_t last_sense_us() const noexcept { return static_cast<int64_t>(last_); }
 
@@ -92,6 +112,8 @@ private:
     int64_t reports_ = 0;  // reports placed since learning (drops not included)
     int64_t last_arrival_ = 0;
     int64_t skipped_ = 0;
+    int64_t compressed_ = 0;
+    bool compressed_since_fit_ = false;
     // Drop evidence: the least excess of the current half window and of the one before it.
     int64_t half_ = -1;         // the current half window's index (a / (kWindowUs / 2))
     double half_min_ = 0;       // its least excess
