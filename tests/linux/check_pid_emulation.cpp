@@ -26,7 +26,9 @@
 // It is the bound of a device that runs every tick and reports every period, so it is
 // judged only when the VM kept that timing for the sensation (90 % of the gadget's ticks
 // ran, 80 % of the reports read); otherwise a SKIP line gives the counts (--judge-always
-// compares anyway, for diagnosis). Prints one line per check, "measure" lines, and
+// compares anyway, for diagnosis). The host is part of the rig: when it was starved (a drain
+// held more than a quarter second of the gadget's reports) neither its streaming nor the
+// force is judged, only that it rendered, and a SKIP line says so. Prints one line per check, "measure" lines, and
 // "pid-emulation: N passed, M failed".
 #include <algorithm>
 #include <cmath>
@@ -115,6 +117,47 @@ struct Play {
     std::vector<Update> renders;
     std::vector<Sent> sent;
 };
+
+// The host's drains (its I/O thread's reads of everything queued, each report stamped with
+// the host's clock as it is read, back to back): the renders whose arrivals follow the one
+// before by under 0.25 ms (a quiet run read 53 queued reports in 2.3 ms; the gadget's
+// reports come 4 ms apart, its catch-up ticks under 1 ms). From start() on, the longest the host went without reading
+// while the gadget's reports queued: per drain, the time since the host's previous read (or
+// since start()) or the time its reports span at the gadget's period, the shorter (a gap with
+// no reports behind it is the gadget's silence, which the ticks' count judges). The first
+// drain after start() holds the reports queued in the pause between sensations (52 and 53 in
+// a quiet run, read 0.4 ms after start()): it began at once, so it is not counted as a gap.
+struct HostDrains {
+    int longest = 0;           // reports
+    double starved_ms = 0;     // the longest the host left reports unread
+};
+constexpr double kStarvedMs = 250;  // a quarter second of the gadget's reports left unread
+
+HostDrains host_drains(const std::vector<Update>& renders, double start) {
+    HostDrains out;
+    double previous_read = start, drain_start = -1, last = -1;
+    int n = 0;
+    const auto close = [&] {
+        if (n == 0) return;
+        out.longest = std::max(out.longest, n);
+        const double gap_ms = (drain_start - previous_read) * 1e3;
+        out.starved_ms = std::max(out.starved_ms, std::min(gap_ms, n * kTickUs * 1e-3));
+        previous_read = last;
+    };
+    for (const Update& u : renders) {
+        if (u.stalled || u.arrival < start) continue;
+        if (n > 0 && (u.arrival - last) * 1e6 < 250.0) {
+            ++n;
+            last = u.arrival;
+            continue;
+        }
+        close();
+        drain_start = last = u.arrival;
+        n = 1;
+    }
+    close();
+    return out;
+}
 
 // The device-side rendering: the motors' force per tick (index = tick) and the sensed x.
 struct Render {
@@ -264,6 +307,27 @@ int main(int argc, char** argv) {
     for (const Play& play : plays) {
         const int64_t start_tick = static_cast<int64_t>(std::ceil((play.start - offset) * 1e6 / kTickUs));
         const int64_t stop_tick = static_cast<int64_t>(std::floor((play.stop - offset) * 1e6 / kTickUs));
+        // The host's own timing: its I/O thread reads everything queued, renders each report
+        // and sends once, the last render's level. A host that left a quarter second of the
+        // gadget's reports unread (starved in the VM) did not keep the update loop this check
+        // judges: a short sensation can begin and end inside one drain, so its levels were
+        // never sent, and a stale report in the drain (from before the start) starts the
+        // host's effect early. That is the rig not keeping time, as the gadget's skipped
+        // ticks are: streaming and the force comparison are not judged, the rendering is.
+        const HostDrains drains = host_drains(play.renders, play.start);
+        std::printf("measure %s: the host left the gadget's reports unread for up to %.0f ms; its longest drain held "
+                    "%d reports\n",
+                    play.name.c_str(), drains.starved_ms, drains.longest);
+        if (drains.starved_ms > kStarvedMs && !judge_always) {
+            check(play.updates > 0 && !play.renders.empty(),
+                  play.name + ": the host rendered (" + std::to_string(play.updates) + " updates, " +
+                      std::to_string(play.renders.size()) + " renders logged)");
+            std::printf("SKIP %s: streaming and force comparison not judged: the host was starved (it left the "
+                        "gadget's reports unread for %.0f ms, then read %d at once; at most %.0f ms is judged; %ld "
+                        "levels sent)\n",
+                        play.name.c_str(), drains.starved_ms, drains.longest, kStarvedMs, play.levels);
+            continue;
+        }
         check(play.updates > 0 && play.levels > 0 && !play.renders.empty(),
               play.name + ": the host rendered and streamed (" + std::to_string(play.updates) + " updates, " +
                   std::to_string(play.levels) + " levels sent, " + std::to_string(play.renders.size()) + " renders logged)");
