@@ -10,6 +10,29 @@ if [[ ! -f $elf ]]; then
   echo "no firmware at $elf: run 'make firmware' (make test does it first)" >&2
   exit 1
 fi
+# A stale image would pass with the figures of the engine it was built from, so the image
+# must be newer than every file of this tree it was compiled from: the sources and headers
+# of its objects in the build's ninja deps log (what ninja itself rebuilds it on), and every
+# engine source the firmware's glob takes (a new file is in no deps log yet). Milliseconds.
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=$(dirname "$elf")
+stale() {
+  echo "stale firmware: $elf $1: run 'make firmware' (make test does it first)" >&2
+  exit 1
+}
+[[ -f $build/.ninja_deps ]] || stale "has no ninja deps log in $build to check it against the sources"
+mapfile -t objects < <(ninja -C "$build" -t inputs "$(basename "$elf")" | grep '\.obj$')
+((${#objects[@]} > 0)) || stale "is not a target of the ninja build in $build"
+declare -A built_from=()
+while IFS= read -r f; do built_from[$f]=1; done < <(ninja -C "$build" -t deps "${objects[@]}" | sed -n "s|^    \($root/.*\)|\1|p")
+for f in "${!built_from[@]}"; do
+  [[ -e $f ]] || stale "was built from $f, which is gone"
+done
+while IFS= read -r f; do
+  [[ -n ${built_from[$f]:-} ]] || stale "was built without $f (or from another tree)"
+done < <(find "$root/src/engine" -name '*.cpp')
+newer=$(find "${!built_from[@]}" -newer "$elf" -print -quit)
+[[ -z $newer ]] || stale "is older than $newer"
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none -icount shift=0 \
