@@ -80,8 +80,9 @@ std::vector<Report> bursty_link(double seconds, int drop_every, uint32_t seed) {
     return out;
 }
 
-// Drains (runs of equal read times) through the clock.
-void place_all(SenseClock& clock, std::vector<Report>& reports) {
+// Drains (runs of equal read times) through the clock. Returns the period it first learned.
+double place_all(SenseClock& clock, std::vector<Report>& reports) {
+    double learned_period = 0;
     std::size_t i = 0;
     while (i < reports.size()) {
         std::size_t j = i;
@@ -89,9 +90,11 @@ void place_all(SenseClock& clock, std::vector<Report>& reports) {
         while (j < reports.size() && reports[j].arrived == reports[i].arrived) arrivals.push_back(reports[j++].arrived);
         std::vector<int64_t> sense(arrivals.size());
         clock.place(arrivals, sense);
+        if (learned_period == 0 && clock.learned()) learned_period = clock.period_us();
         for (std::size_t k = 0; k < sense.size(); ++k) reports[i + k].placed = sense[k];
         i = j;
     }
+    return learned_period;
 }
 
 constexpr std::size_t kSettled = 750;  // reports (3 s): learning and the first period fit are behind
@@ -228,19 +231,7 @@ TEST(SenseClock, APeriodLearnedTooLongNeverRunsTheClockAheadOfTheArrivals) {
     // ahead of its arrival: 250 reports a second, a second of lead every second.
     std::vector<Report> reports = starved_link(12.0, 1.0, 0, 0, 0, 0, 5);
     SenseClock clock;
-    double learned_period = 0;
-    // Drain by drain, to see the period first learned.
-    std::size_t i = 0;
-    while (i < reports.size()) {
-        std::size_t j = i;
-        std::vector<int64_t> arrivals;
-        while (j < reports.size() && reports[j].arrived == reports[i].arrived) arrivals.push_back(reports[j++].arrived);
-        std::vector<int64_t> sense(arrivals.size());
-        clock.place(arrivals, sense);
-        if (learned_period == 0 && clock.learned()) learned_period = clock.period_us();
-        for (std::size_t k = 0; k < sense.size(); ++k) reports[i + k].placed = sense[k];
-        i = j;
-    }
+    const double learned_period = place_all(clock, reports);
     ASSERT_GT(learned_period, 1.5 * kPeriodUs) << "the scenario: a period learned far too long";
     const int64_t most = expect_lead_bounded(reports);
     std::printf("[ measured ] period learned %.0f us, in the end %.1f us; the largest lead %lld us; %lld drains "
