@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the Cortex-M4F test program on qemu's mps2-an386 board (semihosting for output and
 # exit status, -icount shift=0 so SysTick counts instructions) and compares its forces
-# with the x86 build's (tests/firmware/firmware_compare.cpp).
+# with the x86 build's (tests/firmware/firmware_compare.cpp). An image older than the
+# sources it was built from fails first, naming `make firmware` (docs/firmware.md).
 #   run-on-qemu.sh FIRMWARE_ELF COMPARE_PROGRAM
 set -euo pipefail
 elf=${1:?usage: run-on-qemu.sh FIRMWARE_ELF COMPARE_PROGRAM}
