@@ -21,7 +21,7 @@ else
     libgcc_what='called by the engine: 64-bit division or int64 -> float conversion, most likely'
 fi
 printf '  libgcc            %6d  (%s)\n' "$libgcc" "$libgcc_what"
-printf '  libm              %6d  (float expf, expm1f, tanhf, sqrtf, roundf, ... from newlib: called by the engine; no double function is linked)\n' "$libm"
+printf '  libm              %6d  (float expf, expm1f, tanhf, sqrtf, ... from newlib: called by the engine; no double function is linked)\n' "$libm"
 printf '  engine + callees  %6d  goal 49152\n' $((engine + libgcc + libm))
 printf '  C runtime         %6d  (newlib: printf, exit, semihosting for the harness; malloc for the engine at start-up)\n' "$runtime"
 printf '  program           %6d  (size program, start-up, heap guard)\n' "$program"

@@ -107,7 +107,7 @@ float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept {
 }
 
 float surface_bump(float r) noexcept {
-    const float nearest_ridge = std::round(r / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
+    const float nearest_ridge = round_half_away(r / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
     const float d = std::fabs(r - nearest_ridge);
     if (d >= 0.5f * kSurfaceBumpWidth) return 0.0f;
     // cos(2π·d/w) as a fraction of a turn (turn_trig.hpp: the same bits on every target).
