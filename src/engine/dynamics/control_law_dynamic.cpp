@@ -128,14 +128,16 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     now.velocity = rate + u;
     flush_subnormal(now);
     if (!finite(now)) now = initial_state(law, handle_velocity, hysteresis);  // never expected
-    // Predict along the same line, the damper reading this tick's estimate.
+    // Predict along the same line, the damper reading this tick's estimate: only the
+    // impulse is kept, M·Δv − M·g·h + d·(Δs + u·h), and M·Δv + d·Δs is a linear form of
+    // the caught-up state (weighted_change): the predicted state itself is not needed.
     const float s0 = now.stretch;
     const float rate0 = now.velocity - u;
-    s = s0;
-    rate = rate0;
-    propagate(law.above, weight - law.drag * u - law.b * (u - handle_velocity), s, rate);
     const float h = law.step_s;
-    pull = -(law.mass * (rate - rate0) - weight * h + law.drag * ((s - s0) + u * h)) * inverse_step;
+    const float change =
+        weighted_change(law.above, law.mass, law.drag, weight - law.drag * u - law.b * (u - handle_velocity), s0, rate0);
+    // predicted_impulse's sum, in its order (a build for size takes that path).
+    pull = -(change - weight * h + law.drag * (u * h)) * inverse_step;
     last_position = handle;
     last_velocity = handle_velocity;
 }
@@ -227,10 +229,8 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
             // The handle is expected to go on along the line through its last two sensed
             // positions; before there are two, at its estimated velocity.
             const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
-            TetherAxisState ahead = now;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
-            pull = -advance_prepared_tether(law, gravity_in_frame(law, handle_acceleration), ahead, expected,
-                                            hysteresis) *
+            pull = -predicted_impulse(law, gravity_in_frame(law, handle_acceleration), now, expected, hysteresis) *
                    inverse_step;
         } else {
             pull = tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity);

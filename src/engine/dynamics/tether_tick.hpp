@@ -75,4 +75,23 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
 }
 
+// The impulse advance_prepared_tether would return for a copy of the state, where only the
+// impulse is wanted (the prediction: control_law_dynamic.cpp). For a law with one region
+// that counts nothing (one piece: prepare_pieces) the piece's map is affine, so the impulse
+// is a linear form of the state (weighted_change), computed without the predicted state;
+// other laws advance the copy.
+[[gnu::always_inline]] inline float predicted_impulse(const PreparedTether& t, float gravity,
+                                                       const TetherAxisState& state, HandleLine line,
+                                                       float hysteresis) noexcept {
+    if (t.piecewise || t.half_cycles > 0) {
+        TetherAxisState ahead = state;
+        return advance_watched_tether(t, gravity, ahead, line, hysteresis);
+    }
+    const float u = line.velocity;
+    const float taut_force = t.mass * gravity - t.drag * u - t.b * (u - line.damper_velocity);
+    const float h = t.step_s;
+    const float change = weighted_change(t.above, t.mass, t.drag, taut_force, state.stretch, state.velocity - u);
+    return change - t.mass * gravity * h + t.drag * (u * h);
+}
+
 }  // namespace feel::detail
