@@ -202,13 +202,17 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         return;
     }
 #endif
-    // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
+    // Each axis is a mass of its own: every axis is caught up, then every axis predicted.
+    // An axis's catch-up and prediction are one chain of dependent operations (the
+    // prediction starts where the catch-up ends), the axes' chains are independent: in this
+    // order the processor runs the second axis's catch-up beside the first's, where one
+    // axis at a time left it waiting for each call's result. Each axis's operations are
+    // the same, in the same order.
     for (int i = 0; i < n; ++i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
         const float handle = c.position[a];
         const float handle_velocity = c.velocity[a];
-        const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
         // The velocity the mass's own is seen from: the handle's, unless simulated in its frame.
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         TetherAxisState& now = st.now[i];
@@ -223,7 +227,15 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
-
+    }
+    for (int i = 0; i < n; ++i) {
+        const PreparedTether& law = st.laws[i];
+        const int a = axis_index(p.axes[i]);
+        const float handle = c.position[a];
+        const float handle_velocity = c.velocity[a];
+        const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
+        const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
+        const TetherAxisState& now = st.now[i];
         float pull = 0;
         if (step > 0) {
             // The handle is expected to go on along the line through its last two sensed
