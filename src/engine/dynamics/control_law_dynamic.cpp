@@ -207,8 +207,8 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     // prediction starts where the catch-up ends), the axes' chains are independent: in this
     // order the processor runs the second axis's catch-up beside the first's, where one
     // axis at a time left it waiting for each call's result. Each axis's operations are
-    // the same, in the same order.
-    for (int i = 0; i < n; ++i) {
+    // the same, in the same order. A build for size keeps one loop (the same bits).
+    const auto catch_up_axis = [&](int i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
         const float handle = c.position[a];
@@ -227,8 +227,8 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
-    }
-    for (int i = 0; i < n; ++i) {
+    };
+    const auto predict_axis = [&](int i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
         const float handle = c.position[a];
@@ -253,7 +253,16 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
         result.mass_position[a] = now.stretch;
         result.mass_velocity[a] = now.velocity - frame_velocity;
+    };
+#if defined(__OPTIMIZE_SIZE__)
+    for (int i = 0; i < n; ++i) {
+        catch_up_axis(i);
+        predict_axis(i);
     }
+#else
+    for (int i = 0; i < n; ++i) catch_up_axis(i);
+    for (int i = 0; i < n; ++i) predict_axis(i);
+#endif
     c.state->initialized = true;
 }
 

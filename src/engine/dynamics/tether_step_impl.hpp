@@ -198,51 +198,17 @@ struct Sample {
     BasicMassState<T> state;
 };
 
-// Where the cubic through both ends' values and slopes (Hermite's) crosses 0, as a fraction
-// of [lo, hi] strictly inside (0, 1): the secant's root refined by two Newton steps on the
-// cubic (+ and × only, no evaluation of the motion). Within a piece (ω·h ≤ 1) the cubic
-// follows the motion to about (ω·h)⁴/384 of its scale, so its root is close to the
-// motion's: Newton on the motion, started there, closes the bracket in two evaluations
-// where started from an end it took four or five.
-template <typename T>
-T hermite_root(T span, const Sample<T>& at_lo, const Sample<T>& at_hi) noexcept {
-    const T g0 = at_lo.value;
-    const T g1 = at_hi.value;
-    const T d0 = span * at_lo.slope;
-    const T d1 = span * at_hi.slope;
-    const T c2 = 3 * (g1 - g0) - 2 * d0 - d1;
-    const T c3 = 2 * (g0 - g1) + d0 + d1;
-    const T secant = g0 / (g0 - g1);  // g0 > 0 >= g1: in (0, 1]
-    T x = secant;
-    for (int i = 0; i < 2; ++i) {
-        const T slope = d0 + x * (2 * c2 + x * (3 * c3));
-        const T value = g0 + x * (d0 + x * (c2 + x * c3));
-        const T next = x - value / slope;
-        x = next > 0 && next < 1 ? next : secant;  // also NaN (a flat cubic): the secant
-    }
-    return x;
-}
-
 // The earliest t in (lo, hi] with g(t) <= 0, given g(lo) > 0 >= g(hi) (their samples
 // given: the caller has read both already) and a single sign change between them, to
-// within `tolerance`: Newton's method on the closed form (g returns its slope too), started
-// at the Hermite cubic's root (above), kept inside the bracket and aimed half a tolerance
-// past the root so that the bracket closes from both sides; a step that leaves the
-// bracket bisects instead. Converges in two or three evaluations where bisection takes
-// 30; at most 64. at_hi comes back as the sample at the t returned (the state there, which
-// the caller needs: no evaluation is repeated).
+// within `tolerance`: Newton's method on the closed form (g returns its slope too), kept
+// inside the bracket and aimed half a tolerance past the root so that the bracket closes
+// from both sides; a step that leaves the bracket bisects instead. Converges in a handful
+// of evaluations where bisection takes 30; at most 64. at_hi comes back as the sample at
+// the t returned (the state there, which the caller needs: no evaluation is repeated).
 template <typename T, typename G>
 T first_nonpositive(const G& g, T lo, const Sample<T>& at_lo, T hi, Sample<T>& at_hi, T tolerance) noexcept {
-    if (!(hi - lo > tolerance)) return hi;
-    T t = lo + (hi - lo) * hermite_root(hi - lo, at_lo, at_hi);
-    if (!(t > lo && t < hi)) t = lo + (hi - lo) / 2;
-    Sample<T> at = g(t);
-    if (at.value > 0) {
-        lo = t;
-    } else {
-        hi = t;
-        at_hi = at;
-    }
+    Sample<T> at = at_lo;
+    T t = lo;
     for (int i = 0; i < 64 && hi - lo > tolerance; ++i) {
         T next = at.slope != 0 ? t - at.value / at.slope : lo + (hi - lo) / 2;
         next += at.value > 0 ? tolerance / 2 : -tolerance / 2;
