@@ -239,10 +239,10 @@ struct Sling {
     // Verlet, the same symplectic map; only the roundings differ). And the move is
     // formed from what is known before a(r): r ← r + [h·(v_d·D² − u) − r_low] +
     // h·(h/2)·(1 + D²)·a(r), a(r) = (k·L/(m·|r|) − k/m)·r, the factor scaled by
-    // h·(h/2)·(1 + D²) as one division and one subtraction. What each step waits for is then the distance's square root, the
-    // division, a subtraction, a multiplication and the compensated addition (about 45
-    // cycles of latency on x86, from some 85 when the move waited for the velocity's five
-    // updates).
+    // h·(h/2)·(1 + D²) as one division and one subtraction. What each step waits for is
+    // then the distance's square root, the division, a subtraction, a multiplication and
+    // the compensated addition (about 45 cycles of latency on x86, from some 85 when the
+    // move waited for the velocity's five updates).
     template <typename Count>
     struct VerletRun {
         static constexpr int kCapacity = AxisCapacity<Count>::value;
