@@ -137,11 +137,12 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     float rate = rate0;
     bool taut = !t.piecewise;  // whether any piece met the tether (else its impulse is exactly 0)
     if (!t.piecewise) {
-        // One region (no play, k_pos = k_neg), counting half cycles: the tether is always
-        // taut, both sides are the same propagator about the same origin (0).
+        // One region (no play, k_pos = k_neg): the tether is always taut, both sides are the
+        // same propagator about the same origin (0). A law that counts no half cycles comes
+        // here only in a build for size (advance_prepared_tether), in one piece.
         for (int32_t i = 0; i < t.pieces; ++i) {
             propagate(t.above, taut_force, s, rate);
-            count_half_cycle(state, s, rest, hysteresis);
+            if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
     } else {
         for (int32_t i = 0; i < t.pieces; ++i) {

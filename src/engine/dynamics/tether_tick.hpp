@@ -58,6 +58,11 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
 // case's region bookkeeping (pieces is 1 for them: prepare_pieces).
 [[gnu::always_inline]] inline float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state,
                                                              HandleLine line, float hysteresis) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    // A build for size (the Cortex-M4F image) has one copy of the step: the general case
+    // takes a law with one region through the same operations in the same order.
+    return advance_watched_tether(t, gravity, state, line, hysteresis);
+#else
     if (t.piecewise || t.half_cycles > 0) return advance_watched_tether(t, gravity, state, line, hysteresis);
     const float u = line.velocity;
     // The force on a mass moving with the handle, apart from the spring (tether_law.cpp's
@@ -73,6 +78,7 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
     const float h = t.step_s;
     return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+#endif
 }
 
 // The impulse advance_prepared_tether would return for a copy of the state, where only the
