@@ -128,14 +128,16 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     now.velocity = rate + u;
     flush_subnormal(now);
     if (!finite(now)) now = initial_state(law, handle_velocity, hysteresis);  // never expected
-    // Predict along the same line, the damper reading this tick's estimate.
+    // Predict along the same line, the damper reading this tick's estimate: only the
+    // impulse is kept, M·Δv − M·g·h + d·(Δs + u·h), and M·Δv + d·Δs is a linear form of
+    // the caught-up state (weighted_change): the predicted state itself is not needed.
     const float s0 = now.stretch;
     const float rate0 = now.velocity - u;
-    s = s0;
-    rate = rate0;
-    propagate(law.above, weight - law.drag * u - law.b * (u - handle_velocity), s, rate);
     const float h = law.step_s;
-    pull = -(law.mass * (rate - rate0) - weight * h + law.drag * ((s - s0) + u * h)) * inverse_step;
+    const float change =
+        weighted_change(law.above, law.mass, law.drag, weight - law.drag * u - law.b * (u - handle_velocity), s0, rate0);
+    // predicted_impulse's sum, in its order (a build for size takes that path).
+    pull = -(change - weight * h + law.drag * (u * h)) * inverse_step;
     last_position = handle;
     last_velocity = handle_velocity;
 }
@@ -200,13 +202,17 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         return;
     }
 #endif
-    // Each axis is a mass of its own: caught up, then predicted, one axis at a time.
-    for (int i = 0; i < n; ++i) {
+    // Each axis is a mass of its own: every axis is caught up, then every axis predicted.
+    // An axis's catch-up and prediction are one chain of dependent operations (the
+    // prediction starts where the catch-up ends), the axes' chains are independent: in this
+    // order the processor runs the second axis's catch-up beside the first's, where one
+    // axis at a time left it waiting for each call's result. Each axis's operations are
+    // the same, in the same order. A build for size keeps one loop (the same bits).
+    const auto catch_up_axis = [&](int i) {
         const PreparedTether& law = st.laws[i];
         const int a = axis_index(p.axes[i]);
         const float handle = c.position[a];
         const float handle_velocity = c.velocity[a];
-        const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
         // The velocity the mass's own is seen from: the handle's, unless simulated in its frame.
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         TetherAxisState& now = st.now[i];
@@ -221,16 +227,22 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
         if (law.half_cycles > 0 && now.half_cycles >= law.half_cycles) result.finished = true;
-
+    };
+    const auto predict_axis = [&](int i) {
+        const PreparedTether& law = st.laws[i];
+        const int a = axis_index(p.axes[i]);
+        const float handle = c.position[a];
+        const float handle_velocity = c.velocity[a];
+        const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
+        const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
+        const TetherAxisState& now = st.now[i];
         float pull = 0;
         if (step > 0) {
             // The handle is expected to go on along the line through its last two sensed
             // positions; before there are two, at its estimated velocity.
             const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
-            TetherAxisState ahead = now;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
-            pull = -advance_prepared_tether(law, gravity_in_frame(law, handle_acceleration), ahead, expected,
-                                            hysteresis) *
+            pull = -predicted_impulse(law, gravity_in_frame(law, handle_acceleration), now, expected, hysteresis) *
                    inverse_step;
         } else {
             pull = tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity);
@@ -241,7 +253,16 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
         result.mass_position[a] = now.stretch;
         result.mass_velocity[a] = now.velocity - frame_velocity;
+    };
+#if defined(__OPTIMIZE_SIZE__)
+    for (int i = 0; i < n; ++i) {
+        catch_up_axis(i);
+        predict_axis(i);
     }
+#else
+    for (int i = 0; i < n; ++i) catch_up_axis(i);
+    for (int i = 0; i < n; ++i) predict_axis(i);
+#endif
     c.state->initialized = true;
 }
 

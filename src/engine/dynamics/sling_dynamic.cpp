@@ -89,6 +89,7 @@ struct Sling {
     float length = 0;        // L, position units
     float drag = 0;          // c, force units per (position unit/s)
     float rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
+    float rate_length = 0;   // ω²·L
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
     mutable float air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
@@ -101,6 +102,7 @@ struct Sling {
         length = static_cast<float>(d.string_length);
         drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
         rate_squared = stiffness / mass;
+        rate_length = rate_squared * length;
         count = p.axis_count;
         for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
     }
@@ -124,12 +126,11 @@ struct Sling {
         float r2 = 0;
         for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
         const float distance = std::sqrt(r2);
-        // −k·(|r| − L)/|r| per unit of r, when taut. L = 0: −k·r, smooth through r = 0.
-        // The ratio is computed either way (inf or NaN at r = 0, then not used) so that the
+        // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass, when taut. L = 0: −k·r,
+        // smooth through r = 0. The quotient is computed either way (inf or NaN at r = 0, then not used) so that the
         // choice is a select, not a branch on the step's chain that a string going slack
         // and taut would make the processor mispredict.
-        const float ratio = length / distance;
-        const float pull = distance > length ? -rate_squared * (1.0f - ratio) : 0.0f;
+        const float pull = distance > length ? rate_length / distance - rate_squared : 0.0f;
         for (int i = 0; i < n; ++i) a[i] = pull * r[i];
     }
 
@@ -187,16 +188,16 @@ struct Sling {
                       float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
         begin(run, ball, handle, h_total);
-        for (int step = 0; step < run.steps; ++step) take_step(run);
+        for (int step = 1; step < run.steps; ++step) take_step(run);
         finish(run, ball, impulse);
     }
 
     // Two slings' balls advanced together (advance_pair in ball_tick.hpp): each takes
     // exactly the steps it takes alone, in lockstep while both have steps left. A Verlet
     // step is one chain of dependent operations (a square root, then a division, then the
-    // kick the next position needs), about 75 cycles of latency for a few instructions;
-    // two independent chains side by side overlap in the processor, so the pair costs
-    // about what one ball costs. The same operations on each ball, so the same bits.
+    // move the next position needs); two independent chains side by side overlap in the
+    // processor, so the pair costs about what one ball costs. The same operations on each
+    // ball, so the same bits.
     static void advance_pair(const Sling& a, BallMotion& ball_a, const BallHandlePath& handle_a, float h_a,
                              float impulse_a[kMaxAxes], const Sling& b, BallMotion& ball_b,
                              const BallHandlePath& handle_b, float h_b, float impulse_b[kMaxAxes]) noexcept {
@@ -208,7 +209,7 @@ struct Sling {
             a.begin(run_a, ball_a, handle_a, h_a);
             b.begin(run_b, ball_b, handle_b, h_b);
             const int together = std::min(run_a.steps, run_b.steps);
-            int step = 0;
+            int step = 1;
             for (; step < together; ++step) {
                 a.take_step(run_a);
                 b.take_step(run_b);
@@ -229,6 +230,19 @@ struct Sling {
     // then stay in registers (zeroing six axes' worth took a `rep stos` of 336 bytes each).
     // r is the ball relative to the handle moving along its path: a step moves it by
     // h·(v − path velocity), so the handle's place on the travel costs r no resolution.
+    //
+    // The steps are velocity Verlet with the air around each (Strang splitting): per step
+    // v ← v·D + (h/2)·a(r), r ← r + h·(v − u), v ← (v + (h/2)·a(r))·D, D = e^(−c·h/2m).
+    // Between two steps the second half kick and the next first half kick read the same
+    // a(r): the run keeps the velocity of the drift, v_d, and takes the two half kicks
+    // and the air between them as one, v_d ← v_d·D² + (h/2)·(1 + D²)·a(r) (the same
+    // Verlet, the same symplectic map; only the roundings differ). And the move is
+    // formed from what is known before a(r): r ← r + [h·(v_d·D² − u) − r_low] +
+    // h·(h/2)·(1 + D²)·a(r), a(r) = (k·L/(m·|r|) − k/m)·r, the factor scaled by
+    // h·(h/2)·(1 + D²) as one division and one subtraction. What each step waits for is
+    // then the distance's square root, the division, a subtraction, a multiplication and
+    // the compensated addition (about 45 cycles of latency on x86, from some 85 when the
+    // move waited for the velocity's five updates).
     template <typename Count>
     struct VerletRun {
         static constexpr int kCapacity = AxisCapacity<Count>::value;
@@ -236,15 +250,34 @@ struct Sling {
         Count n;
         float r[kCapacity];
         float r_low[kCapacity];  // what rounding r dropped, to add back (compensated sum)
-        float v[kCapacity];
-        float acc[kCapacity];    // the string's acceleration at r
-        float kicks[kCapacity];  // Σ h·(string acceleration), the string's Δv
+        float v[kCapacity];      // the velocity of the last drift (v_d); the ball's, once finished
+        float drift[kCapacity];  // the next move without the string's pull: h·(v_d·D² − u) − r_low
+        float kicks[kCapacity];  // Σ (h/2)·(string acceleration) over the half kicks, the string's Δv
         float path_velocity[kCapacity];  // the handle's, per effect axis
-        int steps = 0;
+        int steps = 0;           // 0: idle (the ball stays as it is), else the Verlet steps
         float h = 0;
         float half_h = 0;
-        float half_drag = 1;
+        float half_drag = 1;     // D
+        float drag_squared = 1;  // D²
+        float kick_gain = 0;     // (h/2)·(1 + D²): the two half kicks between steps, per acceleration
+        float move_pull = 0;     // h·kick_gain·k·L/m: the move's pull, over |r|
+        float move_rate = 0;     // h·kick_gain·k/m
     };
+
+    // The string's pull per unit mass and of r (a = pull·r), and the same scaled for the
+    // move (move_pull/|r| − move_rate, when taut), from the squared distance.
+    template <typename Count>
+    [[gnu::always_inline]] inline void step_pulls(const VerletRun<Count>& run, float r2, float& pull,
+                                                  float& move) const noexcept {
+        const float distance = std::sqrt(r2);
+        // Both quotients are computed either way (inf or NaN at r = 0, then not used) so
+        // that the choice is a select, not a branch on the step's chain that a string going
+        // slack and taut would make the processor mispredict. L = 0: pull = −k/m, smooth
+        // through r = 0.
+        const bool taut = distance > length;
+        pull = taut ? rate_length / distance - rate_squared : 0.0f;
+        move = taut ? run.move_pull / distance - run.move_rate : 0.0f;
+    }
 
     template <typename Count>
     [[gnu::always_inline]] inline void begin(VerletRun<Count>& run, const BallMotion& ball, const BallHandlePath& handle,
@@ -253,20 +286,23 @@ struct Sling {
         float relative[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
             const int a = axes[i];
-            run.kicks[i] = 0;
             run.r_low[i] = 0;
             run.r[i] = ball.offset[a];
             run.v[i] = ball.velocity[a];
             run.path_velocity[i] = handle.velocity[a];
             relative[i] = run.v[i] - run.path_velocity[i];
         }
-        acceleration(n, run.r, run.acc);
+        float acc[VerletRun<Count>::kCapacity];
+        acceleration(n, run.r, acc);
         // A ball at rest on a slack string beside a still handle stays exactly where it is
         // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
         // ball back as it was and mass·0).
         bool idle = true;
-        for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && run.acc[i] == 0;
-        if (idle) return;
+        for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && acc[i] == 0;
+        if (idle) {
+            for (int i = 0; i < n; ++i) run.kicks[i] = 0;
+            return;
+        }
         // The steps the string's own rate asks for depend on the advance's length alone;
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
         // not a select, so that the processor predicts it and starts stepping without
@@ -286,30 +322,57 @@ struct Sling {
         }
         run.half_h = 0.5f * run.h;
         run.half_drag = air_over_half_step(run.h);
-    }
-
-    template <typename Count>
-    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run) const noexcept {
-        const Count n = run.n;
+        run.drag_squared = run.half_drag * run.half_drag;
+        run.kick_gain = run.half_h * (1.0f + run.drag_squared);
+        const float move_gain = run.h * run.kick_gain;
+        run.move_pull = move_gain * rate_length;
+        run.move_rate = move_gain * rate_squared;
+        // The first step's half kick and drift.
         for (int i = 0; i < n; ++i) {
-            const float kick = run.half_h * run.acc[i];
+            const float kick = run.half_h * acc[i];
+            run.kicks[i] = kick;
             run.v[i] = run.v[i] * run.half_drag + kick;
-            run.kicks[i] += kick;
-            const float move = run.h * (run.v[i] - run.path_velocity[i]) - run.r_low[i];
+            const float move = run.h * (run.v[i] - run.path_velocity[i]);
             const float moved = run.r[i] + move;
             run.r_low[i] = (moved - run.r[i]) - move;
             run.r[i] = moved;
-        }
-        acceleration(n, run.r, run.acc);
-        for (int i = 0; i < n; ++i) {
-            const float kick = run.half_h * run.acc[i];
-            run.v[i] = (run.v[i] + kick) * run.half_drag;
-            run.kicks[i] += kick;
+            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
     }
 
+    // The kicks between a step and the next, and the next step's drift.
     template <typename Count>
-    [[gnu::always_inline]] inline void finish(const VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
+    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run) const noexcept {
+        const Count n = run.n;
+        float r2 = 0;
+        for (int i = 0; i < n; ++i) r2 += run.r[i] * run.r[i];
+        float pull;
+        float move_pull;
+        step_pulls(run, r2, pull, move_pull);
+        for (int i = 0; i < n; ++i) {
+            const float acc = pull * run.r[i];
+            run.kicks[i] += run.h * acc;  // two half kicks: h/2 is h·0.5 exactly
+            run.v[i] = run.v[i] * run.drag_squared + run.kick_gain * acc;
+            const float move = run.drift[i] + move_pull * run.r[i];
+            const float moved = run.r[i] + move;
+            run.r_low[i] = (moved - run.r[i]) - move;
+            run.r[i] = moved;
+            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
+        }
+    }
+
+    // The last step's second half kick and air.
+    template <typename Count>
+    [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
+        if (run.steps > 0) {
+            float acc[VerletRun<Count>::kCapacity];
+            acceleration(run.n, run.r, acc);
+            for (int i = 0; i < run.n; ++i) {
+                const float kick = run.half_h * acc[i];
+                run.v[i] = (run.v[i] + kick) * run.half_drag;
+                run.kicks[i] += kick;
+            }
+        }
         for (int i = 0; i < run.n; ++i) {
             ball.offset[axes[i]] = run.r[i];
             ball.velocity[axes[i]] = run.v[i];

@@ -60,7 +60,7 @@ void count_half_cycle(const TetherLaw& law, TetherAxisState& state, float stretc
 }  // namespace
 
 bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s, float& rate,
-                          const HandlePath& path, float h, float hysteresis) noexcept {
+                          const HandlePath& path, float h, float hysteresis, MassStateF first_end) noexcept {
     bool taut = false;
     const bool piecewise = law.length > 0 || law.k_pos != law.k_neg;
     const float rest_force = free_force(law, path);
@@ -72,8 +72,9 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s
         const SpringDamperF seg = segment(law, r, path);
         const float origin = local_origin(law, r);
         const MassStateF start{s - origin, rate};
-        // The piece to its end in this region, and (below) the state where it leaves it.
-        MassStateF end = tether_step(seg, start, remaining);
+        // The piece to its end in this region (the caller's, for the whole piece), and
+        // (below) the state where it leaves it.
+        MassStateF end = switches == 0 ? first_end : tether_step(seg, start, remaining);
         float t = remaining;
         float snap_to = 0;
         bool crossed = false;

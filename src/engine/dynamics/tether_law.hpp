@@ -25,6 +25,7 @@
 #include <cstdint>
 
 #include "dynamics/control_law_state.hpp"
+#include "dynamics/tether_step.hpp"
 #include "feel/effect.hpp"
 #include "slot_params.hpp"
 #include "feel/engine.hpp"
@@ -107,10 +108,13 @@ template <typename T>
 // switching regions at the edges it finds (tether_crossing) and counting half cycles:
 // each time the stretch goes from beyond +hysteresis of the rest stretch to beyond
 // −hysteresis, or back, checked at every edge crossing and at the piece's end. Float, as
-// the tick; tether_tick.cpp calls it for the pieces in which an edge may lie. Returns
-// whether any part of the piece was spent beyond the play (the tether taut).
+// the tick; tether_tick.cpp calls it for the pieces in which an edge may lie. `end` is the
+// piece's end in the region it starts in (the region's local coordinate: s − length
+// above, s + length below, s in the slack), which the caller's propagator has already
+// computed: the exact step to it is not evaluated again. Returns whether any part of the
+// piece was spent beyond the play (the tether taut).
 bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s, float& rate,
-                          const HandlePath& path, float h, float hysteresis) noexcept;
+                          const HandlePath& path, float h, float hysteresis, MassStateF end) noexcept;
 
 // The §8.4 mapping: fills laws[i] for each axis i of the effect from its dynamic type and
 // Dynamic Struct, scaled by the config. Returns the effect's axis count. The effect must

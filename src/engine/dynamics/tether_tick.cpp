@@ -36,6 +36,21 @@ bool stays_clear(float outward, float k, float m, float f, float y, float v) noe
     return offset * offset + m * v * v / k < equilibrium * equilibrium;
 }
 
+// Whether a piece of the play that starts at s0 with rate v0 and ends within the play,
+// at s1, its velocity having turned (or started at rest), stayed clear of both edges. In
+// the play the mass is free, ÿ = −a·ẏ + f/m with a >= 0 and f constant: its velocity can
+// turn only against f, and while it heads on its way (the sign of v0) drag and f both
+// slow it, so it goes on at most |v0|·h before it turns; after the turn it heads back
+// monotonically to s1. So the extremum lies within |v0|·h of s0, on v0's side, and the
+// piece crossed no edge when that point is inside the play (with a margin of 2^-10 of
+// the bound and 2^-20 of the play for the propagator's rounding, which is far finer).
+// The exact piece (tether_law.cpp) would search both edges for a crossing there is not.
+bool turns_within_play(float length, float s0, float v0, float s1, float h) noexcept {
+    const float reach = std::fabs(v0) * h * (1.0f + 0x1p-10f) + length * 0x1p-20f;
+    const float extremum = v0 >= 0 ? s0 + reach : s0 - reach;
+    return std::fabs(extremum) < length && std::fabs(s1) < length;
+}
+
 float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
     const float weight = t.mass * gravity;
     if (weight > 0) return t.length + weight / t.k_pos;
@@ -117,15 +132,17 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     const float rest = counting ? rest_stretch_of(t, gravity) : 0.0f;
     const float s0 = state.stretch;
     const float rate0 = state.velocity - u;
+    const float piece = t.step_s / static_cast<float>(t.pieces);
     float s = s0;
     float rate = rate0;
     bool taut = !t.piecewise;  // whether any piece met the tether (else its impulse is exactly 0)
     if (!t.piecewise) {
-        // One region (no play, k_pos = k_neg), counting half cycles: the tether is always
-        // taut, both sides are the same propagator about the same origin (0).
+        // One region (no play, k_pos = k_neg): the tether is always taut, both sides are the
+        // same propagator about the same origin (0). A law that counts no half cycles comes
+        // here only in a build for size (advance_prepared_tether), in one piece.
         for (int32_t i = 0; i < t.pieces; ++i) {
             propagate(t.above, taut_force, s, rate);
-            count_half_cycle(state, s, rest, hysteresis);
+            if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
     } else {
         for (int32_t i = 0; i < t.pieces; ++i) {
@@ -144,14 +161,14 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
             float v = rate;
             propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
             if (may_have_crossed(r, t.length, y + origin, rate, v) &&
-                !(r != Region::slack && stays_clear(r == Region::above ? 1.0f : -1.0f,
-                                                    r == Region::above ? t.k_pos : t.k_neg, t.mass, taut_force,
-                                                    s - origin, rate))) {
+                !(r == Region::slack ? turns_within_play(t.length, s, rate, y, piece)
+                                     : stays_clear(r == Region::above ? 1.0f : -1.0f,
+                                                   r == Region::above ? t.k_pos : t.k_neg, t.mass, taut_force,
+                                                   s - origin, rate))) {
                 // An edge may lie within the piece: the exact piece finds it (rare).
                 const TetherLaw law = exact_law(t, gravity);
                 const HandlePath path{0.0f, u, line.damper_velocity};
-                taut = advance_tether_piece(law, state, s, rate, path, t.step_s / static_cast<float>(t.pieces),
-                                            hysteresis) ||
+                taut = advance_tether_piece(law, state, s, rate, path, piece, hysteresis, {y, v}) ||
                        taut;
                 continue;
             }

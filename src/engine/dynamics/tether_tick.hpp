@@ -58,6 +58,11 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
 // case's region bookkeeping (pieces is 1 for them: prepare_pieces).
 [[gnu::always_inline]] inline float advance_prepared_tether(const PreparedTether& t, float gravity, TetherAxisState& state,
                                                              HandleLine line, float hysteresis) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    // A build for size (the Cortex-M4F image) has one copy of the step: the general case
+    // takes a law with one region through the same operations in the same order.
+    return advance_watched_tether(t, gravity, state, line, hysteresis);
+#else
     if (t.piecewise || t.half_cycles > 0) return advance_watched_tether(t, gravity, state, line, hysteresis);
     const float u = line.velocity;
     // The force on a mass moving with the handle, apart from the spring (tether_law.cpp's
@@ -73,6 +78,26 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
     // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
     const float h = t.step_s;
     return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+#endif
+}
+
+// The impulse advance_prepared_tether would return for a copy of the state, where only the
+// impulse is wanted (the prediction: control_law_dynamic.cpp). For a law with one region
+// that counts nothing (one piece: prepare_pieces) the piece's map is affine, so the impulse
+// is a linear form of the state (weighted_change), computed without the predicted state;
+// other laws advance the copy.
+[[gnu::always_inline]] inline float predicted_impulse(const PreparedTether& t, float gravity,
+                                                       const TetherAxisState& state, HandleLine line,
+                                                       float hysteresis) noexcept {
+    if (t.piecewise || t.half_cycles > 0) {
+        TetherAxisState ahead = state;
+        return advance_watched_tether(t, gravity, ahead, line, hysteresis);
+    }
+    const float u = line.velocity;
+    const float taut_force = t.mass * gravity - t.drag * u - t.b * (u - line.damper_velocity);
+    const float h = t.step_s;
+    const float change = weighted_change(t.above, t.mass, t.drag, taut_force, state.stretch, state.velocity - u);
+    return change - t.mass * gravity * h + t.drag * (u * h);
 }
 
 }  // namespace feel::detail
