@@ -127,15 +127,13 @@ private:
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
         const int64_t* at(int k) const noexcept { return s[k - kFirstSummed]; }
     };
-    // Σ X, Σ m·X, Σ m²·X of ladder window k (kLadder[k] >= kMinSummedWindow).
-    void ladder_sums(int axis, int k, int64_t sums[3]) const noexcept;
 
     void push_interval(int64_t interval_us) noexcept;
     void slide_sums(int axis) noexcept;
     void rebuild_sums(int axis) noexcept;
-    // Σ y, Σ u·y, Σ u²·y over rung r's samples 0..n of an axis from the running sums, y
-    // relative to the newest sample (x0: its fixed-point value).
-    void window_sums(int axis, int r, int64_t x0, float out[3]) const noexcept;
+    // Σ y, Σ u·y (and Σ u²·y if parabola) over rung r's samples 0..n of an axis from the
+    // running sums, y relative to the newest sample.
+    void window_sums(int axis, int r, bool parabola, float out[3]) const noexcept;
     bool fast_fit_possible(int axis) const noexcept;
     void refresh_time_pattern() noexcept;
     // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
@@ -153,8 +151,12 @@ private:
     // acceleration. gathered: the sums at every rung and the samples (gather_axis), the band
     // checked on every sample; nullptr: the running sums, the band checked on a fixed set of
     // samples.
-    void fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;
-    void fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;  // fit's body
+    // dense: the newest samples relative to the newest (dense_samples), for the band check.
+    void fit(int axis, int order, const float* dense, const float* y, const float (*gathered)[kRungs]) noexcept;
+    void fit_order(int axis, int order, const float* dense, const float* y,
+                   const float (*gathered)[kRungs]) noexcept;  // fit's body
+    // The newest few samples of an axis relative to the newest one (motion_estimator.cpp, kDenseSlots).
+    void dense_samples(int axis, float* dense) const noexcept;
 
     // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
     // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
@@ -211,7 +213,7 @@ private:
     int sums_axes_ = 0;
     RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
-    // frozen sample's, and its sums follow from it (ladder_sums). True while that holds.
+    // frozen sample's, and its sums follow from it (window_sums). True while that holds.
     bool sums_still_[kMaxAxes] = {};
     float velocity_[kMaxAxes] = {};
     float acceleration_[kMaxAxes] = {};
