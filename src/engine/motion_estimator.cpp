@@ -204,12 +204,15 @@ bool within_band(const float* dense, const float* x, int head, float x0, const f
         const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
         return std::fabs(yi - fit) > band;
     };
-    // i = n·j/8 for j = 8 down to 1 while it is past the dense samples (n > kDenseSamples).
     const auto step = static_cast<unsigned>(n);
-    for (unsigned nj = step * 8; nj / 8 > kDenseSamples; nj -= step) {
-        const int i = static_cast<int>(nj / 8);
-        if (outside(x[(head + i) & kMask] - x0, i)) return false;
-    }
+#if !defined(__OPTIMIZE_SIZE__)
+    // The oldest sample, where a window too long for the motion leaves the band first.
+    if (n > kDenseSamples && outside(x[(head + n) & kMask] - x0, n)) return false;
+    const unsigned first_eighth = 7;
+#else
+    const unsigned first_eighth = 8;  // the board: the oldest with the other eighths (flash)
+#endif
+    // The dense samples, where a window fails next most often.
     int any = static_cast<int>(outside(dense[0], 0));
     const int last_dense = n < kDenseSamples ? n : kDenseSamples;
 #if !defined(__OPTIMIZE_SIZE__)
@@ -221,6 +224,11 @@ bool within_band(const float* dense, const float* x, int head, float x0, const f
         for (int i = 1; i <= last_dense; ++i) any |= static_cast<int>(outside(dense[i], i));
     }
     if (any != 0) return false;
+    // The other eighths, i = n·j/8 for j = first_eighth down while it is past the dense samples.
+    for (unsigned nj = step * first_eighth; nj / 8 > kDenseSamples; nj -= step) {
+        const int i = static_cast<int>(nj / 8);
+        if (outside(x[(head + i) & kMask] - x0, i)) return false;
+    }
     if (y == nullptr) return true;
     for (int i = kDenseSamples + 1; i < n; ++i) any |= static_cast<int>(outside(y[i], i));
     return !any;
