@@ -282,6 +282,7 @@ void MotionEstimator::reset() noexcept {
     frozen_interval_us_ = 0;
     frozen_run_ = 0;
     sums_axes_ = 0;
+    acceleration_ready_ = kEveryAxis;
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
@@ -289,7 +290,6 @@ void MotionEstimator::reset() noexcept {
         sums_still_[a] = false;
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
-        acceleration_ready_[a] = true;
         velocity_rung_[a] = acceleration_rung_[a] = kRungs;
     }
 }
@@ -381,8 +381,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     refresh_time_pattern();
     newest_interval_u_ = count_ >= 2 ? float_of_int64(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = float_of_int64(frozen_interval_us_) * kUnitsPerUs;
+    acceleration_ready_ = 0;  // the axes not updated: fitted when asked for
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
-    for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
 // After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
@@ -686,7 +686,8 @@ void MotionEstimator::fit(int axis, int order, const float* dense, const float* 
 void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {
     const TimePattern& p = pattern_;
     const int max_n = p.max_n;
-    acceleration_ready_[axis] = acceleration;
+    const auto bit = static_cast<uint8_t>(1u << axis);
+    acceleration_ready_ = static_cast<uint8_t>(acceleration ? acceleration_ready_ | bit : acceleration_ready_ & ~bit);
     acceleration_[axis] = 0.0f;
     acceleration_window_[axis] = 0;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
@@ -714,13 +715,17 @@ void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexc
         return;
     }
     if (fast_fit_possible(axis)) {
-        float dense[kDenseSlots];
-        dense_samples(axis, dense);
-        if (velocity) fit(axis, 1, dense, nullptr, nullptr);
-        if (fits_acceleration) fit(axis, 2, dense, nullptr, nullptr);
+        estimate_fast(axis, velocity, fits_acceleration);
     } else {
         estimate_general(axis, velocity, fits_acceleration);
     }
+}
+
+void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) noexcept {
+    float dense[kDenseSlots];
+    dense_samples(axis, dense);
+    if (velocity) fit(axis, 1, dense, nullptr, nullptr);
+    if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
 }
 
 // The general path keeps the gathered samples and sums on its own stack frame, apart from

@@ -90,13 +90,13 @@ public:
     [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
     // units/s². Fitted by update() or, if it was told not to, on the first call after it.
     [[nodiscard]] float acceleration(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) estimate(axis, false, true);
         return acceleration_[axis];
     }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
     [[nodiscard]] int acceleration_window(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) estimate(axis, false, true);
         return acceleration_window_[axis];
     }
 
@@ -146,6 +146,9 @@ private:
     // The general path: the history gathered (uneven older intervals, a position the
     // running sums cannot hold). Not inlined: its buffers stay off the common path's stack.
     [[gnu::noinline]] void estimate_general(int axis, bool velocity, bool acceleration) noexcept;
+    // The common path: the running sums. Apart from estimate(), so that a handle at rest
+    // (answered there) does not pay for its frame.
+    void estimate_fast(int axis, bool velocity, bool acceleration) noexcept;
     // The longest rung whose line (order 1) or parabola (order 2) passes the band check:
     // its slope or second derivative, window and rung are the axis's velocity or
     // acceleration. gathered: the sums at every rung and the samples (gather_axis), the band
@@ -223,7 +226,10 @@ private:
     int velocity_rung_[kMaxAxes] = {};
     int acceleration_rung_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
-    bool acceleration_ready_[kMaxAxes] = {};
+    // Bit a: axis a's acceleration is fitted for the last update (one byte: update clears
+    // them all in one store).
+    static constexpr uint8_t kEveryAxis = static_cast<uint8_t>((1u << kMaxAxes) - 1);
+    uint8_t acceleration_ready_ = kEveryAxis;
 };
 
 }  // namespace feel::detail
