@@ -161,6 +161,10 @@ constexpr int32_t sum_of_m(int n) noexcept { return static_cast<int32_t>(static_
 constexpr int32_t sum_of_m_squared(int n) noexcept {
     return static_cast<int32_t>(static_cast<uint32_t>((n - 1) * n * (2 * n - 1)) / 6u);
 }
+// Out of line on the board: three callers share one copy (flash).
+#if defined(__OPTIMIZE_SIZE__)
+[[gnu::noinline]]
+#endif
 void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[0] = n * value;
     out[1] = int64_t{sum_of_m(n)} * value;
@@ -204,6 +208,13 @@ bool within_band(const float* dense, const float* x, int head, float x0, const f
         const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
         return std::fabs(yi - fit) > band;
     };
+#if defined(__OPTIMIZE_SIZE__)
+    // The board reads the dense samples from the ring (dense is null: no copy, less flash).
+    static_cast<void>(dense);
+    auto dense_y = [=](int i) { return x[(head + i) & kMask] - x0; };
+#else
+    auto dense_y = [=](int i) { return dense[i]; };
+#endif
     const auto step = static_cast<unsigned>(n);
 #if !defined(__OPTIMIZE_SIZE__)
     // The oldest sample, where a window too long for the motion leaves the band first.
@@ -213,15 +224,15 @@ bool within_band(const float* dense, const float* x, int head, float x0, const f
     const unsigned first_eighth = 8;  // the board: the oldest with the other eighths (flash)
 #endif
     // The dense samples, where a window fails next most often.
-    int any = static_cast<int>(outside(dense[0], 0));
+    int any = static_cast<int>(outside(dense_y(0), 0));
     const int last_dense = n < kDenseSamples ? n : kDenseSamples;
 #if !defined(__OPTIMIZE_SIZE__)
     if (last_dense == kDenseSamples) {
-        for (int i = 1; i <= kDenseSamples; ++i) any |= static_cast<int>(outside(dense[i], i));
+        for (int i = 1; i <= kDenseSamples; ++i) any |= static_cast<int>(outside(dense_y(i), i));
     } else
 #endif
     {
-        for (int i = 1; i <= last_dense; ++i) any |= static_cast<int>(outside(dense[i], i));
+        for (int i = 1; i <= last_dense; ++i) any |= static_cast<int>(outside(dense_y(i), i));
     }
     if (any != 0) return false;
     // The other eighths, i = n·j/8 for j = first_eighth down while it is past the dense samples.
@@ -381,7 +392,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     refresh_time_pattern();
     newest_interval_u_ = count_ >= 2 ? float_of_int64(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = float_of_int64(frozen_interval_us_) * kUnitsPerUs;
-    acceleration_ready_ = 0;  // the axes not updated: fitted when asked for
+    // The axes not updated, and all of them without the acceleration: fitted when asked for.
+    acceleration_ready_ = with_acceleration ? static_cast<uint8_t>((1u << axes) - 1) : uint8_t{0};
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
 }
 
@@ -473,6 +485,7 @@ bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
 // Inlined into each order's fit where the build optimises for speed (fit_order).
 #if defined(__OPTIMIZE_SIZE__)
 void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) const noexcept {
+    parabola = true;  // the board: one path for both orders (flash); a line ignores out[2]
 #else
 [[gnu::always_inline]] inline void MotionEstimator::window_sums(int axis, int r, bool parabola,
                                                                float out[3]) const noexcept {
@@ -500,17 +513,18 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
         s[1] += m * value;
         if (parabola) s[2] += m * m * value;
     }
-    // The newest sample's share, X_0·Σ m^p over m = 0..n-1 (constant_sums).
-    const int64_t x0 = newest_fixed_value_[axis];
+    // The newest sample's share, X_0·Σ m^p over m = 0..n-1.
+    int64_t newest[3];
+    constant_sums(n, newest_fixed_value_[axis], newest);
     const float unit = fixed_unit_;
-    const float sy = float_of_int64(s[0] - n * x0) * unit;
-    const float smy = float_of_int64(s[1] - int64_t{sum_of_m(n)} * x0) * unit;
+    const float sy = float_of_int64(s[0] - newest[0]) * unit;
+    const float smy = float_of_int64(s[1] - newest[1]) * unit;
     const float alpha = newest_interval_u_;
     const float beta = frozen_interval_u_;
     out[0] = sy;
     out[1] = -(alpha * sy + beta * smy);
     if (parabola) {
-        const float smmy = float_of_int64(s[2] - int64_t{sum_of_m_squared(n)} * x0) * unit;
+        const float smmy = float_of_int64(s[2] - newest[2]) * unit;
         out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;
     }
 }
@@ -583,18 +597,16 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
     }
 }
 
-// The newest kDenseSlots samples of an axis relative to the newest (within_band). Where the
-// build optimises for speed, without the ring's wrap when it is not in the way (vector code).
+// The newest kDenseSlots samples of an axis relative to the newest (within_band): without the
+// ring's wrap when it is not in the way (vector code). Not on the board (within_band).
 void MotionEstimator::dense_samples(int axis, float* dense) const noexcept {
     const float* x = x_[axis];
     const float x0 = x[head_];
-#if !defined(__OPTIMIZE_SIZE__)
     if (head_ <= kHistory - kDenseSlots) {
         for (int i = 0; i < kDenseSlots; ++i) dense[i] = x[head_ + i] - x0;
-        return;
+    } else {
+        for (int i = 0; i < kDenseSlots; ++i) dense[i] = x[(head_ + i) & kMask] - x0;
     }
-#endif
-    for (int i = 0; i < kDenseSlots; ++i) dense[i] = x[(head_ + i) & kMask] - x0;
 }
 
 // The fits of both paths: for each rung from `top` down (longest first) the least-squares
@@ -686,8 +698,6 @@ void MotionEstimator::fit(int axis, int order, const float* dense, const float* 
 void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {
     const TimePattern& p = pattern_;
     const int max_n = p.max_n;
-    const auto bit = static_cast<uint8_t>(1u << axis);
-    acceleration_ready_ = static_cast<uint8_t>(acceleration ? acceleration_ready_ | bit : acceleration_ready_ & ~bit);
     acceleration_[axis] = 0.0f;
     acceleration_window_[axis] = 0;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
@@ -721,9 +731,18 @@ void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexc
     }
 }
 
+void MotionEstimator::fit_acceleration_now(int axis) noexcept {
+    estimate(axis, false, true);
+    acceleration_ready_ = static_cast<uint8_t>(acceleration_ready_ | 1u << axis);
+}
+
 void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    const float* dense = nullptr;  // the board's band check reads the ring (within_band)
+#else
     float dense[kDenseSlots];
     dense_samples(axis, dense);
+#endif
     if (velocity) fit(axis, 1, dense, nullptr, nullptr);
     if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
 }
@@ -735,8 +754,12 @@ void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleratio
     float y[kHistory];
     float sums[3][kRungs];
     gather_axis(axis, y, sums);
+#if defined(__OPTIMIZE_SIZE__)
+    const float* dense = nullptr;
+#else
     float dense[kDenseSlots];
     dense_samples(axis, dense);
+#endif
     if (velocity) fit(axis, 1, dense, y, sums);
     if (acceleration) fit(axis, 2, dense, y, sums);
 }

@@ -90,13 +90,13 @@ public:
     [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
     // units/s². Fitted by update() or, if it was told not to, on the first call after it.
     [[nodiscard]] float acceleration(int axis) noexcept {
-        if ((acceleration_ready_ >> axis & 1u) == 0) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) fit_acceleration_now(axis);
         return acceleration_[axis];
     }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
     [[nodiscard]] int acceleration_window(int axis) noexcept {
-        if ((acceleration_ready_ >> axis & 1u) == 0) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) fit_acceleration_now(axis);
         return acceleration_window_[axis];
     }
 
@@ -146,6 +146,8 @@ private:
     // The general path: the history gathered (uneven older intervals, a position the
     // running sums cannot hold). Not inlined: its buffers stay off the common path's stack.
     [[gnu::noinline]] void estimate_general(int axis, bool velocity, bool acceleration) noexcept;
+    // The acceleration of an axis update() was told not to fit, or did not name.
+    void fit_acceleration_now(int axis) noexcept;
     // The common path: the running sums. Apart from estimate(), so that a handle at rest
     // (answered there) does not pay for its frame.
     void estimate_fast(int axis, bool velocity, bool acceleration) noexcept;
