@@ -188,19 +188,20 @@ int start_rung(int previous, int top) noexcept {
 // from them). The general path checks the same set first, then every other sample.
 constexpr int kDenseSamples = 8;
 // The newest samples relative to the newest one, dense[i] = x_i - x_0 (i = 0..kDenseSamples),
-// gathered once an axis and tick for every band check of both fits (dense_samples).
+// gathered once an axis and tick on x86 for every band check of both fits (dense_samples).
 constexpr int kDenseSlots = kDenseSamples + 1;
 
 // True if every sample of a window of n intervals lies within band of c0 + c1·u (+ c2·u²
 // for a parabola): on the running-sum path (y null) the fixed set of samples kDenseSamples
-// describes, the dense ones from `dense`, the eighths read from the ring (x, head, x0: one
-// axis's ring and its newest sample); on the general path (y: the gathered samples, the same
-// values) that set first, then every other sample in one pass without branches (vector
-// code). Every sample is judged alone, so the order they are looked at in changes the cost
-// only (issue 14): the eighths first, the oldest first, where a window too long for a bending
-// motion leaves the band, each with an early exit; then the dense ones without a branch (two
-// whole vectors on x86). A template on the order: the line's check is the tick's commonest
-// loop, and a parabola's terms would cost it a third more.
+// describes, read from the ring (x, head, x0: one axis's ring and its newest sample), the
+// dense ones on x86 from `dense` (dense_samples); on the general path (y: the gathered
+// samples, the same values) that set first, then every other sample in one pass without
+// branches (vector code). Every sample is judged alone, so the order they are looked at in
+// changes the cost only (issue 14, measured on the slow circle: a window that fails leaves
+// the band at its oldest sample two times in three, at a dense one otherwise): on x86 the
+// oldest first, then the dense ones as whole vectors, then the other eighths. A template on
+// the order: the line's check is the tick's commonest loop, and a parabola's terms would
+// cost it a third more.
 template <bool kParabola>
 bool within_band(const float* dense, const float* x, int head, float x0, const float* u, const float* y, int n,
                  float c0, float c1, float c2, float band) noexcept {
@@ -208,39 +209,36 @@ bool within_band(const float* dense, const float* x, int head, float x0, const f
         const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
         return std::fabs(yi - fit) > band;
     };
-#if defined(__OPTIMIZE_SIZE__)
-    // The board reads the dense samples from the ring (dense is null: no copy, less flash).
-    static_cast<void>(dense);
-    auto dense_y = [=](int i) { return x[(head + i) & kMask] - x0; };
-#else
-    auto dense_y = [=](int i) { return dense[i]; };
-#endif
     const auto step = static_cast<unsigned>(n);
-#if !defined(__OPTIMIZE_SIZE__)
-    // The oldest sample, where a window too long for the motion leaves the band first.
-    if (n > kDenseSamples && outside(x[(head + n) & kMask] - x0, n)) return false;
-    const unsigned first_eighth = 7;
-#else
-    const unsigned first_eighth = 8;  // the board: the oldest with the other eighths (flash)
-#endif
-    // The dense samples, where a window fails next most often.
-    int any = static_cast<int>(outside(dense_y(0), 0));
     const int last_dense = n < kDenseSamples ? n : kDenseSamples;
-#if !defined(__OPTIMIZE_SIZE__)
-    if (last_dense == kDenseSamples) {
-        for (int i = 1; i <= kDenseSamples; ++i) any |= static_cast<int>(outside(dense_y(i), i));
-    } else
-#endif
-    {
-        for (int i = 1; i <= last_dense; ++i) any |= static_cast<int>(outside(dense_y(i), i));
+#if defined(__OPTIMIZE_SIZE__)
+    // The board (flash): the dense samples read from the ring (dense is null), each with an
+    // early exit, then the eighths from the oldest.
+    static_cast<void>(dense);
+    for (int i = 0; i <= last_dense; ++i) {
+        if (outside(x[(head + i) & kMask] - x0, i)) return false;
     }
-    if (any != 0) return false;
+    const unsigned first_eighth = 8;
+#else
+    // The oldest sample, where a window too long for the motion leaves the band first; then
+    // the dense samples, where it fails next most often, as two vectors without a branch.
+    if (n > kDenseSamples && outside(x[(head + n) & kMask] - x0, n)) return false;
+    int dense_outside = static_cast<int>(outside(dense[0], 0));
+    if (last_dense == kDenseSamples) {
+        for (int i = 1; i <= kDenseSamples; ++i) dense_outside |= static_cast<int>(outside(dense[i], i));
+    } else {
+        for (int i = 1; i <= last_dense; ++i) dense_outside |= static_cast<int>(outside(dense[i], i));
+    }
+    if (dense_outside != 0) return false;
+    const unsigned first_eighth = 7;
+#endif
     // The other eighths, i = n·j/8 for j = first_eighth down while it is past the dense samples.
     for (unsigned nj = step * first_eighth; nj / 8 > kDenseSamples; nj -= step) {
         const int i = static_cast<int>(nj / 8);
         if (outside(x[(head + i) & kMask] - x0, i)) return false;
     }
     if (y == nullptr) return true;
+    int any = 0;
     for (int i = kDenseSamples + 1; i < n; ++i) any |= static_cast<int>(outside(y[i], i));
     return !any;
 }
