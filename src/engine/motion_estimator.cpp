@@ -69,8 +69,13 @@
 //     O(1) updates when a sample arrives (slide_sums). Integers are exact, so the sums
 //     never drift; at rest they are not slid at all (window_sums);
 //   * the band is checked on a fixed set of samples: the newest kDenseSamples, where a
-//     stop or a reversal shows first, and the window's eighths, where a bend shows;
+//     stop or a reversal shows first, and the window's eighths, where a bend shows, looked
+//     at in the order windows fail (within_band);
 //   * the downward search starts kRungsUp above the window accepted last tick.
+// Where the build optimises for speed (x86) the tick's common cases have their own code: a
+// line's window sums without the parabola's share, the full ring's slide unrolled, the
+// newest samples gathered once a tick and checked as vectors; the board (-Os) keeps one
+// path for each (flash). Both give the same bits.
 // On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
 // (docs/stability.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
@@ -595,16 +600,24 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
     }
 }
 
-// The newest kDenseSlots samples of an axis relative to the newest (within_band): without the
-// ring's wrap when it is not in the way (vector code). Not on the board (within_band).
-void MotionEstimator::dense_samples(int axis, float* dense) const noexcept {
+// The newest kDenseSlots samples of an axis relative to the newest (within_band), in buffer:
+// without the ring's wrap when it is not in the way (vector code). Null on the board, whose
+// band check reads them from the ring (flash).
+const float* MotionEstimator::dense_samples(int axis, float* buffer) const noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    static_cast<void>(axis);
+    static_cast<void>(buffer);
+    return nullptr;
+#else
     const float* x = x_[axis];
     const float x0 = x[head_];
     if (head_ <= kHistory - kDenseSlots) {
-        for (int i = 0; i < kDenseSlots; ++i) dense[i] = x[head_ + i] - x0;
+        for (int i = 0; i < kDenseSlots; ++i) buffer[i] = x[head_ + i] - x0;
     } else {
-        for (int i = 0; i < kDenseSlots; ++i) dense[i] = x[(head_ + i) & kMask] - x0;
+        for (int i = 0; i < kDenseSlots; ++i) buffer[i] = x[(head_ + i) & kMask] - x0;
     }
+    return buffer;
+#endif
 }
 
 // The fits of both paths: for each rung from `top` down (longest first) the least-squares
@@ -735,12 +748,8 @@ void MotionEstimator::fit_acceleration_now(int axis) noexcept {
 }
 
 void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) noexcept {
-#if defined(__OPTIMIZE_SIZE__)
-    const float* dense = nullptr;  // the board's band check reads the ring (within_band)
-#else
-    float dense[kDenseSlots];
-    dense_samples(axis, dense);
-#endif
+    float buffer[kDenseSlots];
+    const float* dense = dense_samples(axis, buffer);
     if (velocity) fit(axis, 1, dense, nullptr, nullptr);
     if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
 }
@@ -752,12 +761,8 @@ void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleratio
     float y[kHistory];
     float sums[3][kRungs];
     gather_axis(axis, y, sums);
-#if defined(__OPTIMIZE_SIZE__)
-    const float* dense = nullptr;
-#else
-    float dense[kDenseSlots];
-    dense_samples(axis, dense);
-#endif
+    float buffer[kDenseSlots];
+    const float* dense = dense_samples(axis, buffer);
     if (velocity) fit(axis, 1, dense, y, sums);
     if (acceleration) fit(axis, 2, dense, y, sums);
 }

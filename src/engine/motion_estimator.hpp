@@ -160,8 +160,9 @@ private:
     void fit(int axis, int order, const float* dense, const float* y, const float (*gathered)[kRungs]) noexcept;
     void fit_order(int axis, int order, const float* dense, const float* y,
                    const float (*gathered)[kRungs]) noexcept;  // fit's body
-    // The newest few samples of an axis relative to the newest one (motion_estimator.cpp, kDenseSlots).
-    void dense_samples(int axis, float* dense) const noexcept;
+    // The newest few samples of an axis relative to the newest one, in buffer (null on the
+    // board: motion_estimator.cpp, kDenseSlots).
+    const float* dense_samples(int axis, float* buffer) const noexcept;
 
     // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
     // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
