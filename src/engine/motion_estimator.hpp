@@ -229,8 +229,8 @@ private:
     int velocity_rung_[kMaxAxes] = {};
     int acceleration_rung_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
-    // Bit a: axis a's acceleration is fitted for the last update (one byte: update clears
-    // them all in one store).
+    // Bit a: axis a's acceleration is fitted for the last update (one byte: update sets them
+    // all in one store, fit_acceleration_now its axis's).
     static constexpr uint8_t kEveryAxis = static_cast<uint8_t>((1u << kMaxAxes) - 1);
     uint8_t acceleration_ready_ = kEveryAxis;
 };
