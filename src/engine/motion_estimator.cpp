@@ -67,10 +67,15 @@
 //     fresher reading of the same instant may replace) are kept in 64-bit integers, the
 //     positions as integers of a power-of-two unit far below a sensor count, and slid by
 //     O(1) updates when a sample arrives (slide_sums). Integers are exact, so the sums
-//     never drift; at rest they are not slid at all (ladder_sums);
+//     never drift; at rest they are not slid at all (window_sums);
 //   * the band is checked on a fixed set of samples: the newest kDenseSamples, where a
-//     stop or a reversal shows first, and the window's eighths, where a bend shows;
+//     stop or a reversal shows first, and the window's eighths, where a bend shows, looked
+//     at in the order windows fail (within_band);
 //   * the downward search starts kRungsUp above the window accepted last tick.
+// Where the build optimises for speed (x86) the tick's common cases have their own code: a
+// line's window sums without the parabola's share, the full ring's slide unrolled, the
+// newest samples gathered once a tick and checked as vectors; the board (-Os) keeps one
+// path for each (flash). Both give the same bits.
 // On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
 // (docs/stability.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
@@ -155,10 +160,20 @@ float det3(float a, float b, float c, float d, float e, float f, float g, float 
 // by 2 and 6 stays 32-bit: a Cortex-M4 has no 64-bit division in hardware) and exact.
 static_assert((MotionEstimator::kHistory - 1) * MotionEstimator::kHistory * (2 * MotionEstimator::kHistory - 1) <=
               INT32_MAX);
+// Σ m and Σ m² over m = 0..n-1, 0 <= n <= kHistory (unsigned: the divisions by a constant
+// are a multiplication and a shift).
+constexpr int32_t sum_of_m(int n) noexcept { return static_cast<int32_t>(static_cast<uint32_t>(n * (n - 1)) / 2u); }
+constexpr int32_t sum_of_m_squared(int n) noexcept {
+    return static_cast<int32_t>(static_cast<uint32_t>((n - 1) * n * (2 * n - 1)) / 6u);
+}
+// Out of line on the board: three callers share one copy (flash).
+#if defined(__OPTIMIZE_SIZE__)
+[[gnu::noinline]]
+#endif
 void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[0] = n * value;
-    out[1] = int64_t{n * (n - 1) / 2} * value;
-    out[2] = int64_t{(n - 1) * n * (2 * n - 1) / 6} * value;
+    out[1] = int64_t{sum_of_m(n)} * value;
+    out[2] = int64_t{sum_of_m_squared(n)} * value;
 }
 
 // Where the running-sum fits start their downward search: kRungsUp above the rung accepted
@@ -177,32 +192,59 @@ int start_rung(int previous, int top) noexcept {
 // the ends and the middle, a parabola fitted to a cubic at the ends and at about a sixth in
 // from them). The general path checks the same set first, then every other sample.
 constexpr int kDenseSamples = 8;
+// The newest samples relative to the newest one, dense[i] = x_i - x_0 (i = 0..kDenseSamples),
+// gathered once an axis and tick on x86 for every band check of both fits (dense_samples).
+constexpr int kDenseSlots = kDenseSamples + 1;
 
 // True if every sample of a window of n intervals lies within band of c0 + c1·u (+ c2·u²
 // for a parabola): on the running-sum path (y null) the fixed set of samples kDenseSamples
-// describes, read from the ring (x, head, x0: one axis's ring and its newest sample); on
-// the general path (y: the gathered samples, the same values) that set first, where a
-// window too long for the motion leaves the band, then every other sample in one pass
-// without branches (vector code). A template on the order: the line's check is the tick's
-// commonest loop, and a parabola's terms would cost it a third more (issue 14).
+// describes, read from the ring (x, head, x0: one axis's ring and its newest sample), the
+// dense ones on x86 from `dense` (dense_samples); on the general path (y: the gathered
+// samples, the same values) that set first, then every other sample in one pass without
+// branches (vector code). Every sample is judged alone, so the order they are looked at in
+// changes the cost only (issue 14, measured on the slow circle: a window that fails leaves
+// the band at its oldest sample two times in three, at a dense one otherwise): on x86 the
+// oldest first, then the dense ones as whole vectors, then the other eighths. A template on
+// the order: the line's check is the tick's commonest loop, and a parabola's terms would
+// cost it a third more.
 template <bool kParabola>
-bool within_band(const float* x, int head, float x0, const float* u, const float* y, int n, float c0, float c1,
-                 float c2, float band) noexcept {
-    auto fit = [=](int i) { return kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i]; };
-    auto outside = [=](int i) { return std::fabs((x[(head + i) & kMask] - x0) - fit(i)) > band; };
-    const int dense = n < kDenseSamples ? n : kDenseSamples;
-    for (int i = 0; i <= dense; ++i) {
-        if (outside(i)) return false;
+bool within_band(const float* dense, const float* x, int head, float x0, const float* u, const float* y, int n,
+                 float c0, float c1, float c2, float band) noexcept {
+    auto outside = [=](float yi, int i) {
+        const float fit = kParabola ? c0 + c1 * u[i] + c2 * (u[i] * u[i]) : c0 + c1 * u[i];
+        return std::fabs(yi - fit) > band;
+    };
+    const auto step = static_cast<unsigned>(n);
+    const int last_dense = n < kDenseSamples ? n : kDenseSamples;
+#if defined(__OPTIMIZE_SIZE__)
+    // The board (flash): the dense samples read from the ring (dense is null), each with an
+    // early exit, then the eighths from the oldest.
+    static_cast<void>(dense);
+    for (int i = 0; i <= last_dense; ++i) {
+        if (outside(x[(head + i) & kMask] - x0, i)) return false;
     }
-    if (n > kDenseSamples) {
-        for (int j = 1; j <= 8; ++j) {
-            const int i = n * j / 8;
-            if (i > kDenseSamples && outside(i)) return false;
-        }
+    const unsigned first_eighth = 8;
+#else
+    // The oldest sample, where a window too long for the motion leaves the band first; then
+    // the dense samples, where it fails next most often, as two vectors without a branch.
+    if (n > kDenseSamples && outside(x[(head + n) & kMask] - x0, n)) return false;
+    int dense_outside = static_cast<int>(outside(dense[0], 0));
+    if (last_dense == kDenseSamples) {
+        for (int i = 1; i <= kDenseSamples; ++i) dense_outside |= static_cast<int>(outside(dense[i], i));
+    } else {
+        for (int i = 1; i <= last_dense; ++i) dense_outside |= static_cast<int>(outside(dense[i], i));
+    }
+    if (dense_outside != 0) return false;
+    const unsigned first_eighth = 7;
+#endif
+    // The other eighths, i = n·j/8 for j = first_eighth down while it is past the dense samples.
+    for (unsigned nj = step * first_eighth; nj / 8 > kDenseSamples; nj -= step) {
+        const int i = static_cast<int>(nj / 8);
+        if (outside(x[(head + i) & kMask] - x0, i)) return false;
     }
     if (y == nullptr) return true;
     int any = 0;
-    for (int i = kDenseSamples + 1; i < n; ++i) any |= static_cast<int>(std::fabs(y[i] - fit(i)) > band);
+    for (int i = kDenseSamples + 1; i < n; ++i) any |= static_cast<int>(outside(y[i], i));
     return !any;
 }
 
@@ -254,6 +296,7 @@ void MotionEstimator::reset() noexcept {
     frozen_interval_us_ = 0;
     frozen_run_ = 0;
     sums_axes_ = 0;
+    acceleration_ready_ = kEveryAxis;
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
@@ -261,7 +304,6 @@ void MotionEstimator::reset() noexcept {
         sums_still_[a] = false;
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
-        acceleration_ready_[a] = true;
         velocity_rung_[a] = acceleration_rung_[a] = kRungs;
     }
 }
@@ -353,8 +395,9 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     refresh_time_pattern();
     newest_interval_u_ = count_ >= 2 ? float_of_int64(elapsed_us(t_low_[head_], t_low_[(head_ + 1) & kMask])) * kUnitsPerUs : 0.0f;
     frozen_interval_u_ = float_of_int64(frozen_interval_us_) * kUnitsPerUs;
+    // The axes not updated, and all of them without the acceleration: fitted when asked for.
+    acceleration_ready_ = with_acceleration ? static_cast<uint8_t>((1u << axes) - 1) : uint8_t{0};
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
-    for (int a = axes; a < kMaxAxes; ++a) acceleration_ready_[a] = false;
 }
 
 // After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
@@ -380,28 +423,32 @@ void MotionEstimator::slide_sums(int axis) noexcept {
         for (int k = kFirstSummed; k < kLadderSize; ++k) constant_sums(kLadder[k], still, sums_[axis].at(k));
     }
     const int64_t in = frozen_fixed_value_[axis];
-    // Where every leaving sample is known to have a value (the common case), it is read
-    // without the range check.
-    const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
-    for (int k = kFirstSummed; k < kLadderSize; ++k) {
+    auto slide = [&](int k, int64_t out) {
         const int64_t n = kLadder[k];
-        // Before the ring holds n + 1 frozen samples nothing leaves.
-        const int leaving = kLadder[k] + 1;
-        const int64_t out = n + 1 > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving);
         int64_t* s = sums_[axis].at(k);
         const int64_t s0 = s[0], s1 = s[1];
         s[0] = s0 + in - out;
         s[1] = s1 + s0 - n * out;
         s[2] = s[2] + 2 * s1 + s0 - n * n * out;
-    }
-}
-
-void MotionEstimator::ladder_sums(int axis, int k, int64_t sums[3]) const noexcept {
-    if (sums_still_[axis]) {
-        constant_sums(kLadder[k], frozen_fixed_value_[axis], sums);
+    };
+    // Where every leaving sample is known to have a value (the common case), it is read
+    // without the range check.
+    const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
+#if !defined(__OPTIMIZE_SIZE__)
+    // The tick's common case, a full ring: a sample leaves every window. Unrolled, each
+    // window's length and leaving index are constants (about a third fewer instructions; the
+    // board keeps the one loop below, for its flash).
+    if (held && count_ > kLadder[kLadderSize - 1] + 1) {
+#pragma GCC unroll 8
+        for (int k = kFirstSummed; k < kLadderSize; ++k) slide(k, held_fixed_at(axis, kLadder[k] + 1));
         return;
     }
-    for (int p = 0; p < 3; ++p) sums[p] = sums_[axis].at(k)[p];
+#endif
+    for (int k = kFirstSummed; k < kLadderSize; ++k) {
+        // Before the ring holds n + 1 frozen samples nothing leaves.
+        const int leaving = kLadder[k] + 1;
+        slide(k, leaving > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving));
+    }
 }
 
 // The running sums of an axis from the ring, for an axis that was not kept up to date.
@@ -431,20 +478,35 @@ bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
            (max_n <= 1 || (frozen_run_ >= max_n - 1 && frozen_interval_us_ > 0));
 }
 
-// Σ y, Σ u·y, Σ u²·y over samples 0..n, y relative to the newest sample. The frozen
-// samples 1..n are at ages a1 + m·T (m = i - 1, a1 the newest interval, T the frozen
-// one), so with α = a1/W, β = T/W (W = kMaxWindowUs) u = -(α + m·β) and
+// Σ y, Σ u·y (and, for a parabola, Σ u²·y) over samples 0..n, y relative to the newest
+// sample. The frozen samples 1..n are at ages a1 + m·T (m = i - 1, a1 the newest interval,
+// T the frozen one), so with α = a1/W, β = T/W (W = kMaxWindowUs) u = -(α + m·β) and
 //   Σ u·y  = -(α·Σy + β·Σm·y),   Σ u²·y = α²·Σy + 2αβ·Σm·y + β²·Σm²·y,
 // where Σ m^p·y = Σ m^p·X - X_0·Σ m^p (the newest sample's y is 0). The sums of a rung
 // between two ladder lengths (the whole history) add the few samples past the longest
-// ladder window below it.
-void MotionEstimator::window_sums(int axis, int r, int64_t x0, float out[3]) const noexcept {
+// ladder window below it. A line reads no Σ u²·y: its fits skip that sum's share (issue 14).
+// Inlined into each order's fit where the build optimises for speed (fit_order).
+#if defined(__OPTIMIZE_SIZE__)
+void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) const noexcept {
+    parabola = true;  // the board: one path for both orders (flash); a line ignores out[2]
+#else
+[[gnu::always_inline]] inline void MotionEstimator::window_sums(int axis, int r, bool parabola,
+                                                               float out[3]) const noexcept {
+#endif
     const int n = pattern_.rung_n[r];
     const int k = pattern_.rung_ladder[r];
     int64_t s[3] = {0, 0, 0};
     int from = 1;
     if (k >= 0) {
-        ladder_sums(axis, k, s);
+        // At rest every ladder window holds the newest frozen sample's value (sums_still_).
+        if (sums_still_[axis]) {
+            constant_sums(kLadder[k], frozen_fixed_value_[axis], s);
+        } else {
+            const int64_t* kept = sums_[axis].at(k);
+            s[0] = kept[0];
+            s[1] = kept[1];
+            s[2] = kept[2];
+        }
         from = kLadder[k] + 1;
     }
     for (int i = from; i <= n; ++i) {  // the running-sum path: every sample within fixed_run_
@@ -452,19 +514,22 @@ void MotionEstimator::window_sums(int axis, int r, int64_t x0, float out[3]) con
         const int64_t m = i - 1;
         s[0] += value;
         s[1] += m * value;
-        s[2] += m * m * value;
+        if (parabola) s[2] += m * m * value;
     }
+    // The newest sample's share, X_0·Σ m^p over m = 0..n-1.
     int64_t newest[3];
-    constant_sums(n, x0, newest);
+    constant_sums(n, newest_fixed_value_[axis], newest);
     const float unit = fixed_unit_;
     const float sy = float_of_int64(s[0] - newest[0]) * unit;
     const float smy = float_of_int64(s[1] - newest[1]) * unit;
-    const float smmy = float_of_int64(s[2] - newest[2]) * unit;
     const float alpha = newest_interval_u_;
     const float beta = frozen_interval_u_;
     out[0] = sy;
     out[1] = -(alpha * sy + beta * smy);
-    out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;
+    if (parabola) {
+        const float smmy = float_of_int64(s[2] - newest[2]) * unit;
+        out[2] = alpha * alpha * sy + 2.0f * alpha * beta * smy + beta * beta * smmy;
+    }
 }
 
 void MotionEstimator::refresh_time_pattern() noexcept {
@@ -535,6 +600,26 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
     }
 }
 
+// The newest kDenseSlots samples of an axis relative to the newest (within_band), in buffer:
+// without the ring's wrap when it is not in the way (vector code). Null on the board, whose
+// band check reads them from the ring (flash).
+const float* MotionEstimator::dense_samples(int axis, float* buffer) const noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    static_cast<void>(axis);
+    static_cast<void>(buffer);
+    return nullptr;
+#else
+    const float* x = x_[axis];
+    const float x0 = x[head_];
+    if (head_ <= kHistory - kDenseSlots) {
+        for (int i = 0; i < kDenseSlots; ++i) buffer[i] = x[head_ + i] - x0;
+    } else {
+        for (int i = 0; i < kDenseSlots; ++i) buffer[i] = x[(head_ + i) & kMask] - x0;
+    }
+    return buffer;
+#endif
+}
+
 // The fits of both paths: for each rung from `top` down (longest first) the least-squares
 // line or parabola by Cramer's rule on the normal equations M·c = s, M[i][j] = Σ u^(i+j),
 // then its band check; the first that passes is the estimate. Longest first rather than
@@ -551,15 +636,15 @@ void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) con
 // On the board (-Os) one copy serves both orders. Elsewhere each order gets its own copy,
 // the order a constant in it: the tick's x86 estimator takes about 120 instructions fewer.
 #if defined(__OPTIMIZE_SIZE__)
-inline void MotionEstimator::fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+inline void MotionEstimator::fit_order(int axis, int order, const float* dense, const float* y,
+                                        const float (*gathered)[kRungs]) noexcept {
 #else
-[[gnu::always_inline]] inline void MotionEstimator::fit_order(int axis, int order, const float* y,
+[[gnu::always_inline]] inline void MotionEstimator::fit_order(int axis, int order, const float* dense, const float* y,
                                                              const float (*gathered)[kRungs]) noexcept {
 #endif
     const TimePattern& p = pattern_;
     const bool line = order == 1;
     const int min_n = line ? 1 : kMinAccelerationWindow;
-    const int64_t x0 = newest_fixed_value_[axis];
     const bool fast = gathered == nullptr;
     int& rung = line ? velocity_rung_[axis] : acceleration_rung_[axis];
     int& window = line ? velocity_window_[axis] : acceleration_window_[axis];
@@ -572,7 +657,7 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* y, cons
         if (gathered != nullptr) {
             for (int q = 0; q < 3; ++q) s[q] = gathered[q][r];
         } else {
-            window_sums(axis, r, x0, s);
+            window_sums(axis, r, !line, s);
         }
         const float m0 = static_cast<float>(n + 1), m1 = p.moment[0][r], m2 = p.moment[1][r];
         float c0 = 0, c1 = 0, c2 = 0, estimate = 0;
@@ -592,8 +677,9 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* y, cons
             estimate = 2.0f * c2 / (kWindowS * kWindowS);
         }
         const float* x = x_[axis];
-        const bool passes = line ? within_band<false>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_)
-                            : n == kMinAccelerationWindow || within_band<true>(x, head_, x[head_], p.u, y, n, c0, c1, c2, band_);
+        const bool passes =
+            line ? within_band<false>(dense, x, head_, x[head_], p.u, y, n, c0, c1, c2, band_)
+                 : n == kMinAccelerationWindow || within_band<true>(dense, x, head_, x[head_], p.u, y, n, c0, c1, c2, band_);
         if (!passes) continue;
         if (fast) rung = r;
         window = n;
@@ -607,14 +693,15 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* y, cons
     result = 0.0f;
 }
 
-void MotionEstimator::fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept {
+void MotionEstimator::fit(int axis, int order, const float* dense, const float* y,
+                          const float (*gathered)[kRungs]) noexcept {
 #if defined(__OPTIMIZE_SIZE__)
-    fit_order(axis, order, y, gathered);
+    fit_order(axis, order, dense, y, gathered);
 #else
     if (order == 1) {
-        fit_order(axis, 1, y, gathered);
+        fit_order(axis, 1, dense, y, gathered);
     } else {
-        fit_order(axis, 2, y, gathered);
+        fit_order(axis, 2, dense, y, gathered);
     }
 #endif
 }
@@ -622,7 +709,6 @@ void MotionEstimator::fit(int axis, int order, const float* y, const float (*gat
 void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexcept {
     const TimePattern& p = pattern_;
     const int max_n = p.max_n;
-    acceleration_ready_[axis] = acceleration;
     acceleration_[axis] = 0.0f;
     acceleration_window_[axis] = 0;
     // The acceleration needs a window of kMinAccelerationWindow at least: a parabola
@@ -650,11 +736,22 @@ void MotionEstimator::estimate(int axis, bool velocity, bool acceleration) noexc
         return;
     }
     if (fast_fit_possible(axis)) {
-        if (velocity) fit(axis, 1, nullptr, nullptr);
-        if (fits_acceleration) fit(axis, 2, nullptr, nullptr);
+        estimate_fast(axis, velocity, fits_acceleration);
     } else {
         estimate_general(axis, velocity, fits_acceleration);
     }
+}
+
+void MotionEstimator::fit_acceleration_now(int axis) noexcept {
+    estimate(axis, false, true);
+    acceleration_ready_ = static_cast<uint8_t>(acceleration_ready_ | 1u << axis);
+}
+
+void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) noexcept {
+    float buffer[kDenseSlots];
+    const float* dense = dense_samples(axis, buffer);
+    if (velocity) fit(axis, 1, dense, nullptr, nullptr);
+    if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
 }
 
 // The general path keeps the gathered samples and sums on its own stack frame, apart from
@@ -664,8 +761,10 @@ void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleratio
     float y[kHistory];
     float sums[3][kRungs];
     gather_axis(axis, y, sums);
-    if (velocity) fit(axis, 1, y, sums);
-    if (acceleration) fit(axis, 2, y, sums);
+    float buffer[kDenseSlots];
+    const float* dense = dense_samples(axis, buffer);
+    if (velocity) fit(axis, 1, dense, y, sums);
+    if (acceleration) fit(axis, 2, dense, y, sums);
 }
 
 }  // namespace feel::detail

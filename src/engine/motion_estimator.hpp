@@ -90,13 +90,13 @@ public:
     [[nodiscard]] float velocity(int axis) const noexcept { return velocity_[axis]; }  // units/s
     // units/s². Fitted by update() or, if it was told not to, on the first call after it.
     [[nodiscard]] float acceleration(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) fit_acceleration_now(axis);
         return acceleration_[axis];
     }
     // The windows used at the last update, in sample intervals (0: no estimate yet).
     [[nodiscard]] int velocity_window(int axis) const noexcept { return velocity_window_[axis]; }
     [[nodiscard]] int acceleration_window(int axis) noexcept {
-        if (!acceleration_ready_[axis]) estimate(axis, false, true);
+        if ((acceleration_ready_ >> axis & 1u) == 0) fit_acceleration_now(axis);
         return acceleration_window_[axis];
     }
 
@@ -127,15 +127,13 @@ private:
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
         const int64_t* at(int k) const noexcept { return s[k - kFirstSummed]; }
     };
-    // Σ X, Σ m·X, Σ m²·X of ladder window k (kLadder[k] >= kMinSummedWindow).
-    void ladder_sums(int axis, int k, int64_t sums[3]) const noexcept;
 
     void push_interval(int64_t interval_us) noexcept;
     void slide_sums(int axis) noexcept;
     void rebuild_sums(int axis) noexcept;
-    // Σ y, Σ u·y, Σ u²·y over rung r's samples 0..n of an axis from the running sums, y
-    // relative to the newest sample (x0: its fixed-point value).
-    void window_sums(int axis, int r, int64_t x0, float out[3]) const noexcept;
+    // Σ y, Σ u·y (and Σ u²·y if parabola) over rung r's samples 0..n of an axis from the
+    // running sums, y relative to the newest sample.
+    void window_sums(int axis, int r, bool parabola, float out[3]) const noexcept;
     bool fast_fit_possible(int axis) const noexcept;
     void refresh_time_pattern() noexcept;
     // One axis's samples newest first relative to the newest (y[0..max_n]) and the window
@@ -148,13 +146,23 @@ private:
     // The general path: the history gathered (uneven older intervals, a position the
     // running sums cannot hold). Not inlined: its buffers stay off the common path's stack.
     [[gnu::noinline]] void estimate_general(int axis, bool velocity, bool acceleration) noexcept;
+    // The acceleration of an axis update() was told not to fit, or did not name.
+    void fit_acceleration_now(int axis) noexcept;
+    // The common path: the running sums. Apart from estimate(), so that a handle at rest
+    // (answered there) does not pay for its frame.
+    void estimate_fast(int axis, bool velocity, bool acceleration) noexcept;
     // The longest rung whose line (order 1) or parabola (order 2) passes the band check:
     // its slope or second derivative, window and rung are the axis's velocity or
     // acceleration. gathered: the sums at every rung and the samples (gather_axis), the band
     // checked on every sample; nullptr: the running sums, the band checked on a fixed set of
     // samples.
-    void fit(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;
-    void fit_order(int axis, int order, const float* y, const float (*gathered)[kRungs]) noexcept;  // fit's body
+    // dense: the newest samples relative to the newest (dense_samples), for the band check.
+    void fit(int axis, int order, const float* dense, const float* y, const float (*gathered)[kRungs]) noexcept;
+    void fit_order(int axis, int order, const float* dense, const float* y,
+                   const float (*gathered)[kRungs]) noexcept;  // fit's body
+    // The newest few samples of an axis relative to the newest one, in buffer (null on the
+    // board: motion_estimator.cpp, kDenseSlots).
+    const float* dense_samples(int axis, float* buffer) const noexcept;
 
     // Whether x has a fixed-point value (see kFixedPerCount), and the value: x as an
     // integer of 1/fixed_scale_ units, rounded half away from zero; 0 where x has none.
@@ -211,7 +219,7 @@ private:
     int sums_axes_ = 0;
     RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
-    // frozen sample's, and its sums follow from it (ladder_sums). True while that holds.
+    // frozen sample's, and its sums follow from it (window_sums). True while that holds.
     bool sums_still_[kMaxAxes] = {};
     float velocity_[kMaxAxes] = {};
     float acceleration_[kMaxAxes] = {};
@@ -221,7 +229,10 @@ private:
     int velocity_rung_[kMaxAxes] = {};
     int acceleration_rung_[kMaxAxes] = {};
     int acceleration_window_[kMaxAxes] = {};
-    bool acceleration_ready_[kMaxAxes] = {};
+    // Bit a: axis a's acceleration is fitted for the last update (one byte: update sets them
+    // all in one store, fit_acceleration_now its axis's).
+    static constexpr uint8_t kEveryAxis = static_cast<uint8_t>((1u << kMaxAxes) - 1);
+    uint8_t acceleration_ready_ = kEveryAxis;
 };
 
 }  // namespace feel::detail
