@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "float_round.hpp"
+
 namespace feel::detail {
 
 namespace {
@@ -36,7 +38,7 @@ float texture_bump(float s, int32_t spacing, float width) noexcept {
     if (!(spacing > 0) || !(width > 0)) return 0.0f;
     const float step = static_cast<float>(spacing);
     // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
-    const float r = s - step * std::round(s / step);
+    const float r = s - step * round_half_away(s / step);
     const float half = width / 2.0f;
     if (r > half || r < -half) return 0.0f;
     const float c = cos_within_half_pi(std::numbers::pi_v<float> * r / width);
