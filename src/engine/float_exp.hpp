@@ -31,10 +31,58 @@
 // tanh ±inf = ±1.
 #pragma once
 
+#include <bit>
+#include <cstdint>
+#include <limits>
+
 namespace feel::detail {
 
+// e^x, or e^x − 1 when minus_one. Inline, so that x86 specializes it at each call (a call
+// costs its caller the spill of every live float register, which made friction's tick
+// slower than with glibc's expf); the board calls one out-of-line copy (float_exp.cpp).
+// The same operations either way, so the same bits.
+[[nodiscard, gnu::always_inline]] inline float exp_or_expm1_inline(float x, bool minus_one) noexcept {
+    constexpr float kLog2e = 1.44269504088896340736f;
+    constexpr float kLn2Hi = 0x1.62e4p-1f;                // 0.693145751953125: 15 significant bits
+    constexpr float kLn2Lo = 1.42860682030941723212e-6f;  // ln 2 − kLn2Hi
+    constexpr float kLargest = 0x1.62e42ep+6f;            // 88.72283: the largest x with e^x below FLT_MAX
+    constexpr float kSmallest = -87.33f;                  // e^x > FLT_MIN (2^-126 = e^-87.3365) above it
+    constexpr float kMinusOne = -17.4f;                   // below: e^x < 2^-25, e^x − 1 rounds to −1
+    constexpr float kRound = 0x1.8p23f;                   // adding it rounds a float below 2^22 to a whole number
+    if (x != x) return x;
+    if (x > kLargest) return std::numeric_limits<float>::infinity();
+    if (minus_one) {
+        if (x == 0.0f) return x;  // ±0, its sign kept
+        if (x < kMinusOne) return -1.0f;
+    } else if (x < kSmallest) {
+        return 0.0f;  // no subnormal results
+    }
+    // x = k·ln 2 + r, k the nearest whole number to x/ln 2 (ties to even): |k| ≤ 128.
+    const float fk = (x * kLog2e + kRound) - kRound;
+    const int k = static_cast<int>(fk);
+    const float r = (x - fk * kLn2Hi) - fk * kLn2Lo;
+    // e^r − 1 for |r| ≤ 0.35: the Taylor series to r⁷, its leading term r exact.
+    const float q = 0.5f + r * (1.0f / 6 + r * (1.0f / 24 + r * (1.0f / 120 + r * (1.0f / 720 + r * (1.0f / 5040)))));
+    const float p = r + (r * r) * q;
+    if (minus_one && k <= 24) {
+        if (k == 0) return p;
+        // 2^k·(1 + p) − 1 = 2^k·p + (2^k − 1): both parts exact for −25 ≤ k ≤ 24, so the sum
+        // rounds once. (Beyond 2^24 the −1 is below half an ulp of e^x: below.)
+        const float two_k = std::bit_cast<float>(static_cast<uint32_t>(k + 127) << 23);
+        return two_k * p + (two_k - 1.0f);
+    }
+    // 2^k·(1 + p): 1 + p is in [0.7, 1.42] and the result a normal float (the guards), so
+    // adding k to the exponent's bits is the exact multiplication.
+    return std::bit_cast<float>(std::bit_cast<uint32_t>(1.0f + p) + (static_cast<uint32_t>(k) << 23));
+}
+
+#if defined(__x86_64__) || defined(__aarch64__)
+[[nodiscard]] inline float float_exp(float x) noexcept { return exp_or_expm1_inline(x, false); }
+[[nodiscard]] inline float float_expm1(float x) noexcept { return exp_or_expm1_inline(x, true); }
+#else
 [[nodiscard]] float float_exp(float x) noexcept;
 [[nodiscard]] float float_expm1(float x) noexcept;
+#endif
 [[nodiscard]] float float_tanh(float x) noexcept;
 
 }  // namespace feel::detail
