@@ -21,7 +21,12 @@ else
     libgcc_what='called by the engine: 64-bit division or int64 -> float conversion, most likely'
 fi
 printf '  libgcc            %6d  (%s)\n' "$libgcc" "$libgcc_what"
-printf '  libm              %6d  (float expf, expm1f, tanhf, sqrtf, ... from newlib: called by the engine; no double function is linked)\n' "$libm"
+if [ "$libm" -eq 0 ]; then
+    libm_what="none called: the engine's own float exp, expm1 and tanh (float_exp.hpp), round and nextafter (float_round.hpp), sqrt an FPU instruction"
+else
+    libm_what='called by the engine: a float or double libm function, see the map file'
+fi
+printf '  libm              %6d  (%s)\n' "$libm" "$libm_what"
 printf '  engine + callees  %6d  goal 49152\n' $((engine + libgcc + libm))
 printf '  C runtime         %6d  (newlib: printf, exit, semihosting for the harness; malloc for the engine at start-up)\n' "$runtime"
 printf '  program           %6d  (size program, start-up, heap guard)\n' "$program"

@@ -211,16 +211,6 @@ void detail::prepare_slot(Slot& s) noexcept {
 
 namespace {
 
-// Rendering arrives class by class; until a class lands the engine says so plainly.
-Error check_renderable(EffectType type) noexcept {
-    switch (effect_class(type)) {
-        case EffectClass::wave:
-        case EffectClass::condition:
-        case EffectClass::dynamic: return {};
-    }
-    return Error::of(ErrorCode::not_supported, "type", "unknown effect class");
-}
-
 float finite_or_zero(float v) noexcept { return std::isfinite(v) ? v : 0.0f; }
 
 // Whether the tick adds the axes' forces in two unrolled lanes: on a device of 2 axes, and on
@@ -261,7 +251,6 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
             return {{}, Error::invalid(field, "names an axis this device does not have")};
         }
     }
-    if (Error e = check_renderable(params.type)) return {{}, e};
     if (Error e = detail::check_supported(m.config, params.type)) return {{}, e};
 
     int32_t index = -1;

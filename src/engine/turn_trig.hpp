@@ -16,7 +16,6 @@
 // whole and half turns and exactly ±1 at the crests.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 
 namespace feel::detail {
@@ -57,21 +56,5 @@ namespace feel::detail {
 
 // cos(2π·p) = sin(2π·(p + ¼)).
 [[nodiscard]] inline float cos_turns(float p) noexcept { return sin_turns(p + 0.25f); }
-
-// std::round without libm: the nearest whole number, halfway cases away from zero, the same
-// float as roundf for every float (the texture's and the surfaces' bumps find their nearest
-// ridge with it, 5 calls a tick in the busy mix; a library call on both targets). Below 2^23
-// a conversion truncates toward zero and x minus that is exact (Sterbenz's lemma above 1,
-// x itself below), so the correction by one is decided exactly; from 2^23 up every float is
-// whole, and infinities and NaN pass through. The sign is x's, so that −0.3 gives −0, as
-// roundf does. Checked against roundf on every float (tests/engine/turn_trig_test.cpp
-// samples them; the check over all 2^32 was run once, docs/stability.md).
-[[nodiscard]] inline float round_half_away(float x) noexcept {
-    const float magnitude = std::fabs(x);
-    if (!(magnitude < 8388608.0f)) return x;  // 2^23: whole already, or not a number
-    const float whole = static_cast<float>(static_cast<int32_t>(magnitude));
-    const float rounded = magnitude - whole >= 0.5f ? whole + 1.0f : whole;
-    return std::signbit(x) ? -rounded : rounded;
-}
 
 }  // namespace feel::detail

@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "feel/units.hpp"
+#include "float_exp.hpp"
+#include "float_round.hpp"
 #include "turn_trig.hpp"
 
 namespace feel::detail {
@@ -147,7 +149,7 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     const float mu = static_cast<float>(friction) * kPerFullScale;
     const float tau = static_cast<float>(texture) * kPerFullScale;
     const float slip_speed = kSurfaceSlipSpeed * c.config->velocity_ref;
-    const float magnitude = pressure * (mu + tau * bump) * std::tanh(speed / slip_speed);
+    const float magnitude = pressure * (mu + tau * bump) * float_tanh(speed / slip_speed);
     const float per_speed = magnitude / speed;
     for (int a = 0; a < c.axes; ++a) force[a] -= per_speed * v_t[a];
 }

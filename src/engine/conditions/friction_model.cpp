@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "turn_trig.hpp"
+#include "float_round.hpp"
 
 namespace feel::detail {
 

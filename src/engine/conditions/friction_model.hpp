@@ -60,6 +60,7 @@
 #include <cstdint>
 
 #include "feel/engine.hpp"
+#include "float_exp.hpp"
 
 namespace feel::detail {
 
@@ -113,7 +114,7 @@ struct PreslidingRule {
 // e^-u for the travel u >= 0 of one tick in presliding distances. A tick's travel is a few
 // counts and the zone tens to hundreds (docs/stability.md), so u is mostly below 1/4: there
 // the Taylor polynomial to u⁶ (truncation within u⁷/5040 < 1.3e-8) is within 1.3e-7 of e^-u
-// (2 float ulps, checked on every float in [0, 1/4)), where std::exp is a library call
+// (2 float ulps, checked on every float in [0, 1/4)), where float_exp is a call
 // whose caller must save every live register (issue 14: friction's cost per effect). It is
 // evaluated in Estrin's form, the powers u² and u⁴ beside the coefficients, so that its
 // chain of dependent operations is 5 long rather than Horner's 12: a tick renders many
@@ -125,7 +126,7 @@ struct PreslidingRule {
         const float high = (1.0f / 24 - u * (1.0f / 120)) + u2 * (1.0f / 720);
         return low + u4 * high;
     }
-    return std::exp(-u);
+    return float_exp(-u);
 }
 
 // Moves a primed bristle by the handle's travel dx (position units) over a presliding
@@ -227,7 +228,7 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     const float r2 = r * r;
     // Beyond 6 fade speeds the fade is below 2.4e-16: nothing a force can show.
     if (r2 > kDampingFadeCutoff) return 0.0f;
-    return -stiffness * kBristleDampingTime * rate * std::exp(-r2);
+    return -stiffness * kBristleDampingTime * rate * float_exp(-r2);
 }
 
 // The fade exp(-(v/v_d)²) of the microdamping alone, 0 beyond the cutoff: it depends on the
@@ -235,7 +236,7 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 [[nodiscard]] inline float bristle_damping_fade(float velocity, float inverse_fade_speed) noexcept {
     const float r = velocity * inverse_fade_speed;
     const float r2 = r * r;
-    return r2 > kDampingFadeCutoff || !std::isfinite(r2) ? 0.0f : std::exp(-r2);
+    return r2 > kDampingFadeCutoff || !std::isfinite(r2) ? 0.0f : float_exp(-r2);
 }
 
 // bristle_damping on a device axis from what the engine works out once per axis

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "float_exp.hpp"
+
 namespace feel::detail {
 
 StopGuardTick stop_guard_tick(const EngineConfig& config, float dt_s) noexcept {
@@ -14,7 +16,7 @@ StopGuardTick stop_guard_tick(const EngineConfig& config, float dt_s) noexcept {
     t.dt = dt_s;
     t.inverse_dt = 1.0f / t.dt;
     t.dt_per_mass = t.dt / t.mass;
-    const float theta = std::exp(-t.dt / kStopGuardTime);
+    const float theta = float_exp(-t.dt / kStopGuardTime);
     const float one = 1.0f - theta;
     t.gain_position = 1.0f - theta * theta * theta;
     t.gain_velocity = 1.5f * one * one * (1.0f + theta);

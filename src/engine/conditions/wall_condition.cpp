@@ -45,6 +45,7 @@
 #include "conditions/condition.hpp"
 #include "conditions/contact_surface.hpp"
 #include "conditions/passivity.hpp"
+#include "float_round.hpp"
 
 namespace feel::detail {
 
@@ -87,7 +88,7 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
             if (into * (dot(c, u, clipped) - surface) > 0) {
                 for (int a = 0; a < kMaxAxes; ++a) {
                     if (u[a] == 0) continue;
-                    clipped[a] = std::nextafter(clipped[a], -into * u[a] > 0 ? HUGE_VALF : -HUGE_VALF);
+                    clipped[a] = next_float(clipped[a], -into * u[a] > 0);
                 }
             }
             for (int a = 0; a < kMaxAxes; ++a) {

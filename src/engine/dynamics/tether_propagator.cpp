@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "float_exp.hpp"
+
 namespace feel::detail {
 
 namespace {
@@ -27,7 +29,7 @@ TetherPropagator tether_propagator(const SpringDamperF& s, float h) noexcept {
     const float gamma = s.damping / (2 * s.mass);
     const float w2 = s.stiffness / s.mass;
     const float delta = w2 - gamma * gamma;
-    const float decay = std::exp(-gamma * h);
+    const float decay = float_exp(-gamma * h);
     if (delta > 0 && decay > kMinShearDecay) {
         const float wd = std::sqrt(delta);
         const float theta = wd * h;
@@ -41,7 +43,7 @@ TetherPropagator tether_propagator(const SpringDamperF& s, float h) noexcept {
             p.c0 = (q - gamma) / w2;
             p.c1 = -w2 * (sine / wd);
             p.c2 = (q + gamma) / w2;
-            p.c3 = -std::expm1(-gamma * h);  // 1 − E, to its own precision
+            p.c3 = -float_expm1(-gamma * h);  // 1 − E, to its own precision
             return p;
         }
     }

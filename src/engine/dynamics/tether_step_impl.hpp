@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
+#include "float_exp.hpp"
 #include "turn_trig.hpp"
 
 namespace feel::detail {
@@ -37,13 +39,16 @@ inline float cos_of(float x) noexcept {
 }
 inline double sin_of(double x) noexcept { return std::sin(x); }
 inline double cos_of(double x) noexcept { return std::cos(x); }
+// In float the engine's own (float_exp.hpp: the same bits on x86 and the M4, no libm).
 template <typename T>
 T exp_of(T x) noexcept {
-    return std::exp(x);
+    if constexpr (std::is_same_v<T, float>) return float_exp(x);
+    else return std::exp(x);
 }
 template <typename T>
 T expm1_of(T x) noexcept {
-    return std::expm1(x);
+    if constexpr (std::is_same_v<T, float>) return float_expm1(x);
+    else return std::expm1(x);
 }
 
 // Below this |Δ|·h², C and S come from their Taylor series: near critical damping the

@@ -1,0 +1,36 @@
+// std::round and std::nextafter for float, bit for bit, without libm (issue 14's flash).
+//
+// On the Cortex-M4F (no rounding instruction) both are newlib calls, 204 bytes of flash
+// that were the engine's last libm routines (docs/firmware.md). These give the same float
+// as the library for every argument, ±0, infinities and NaN included
+// (tests/engine/float_round_test.cpp compares them with std::round and std::nextafter).
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace feel::detail {
+
+// std::round(x): to the nearest whole number, halves away from zero, the sign of x kept
+// (round(-0.3) is -0).
+[[nodiscard]] inline float round_half_away(float x) noexcept {
+    const float a = std::fabs(x);
+    if (!(a < 0x1p23f)) return x;  // whole already (from 2^23 on), ±inf or NaN
+    float whole = static_cast<float>(static_cast<int32_t>(a));  // truncation, exact
+    if (a - whole >= 0.5f) whole += 1.0f;                         // a − whole: exact (a's fraction)
+    return std::copysign(whole, x);
+}
+
+// std::nextafter(x, up ? +inf : -inf): the next float above or below x.
+[[nodiscard]] inline float next_float(float x, bool up) noexcept {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    if (x != x || x == (up ? kInf : -kInf)) return x;
+    if (x == 0) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
+    // Away from zero the magnitude's bits count up, toward it down (-FLT_MAX from -inf too).
+    const uint32_t bits = std::bit_cast<uint32_t>(x);
+    return std::bit_cast<float>((x > 0) == up ? bits + 1 : bits - 1);
+}
+
+}  // namespace feel::detail
