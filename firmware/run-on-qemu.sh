@@ -25,7 +25,12 @@ stale() {
 mapfile -t objects < <(ninja -C "$build" -t inputs "$(basename "$elf")" | grep '\.obj$')
 ((${#objects[@]} > 0)) || stale "is not a target of the ninja build in $build"
 declare -A built_from=()
-while IFS= read -r f; do built_from[$f]=1; done < <(ninja -C "$build" -t deps "${objects[@]}" | sed -n "s|^    \($root/.*\)|\1|p")
+# The deps log names files relative to the build directory when they are below its parent
+# (a build directory inside the tree), absolute otherwise: both are made absolute here.
+while IFS= read -r f; do
+  [[ $f == /* ]] || f=$(realpath -m "$build/$f")
+  [[ $f == "$root"/* ]] && built_from[$f]=1
+done < <(ninja -C "$build" -t deps "${objects[@]}" | sed -n 's|^    \(.*\)|\1|p')
 for f in "${!built_from[@]}"; do
   [[ -e $f ]] || stale "was built from $f, which is gone"
 done
