@@ -23,7 +23,7 @@ public:
     // capacity: 0..65535 records.
     explicit RecordPool(int32_t capacity)
         : capacity_(capacity > 0 ? capacity : 0),
-          records_(new Record[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]),
+          records_(new Record[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]()),
           free_(new uint16_t[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]),
           free_count_(capacity_) {
         // The lowest indices are handed out first.
