@@ -151,10 +151,8 @@ struct Engine::Impl {
           // Only friction and texture render last, and each holds a condition's memory.
           last_slots(new uint16_t[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_invalid ? 0 : c.max_samples, slot_count),
-          motion(),
           report_capacity(config_invalid ? 1 : c.report_capacity),
-          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]()),
-          observers() {
+          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]()) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
         interim_period_us = config_invalid ? 1000 : detail::period_us_of(c.interim_report_hz);
