@@ -145,14 +145,17 @@ struct Engine::Impl {
         : config(c),
           config_invalid(static_cast<bool>(detail::check_engine_config(c))),
           slot_count(config_invalid ? 0 : c.max_effects),
-          slots(new detail::Slot[static_cast<size_t>(slot_count > 0 ? slot_count : 1)]),
+          // The arrays' counts as 16 bits: every capacity is at most 65535 (check_engine_config),
+          // and a count the compiler knows is that small needs no test for an overflowing
+          // size (issue 14's flash).
+          slots(new detail::Slot[static_cast<uint16_t>(slot_count > 0 ? slot_count : 1)]()),
           dynamic_pool(config_invalid ? 0 : detail::dynamics_capacity(c)),
           condition_pool(config_invalid ? 0 : detail::stateful_conditions_capacity(c)),
           // Only friction and texture render last, and each holds a condition's memory.
-          last_slots(new uint16_t[static_cast<size_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
+          last_slots(new uint16_t[static_cast<uint16_t>(condition_pool.capacity() > 0 ? condition_pool.capacity() : 1)]),
           samples(config_invalid ? 0 : c.max_samples, slot_count),
           report_capacity(config_invalid ? 1 : c.report_capacity),
-          reports(new detail::QueuedReport[static_cast<size_t>(report_capacity)]) {
+          reports(new detail::QueuedReport[static_cast<uint16_t>(report_capacity)]()) {
         motion.configure(c.sensor_step);
         // Once, not per report (an invalid rate is refused by check_engine_config: no dynamic plays).
         interim_period_us = config_invalid ? 1000 : detail::period_us_of(c.interim_report_hz);

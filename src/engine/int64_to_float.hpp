@@ -7,14 +7,17 @@
 // the estimator's times and sums, the passivity ledger).
 //
 // float_of_int64 gives the same bits from one 32-bit conversion. A value that fits int32 is
-// converted directly. A larger magnitude m (2³¹ ≤ m ≤ 2⁶³) is shifted right by s so that
-// 31 bits remain, [2³⁰, 2³¹), and every bit shifted out is ORed into the lowest kept bit
-// (a sticky bit). A float keeps 24 of those 31 bits, so the rounding bit is bit 6 of the
-// kept value and bits 0..5 only say "something below it is set": ORing the dropped bits
-// into bit 0 keeps that answer, and the FPU's conversion (round to nearest even, the
-// default mode) rounds the kept value exactly as it would round m. Multiplying by 2^s
-// (1 ≤ s ≤ 33) is exact, and so is the sign. tests/engine/int64_to_float_test.cpp checks it
-// against the cast at the boundaries and on random values.
+// converted directly. A larger magnitude m (2³¹ ≤ m ≤ 2⁶³) is converted as an unsigned
+// 32-bit value (the FPU converts those too): m itself when it fits, else its top 32 bits,
+// [2³¹, 2³²), with every bit shifted out ORed into the lowest kept bit (a sticky bit). A
+// float keeps 24 of those 32 bits, so the rounding bit is bit 7 of the kept value and bits
+// 0..6 only say "something below it is set": ORing the dropped bits into bit 0 keeps that
+// answer, and the FPU's conversion (round to nearest even, the default mode) rounds the kept
+// value exactly as it would round m. Multiplying by 2^s (1 ≤ s ≤ 32, the bits dropped) is
+// exact, and so is the sign. Working on m's two 32-bit words, not shifting it as a 64-bit
+// value, keeps it at about half the Thumb code (issue 14's flash).
+// tests/engine/int64_to_float_test.cpp checks it against the cast at the boundaries and on
+// random values.
 #pragma once
 
 #include <bit>
@@ -28,11 +31,15 @@ namespace feel::detail {
     if (v >= INT32_MIN && v <= INT32_MAX) return static_cast<float>(static_cast<int32_t>(v));
     const bool negative = v < 0;
     const uint64_t m = negative ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-    const int s = 33 - std::countl_zero(m);  // m ≥ 2³¹: 1 ≤ s ≤ 33, m >> s in [2³⁰, 2³¹)
-    const uint64_t dropped = m & ((uint64_t{1} << s) - 1);
-    const auto kept = static_cast<int32_t>(static_cast<uint32_t>(m >> s) | (dropped != 0 ? 1u : 0u));
-    const float scale = std::bit_cast<float>(static_cast<uint32_t>(127 + s) << 23);  // 2^s
-    const float f = static_cast<float>(kept) * scale;
+    const auto high = static_cast<uint32_t>(m >> 32);
+    const auto low = static_cast<uint32_t>(m);
+    float f = static_cast<float>(low);  // correctly rounded when m < 2³²
+    if (high != 0) {
+        const int z = std::countl_zero(high);  // 0..31: s = 32 − z bits of low are dropped
+        const uint32_t kept = (high << z) | ((low >> 1) >> (31 - z)) | ((low << z) != 0 ? 1u : 0u);
+        const float scale = std::bit_cast<float>(static_cast<uint32_t>(127 + 32 - z) << 23);  // 2^s
+        f = static_cast<float>(kept) * scale;
+    }
     return negative ? -f : f;
 }
 

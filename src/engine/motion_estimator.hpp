@@ -24,6 +24,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 #include "feel/axis.hpp"
 
@@ -71,6 +73,19 @@ public:
         return k;
     }();
 
+    // Every member 0 but the tolerance and fixed-point scale (a sensor count of 1 until
+    // configure) and the ready flags. One zero fill: default member initialisers had the
+    // constructor write each array and scalar out by itself, 200 bytes of the board's
+    // Engine::Engine (issue 14's flash). The members are numbers only: zero bytes are 0.
+    MotionEstimator() noexcept {
+        std::memset(static_cast<void*>(this), 0, sizeof *this);
+        band_ = 1.0f;
+        fixed_scale_ = 64.0f;
+        fixed_unit_ = 1.0f / 64.0f;
+        max_fixed_position_ = 16777216.0f;
+        acceleration_ready_ = kEveryAxis;
+    }
+
     // sensor_step: the position change of one sensor count, normalized units (> 0). The
     // fit tolerance is one count: a sample one count off a line is quantization, two
     // counts off is motion.
@@ -104,18 +119,18 @@ private:
     // The sample times as the fits see them, shared by every axis: recomputed only when
     // they change, which at a steady loop rate is never (every sample's age is then i·T).
     struct TimePattern {
-        int max_n = 0;               // samples 0..max_n are within kMaxWindowUs of the newest
-        int rung_count = 0;          // windows tried: rung_n[0..rung_count-1], the last max_n
+        int max_n;       // samples 0..max_n are within kMaxWindowUs of the newest
+        int rung_count;  // windows tried: rung_n[0..rung_count-1], the last max_n
         // Bytes (issue 14's RAM): a length is at most kHistory - 1 = 127, an index at most 12.
-        uint8_t rung_n[kRungs] = {};     // their lengths, ascending
-        int8_t rung_ladder[kRungs] = {};  // the longest kLadder index not longer (-1: none)
+        uint8_t rung_n[kRungs];      // their lengths, ascending
+        int8_t rung_ladder[kRungs];  // the longest kLadder index not longer (-1: none)
         // moment[p - 1][r] = Σ u_i^p over samples 0..rung_n[r], p = 1..4 (Σ u^0 is the
         // sample count, rung_n[r] + 1: not kept).
-        float moment[4][kRungs] = {};
+        float moment[4][kRungs];
         // u_i = -age_i / kMaxWindowUs, in [-1, 0]. The fits square it where they need u_i²
         // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
-        float u[kHistory] = {};
-        int64_t steady_interval_us = 0;  // every interval was this (0: not a steady pattern)
+        float u[kHistory];
+        int64_t steady_interval_us;  // every interval was this (0: not a steady pattern)
     };
 
     // Running sums of the frozen samples (all but the newest, which a later sample of the
@@ -123,7 +138,7 @@ private:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
     // Only the windows of kFirstSummed up are kept (issue 14's RAM: 120 bytes an axis).
     struct RungSums {
-        int64_t s[kLadderSize - kFirstSummed][3] = {};
+        int64_t s[kLadderSize - kFirstSummed][3];
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
         const int64_t* at(int k) const noexcept { return s[k - kFirstSummed]; }
     };
@@ -173,66 +188,69 @@ private:
     int64_t fixed_at(int axis, int i) const noexcept;
     int64_t held_fixed_at(int axis, int i) const noexcept;  // i within fixed_run_
 
-    float band_ = 1.0f;  // fit tolerance, normalized position units: one sensor count
-    float fixed_scale_ = 64.0f;        // fixed-point units per position unit, a power of two
-    float fixed_unit_ = 1.0f / 64.0f;  // 1 / fixed_scale_, exact
-    float max_fixed_position_ = 16777216.0f;  // position units: 2^30 fixed-point units
-    int count_ = 0;      // valid samples in the ring, 0..kHistory
-    int head_ = 0;       // index of the newest sample; older ones follow it (mod kHistory)
+    // Every member starts at 0 but the five the constructor sets.
+    float band_;                // fit tolerance, normalized position units: one sensor count (1)
+    float fixed_scale_;         // fixed-point units per position unit, a power of two (64)
+    float fixed_unit_;          // 1 / fixed_scale_, exact
+    float max_fixed_position_;  // position units: 2^30 fixed-point units
+    int count_;  // valid samples in the ring, 0..kHistory
+    int head_;   // index of the newest sample; older ones follow it (mod kHistory)
     // The newest steady_run_ intervals all equal steady_interval_us_ (µs).
-    int64_t steady_interval_us_ = 0;
-    int steady_run_ = 0;
-    int64_t newest_t_us_ = 0;  // the newest sample's time
+    int64_t steady_interval_us_;
+    int steady_run_;
+    int64_t newest_t_us_;  // the newest sample's time
     // Every sample's time, its low 32 bits: the times between them follow exactly
     // (kMaxGapUs; motion_estimator.cpp, elapsed_us).
-    uint32_t t_low_[kHistory] = {};
+    uint32_t t_low_[kHistory];
     // Axes update() has written samples of (the ring of the others holds only 0); never
     // lowered, not even by reset(), which leaves the ring's contents.
-    int written_axes_ = 0;
+    int written_axes_;
     // The positions as given. Their fixed-point values (fixed_at) are not kept: a copy would
     // cost 512 bytes an axis, and working one out is a multiplication and a rounding.
-    float x_[kMaxAxes][kHistory] = {};
+    float x_[kMaxAxes][kHistory];
     // How many of the newest samples of each axis read the newest value (never more than
     // they do; it may read fewer after a replaced sample): at rest it reaches max_n and
     // the fits are skipped without looking at the history.
-    int still_run_[kMaxAxes] = {};
+    int still_run_[kMaxAxes];
     TimePattern pattern_;
     // Intervals between frozen samples: the newest frozen_run_ of them are all
     // frozen_interval_us_ (µs).
-    int64_t frozen_interval_us_ = 0;
-    int frozen_run_ = 0;
+    int64_t frozen_interval_us_;
+    int frozen_run_;
     // How many of the newest frozen samples of each axis have a fixed-point value.
-    int fixed_run_[kMaxAxes] = {};
+    int fixed_run_[kMaxAxes];
     // Whether the newest sample (index 0) and the newest frozen one (index 1) have one: the
     // verdicts kept, not recomputed.
-    bool newest_fixed_[kMaxAxes] = {};
-    bool frozen_fixed_[kMaxAxes] = {};
+    bool newest_fixed_[kMaxAxes];
+    bool frozen_fixed_[kMaxAxes];
     // Their fixed-point values (fixed_at(axis, 0) and (axis, 1)), the ones the sums read
     // every tick, kept rather than worked out again.
-    int32_t newest_fixed_value_[kMaxAxes] = {};
-    int32_t frozen_fixed_value_[kMaxAxes] = {};
+    int32_t newest_fixed_value_[kMaxAxes];
+    int32_t frozen_fixed_value_[kMaxAxes];
     // What window_sums needs that is the same for every axis and rung of a tick, set by update:
     // the newest interval and the frozen one in units of kMaxWindowUs.
-    float newest_interval_u_ = 0.0f;
-    float frozen_interval_u_ = 0.0f;
+    float newest_interval_u_;
+    float frozen_interval_u_;
     // Axes whose running sums are kept up to date (the first sums_axes_).
-    int sums_axes_ = 0;
+    int sums_axes_;
     RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
     // frozen sample's, and its sums follow from it (window_sums). True while that holds.
-    bool sums_still_[kMaxAxes] = {};
-    float velocity_[kMaxAxes] = {};
-    float acceleration_[kMaxAxes] = {};
-    int velocity_window_[kMaxAxes] = {};
+    bool sums_still_[kMaxAxes];
+    float velocity_[kMaxAxes];
+    float acceleration_[kMaxAxes];
+    int velocity_window_[kMaxAxes];
     // The rungs (indices into the pattern's rung_n) the fast fits accepted last time: the
     // next search starts at most kRungsUp above them.
-    int velocity_rung_[kMaxAxes] = {};
-    int acceleration_rung_[kMaxAxes] = {};
-    int acceleration_window_[kMaxAxes] = {};
+    int velocity_rung_[kMaxAxes];
+    int acceleration_rung_[kMaxAxes];
+    int acceleration_window_[kMaxAxes];
     // Bit a: axis a's acceleration is fitted for the last update (one byte: update sets them
     // all in one store, fit_acceleration_now its axis's).
     static constexpr uint8_t kEveryAxis = static_cast<uint8_t>((1u << kMaxAxes) - 1);
-    uint8_t acceleration_ready_ = kEveryAxis;
+    uint8_t acceleration_ready_;  // kEveryAxis
 };
+
+static_assert(std::is_trivially_copyable_v<MotionEstimator>, "its constructor fills it with zero bytes");
 
 }  // namespace feel::detail

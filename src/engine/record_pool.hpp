@@ -20,11 +20,11 @@ namespace feel::detail {
 template <class Record>
 class RecordPool {
 public:
-    // capacity: 0..65535 records.
+    // capacity: 0..65535 records (so the arrays' counts are 16-bit: no overflowing size to test).
     explicit RecordPool(int32_t capacity)
         : capacity_(capacity > 0 ? capacity : 0),
-          records_(new Record[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]),
-          free_(new uint16_t[static_cast<size_t>(capacity_ > 0 ? capacity_ : 1)]),
+          records_(new Record[static_cast<uint16_t>(capacity_ > 0 ? capacity_ : 1)]()),
+          free_(new uint16_t[static_cast<uint16_t>(capacity_ > 0 ? capacity_ : 1)]),
           free_count_(capacity_) {
         // The lowest indices are handed out first.
         for (int32_t i = 0; i < capacity_; ++i) free_[i] = static_cast<uint16_t>(capacity_ - 1 - i);

@@ -63,6 +63,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 #include "conditions/friction_model.hpp"
 #include "feel/engine.hpp"
@@ -160,20 +162,30 @@ struct ObserverView {
 // handle and the same engine force). Advanced once a tick before the frictions render;
 // observe_axes restarts them when the previous tick was not observed (no friction played).
 struct AxisObservers {
-    HandleObserver axis[kMaxAxes] = {};
-    ObserverView view[kMaxAxes] = {};  // what the guards read of axis[] at this tick
+    // Every member 0 but the two marked -1: one zero fill, where default member initialisers
+    // had the engine's constructor write each field out by itself (issue 14's flash). Every
+    // member is a number: zero bytes are 0.
+    AxisObservers() noexcept {
+        std::memset(static_cast<void*>(this), 0, sizeof *this);
+        tick_dt_s = -1.0f;
+        last_t_us = -1;
+    }
+
+    HandleObserver axis[kMaxAxes];
+    ObserverView view[kMaxAxes];  // what the guards read of axis[] at this tick
     // The bristles' microdamping at the axis' estimated velocity v, shared by every friction
     // without a velocity offset (friction_model.hpp, bristle_damping): the fade
     // exp(-(v/v_d)²), 0 where there is nothing to damp (v = 0 or not finite) or beyond the
     // cutoff; v where the fade is not 0, else 0; and its way, +1 (> 0) or -1.
-    float fade[kMaxAxes] = {};
-    float damped_velocity[kMaxAxes] = {};
-    float damped_way[kMaxAxes] = {};
-    float inverse_fade_speed = 0.0f;
-    StopGuardTick tick{};
-    float tick_dt_s = -1.0f;       // the tick length tick and inverse_fade_speed are for
-    int64_t last_t_us = -1;        // the tick last observed
+    float fade[kMaxAxes];
+    float damped_velocity[kMaxAxes];
+    float damped_way[kMaxAxes];
+    float inverse_fade_speed;
+    StopGuardTick tick;
+    float tick_dt_s;    // the tick length tick and inverse_fade_speed are for (-1)
+    int64_t last_t_us;  // the tick last observed (-1)
 };
+static_assert(std::is_trivially_copyable_v<AxisObservers>, "its constructor fills it with zero bytes");
 
 // `t_us` this tick's time, `previous_t_us` the previous tick's (equal at the first tick),
 // `velocity` the engine's estimate.

@@ -45,6 +45,7 @@
 
 #include "dynamics/dynamic.hpp"
 #include "feel/units.hpp"
+#include "float_exp.hpp"
 
 namespace feel::detail {
 
@@ -57,30 +58,12 @@ inline constexpr float kBallMaxAdvanceS = 0.1f;
     return static_cast<float>(value) * reference / static_cast<float>(kFullScale);
 }
 
-// e^(−x) for x >= 0 (NaN gives NaN), in float from + and * only, so that x86 and the
-// Cortex-M4F compute the same bits (the sling's air; turn_trig.hpp says why: the board's
-// expf is newlib's fdlibm code, x86's glibc's, and they differ in the last bit now and
-// then). x = k·ln 2 − r with |r| <= ln 2 / 2: e^(−x) = 2^−k · e^r, e^r by its Taylor series
-// to r⁷ (truncation 6e-9), 2^−k exact in the exponent bits. Within 2 ulps of e^(−x)
-// (tests/engine/dynamics/sling_test.cpp); 0 past x = 87, where e^(−x) leaves float's
-// normal range.
+// e^(−x) for x >= 0 (NaN gives NaN): float_exp.hpp's e^x at −x, the same code on x86 and
+// the Cortex-M4F, so the same bits (within 1.1 ulps; tests/engine/dynamics/sling_test.cpp
+// holds it to 2). 0 from x = 87, where e^(−x) nears float's smallest normal. It had its own
+// series until issue 14's flash pass took its 164 bytes of Thumb code off the board.
 [[nodiscard]] inline float ball_decay(float x) noexcept {
-    if (!(x < 87.0f)) return x >= 87.0f ? 0.0f : x;
-    constexpr float kLog2e = 1.44269504089f;
-    constexpr float kLn2High = 0.693145751953125f;  // 15 significant bits: k·kLn2High is exact
-    constexpr float kLn2Low = 1.42860682030941723212e-6f;
-    const int k = static_cast<int>(x * kLog2e + 0.5f);  // the nearest whole k, x >= 0
-    const float whole = static_cast<float>(k);
-    const float r = (whole * kLn2High - x) + whole * kLn2Low;
-    float p = 1.0f / 5040.0f;
-    p = 1.0f / 720.0f + r * p;
-    p = 1.0f / 120.0f + r * p;
-    p = 1.0f / 24.0f + r * p;
-    p = 1.0f / 6.0f + r * p;
-    p = 0.5f + r * p;
-    p = 1.0f + r * p;
-    p = 1.0f + r * p;
-    return p * std::bit_cast<float>(static_cast<uint32_t>(127 - k) << 23);  // k <= 126: a normal 2^−k
+    return x < 87.0f ? float_exp(-x) : (x >= 87.0f ? 0.0f : x);
 }
 
 // The tick's length, s, as the balls compute with it.
