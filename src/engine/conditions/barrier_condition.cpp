@@ -100,6 +100,20 @@ void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     else if (state.side > 0 && s < center) state.side = -1;  // from the other side
     const int crossing = state.crossing != 0 ? state.crossing : -state.side;
 
+    // Out of the slab on the same side on both ticks (most of a barrier's ticks): the face
+    // holds nothing and the tent is zero at both ends, whatever the hardness, so there is
+    // no spring to evaluate, nothing to book and nothing to rub (passivity.hpp).
+    if (state.side == previous_side) {
+        const float into = state.side < 0 ? 1.0f : -1.0f;
+        const float half = 0.5f * static_cast<float>(barrier.thickness);
+        const float surface = state.side < 0 ? center - half : center + half;
+        if (port_out_of_contact(state, s, into * (s - surface), into * (state.coordinate - surface))) {
+            const float normal_force = out_of_contact_force(state, s, into);
+            for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
+            return;
+        }
+    }
+
     // The ideal energy change since the last tick: the tent of the crossing, split at the
     // center if the handle popped through. Outside the slab the tent is zero whatever its
     // hardness, so a new crossing's hardness changes nothing that was stored.
