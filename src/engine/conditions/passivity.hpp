@@ -80,7 +80,6 @@
 // Real-time safe: a few multiplications, no allocation, state only in ContactState.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 
 #include "conditions/contact_state.hpp"
@@ -120,28 +119,15 @@ struct PortTick {
 // generates) and the force is returned unchanged.
 float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept;
 
-// A tick of a port out of contact (docs/conditions.md, "Out of contact"): the depth into
-// the element was not positive at the last tick nor is it now, the element held no force,
-// and the handle's move is finite. passive_port_force would then book ±0 (the ideal
-// element stored nothing at either end, and a zero force did no work), leave the ledger
-// alone and return the element's zero force: port_out_of_contact tells such a tick, and
-// out_of_contact_force records it as passive_port_force would, without the element's
-// stiffness, energy or rubbing.
-[[nodiscard]] inline bool port_out_of_contact(const ContactState& state, float coordinate, float depth,
-                                              float previous_depth) noexcept {
-    return depth <= 0 && previous_depth <= 0 && state.force == 0 &&
-           std::isfinite(coordinate - state.coordinate);
-}
-
-// Records an out-of-contact tick at coordinate and returns its force along u: the zero of
-// `into`'s sign (into · 0, as the saturated spring's zero force along into).
-inline float out_of_contact_force(ContactState& state, float coordinate, float into) noexcept {
-    const float zero = into * 0.0f;
-    state.observing = true;
-    state.coordinate = coordinate;
-    state.force = zero;
-    return zero;
-}
+// A tick of a port out of contact (docs/conditions.md, "Out of contact"): the depth
+// into(s − surface) into the element was not positive at the last tick nor is it now at
+// s = coordinate, the element held no force, and the handle's move is finite.
+// passive_port_force would then book ±0 (the ideal element stored nothing at either end,
+// and a zero force did no work), leave the ledger alone and return the element's zero
+// force, into · 0. If this tick is such a tick, records it as passive_port_force would
+// (state.force is then the force to command) and returns true, so the element need not
+// work out its stiffness, energy or rubbing; otherwise returns false and changes nothing.
+bool port_out_of_contact(ContactState& state, float coordinate, float into, float surface) noexcept;
 
 // The energy the ledger holds, in energy units (force units · position units), in float
 // (2^-24 of it: the ledger's own resolution is 1/kLedgerScale).

@@ -57,27 +57,25 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
                           (wall.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
     const float into = wall.sense == WallSense::positive ? 1.0f : -1.0f;  // along u, into the solid
     ContactState& state = c.state->contact;
-    const float depth = into * (s - surface);
-    const float previous_depth = into * (state.coordinate - surface);
 
-    float normal_force = 0;
     float pressure = 0;
-    if (port_out_of_contact(state, s, depth, previous_depth)) {
-        // Free on both ticks (most of a wall's ticks): no spring, no ledger, no rubbing.
-        normal_force = out_of_contact_force(state, s, into);
-    } else {
+    // Free on both ticks (most of a wall's ticks): no spring, no ledger, no rubbing.
+    if (!port_out_of_contact(state, s, into, surface)) {
         const float k = element_stiffness(*c.config, wall.hardness);
         PortTick tick;
         tick.coordinate = s;
-        tick.ideal_energy_change = saturated_spring_energy_change(k, previous_depth, depth);
-        tick.force = into * saturated_spring_force(k, depth);
+        tick.ideal_energy_change =
+            saturated_spring_energy_change(k, into * (state.coordinate - surface), into * (s - surface));
+        tick.force = into * saturated_spring_force(k, into * (s - surface));
         tick.stiffness = std::fabs(k);
         tick.velocity = dot(c, u, c.velocity);
         tick.dt_s = c.dt_s;
         tick.resolution = c.config->sensor_step;
-        normal_force = passive_port_force(state, tick, c.config->passivity_control);
+        passive_port_force(state, tick, c.config->passivity_control);
         pressure = std::fabs(tick.force);
     }
+    // The force along u to command: passive_port_force's, or port_out_of_contact's zero.
+    const float normal_force = state.force;
     for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
 
     if (pressure > 0) add_rubbing_force(c, pressure, wall.surface_friction, wall.surface_texture, force);
