@@ -131,16 +131,9 @@ void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
                                   face_energy_change(face, center, face, s);
         }
 
-        PortTick tick;
-        tick.coordinate = s;
-        tick.ideal_energy_change = ideal_energy_change;
-        tick.force = face.into * saturated_spring_force(face.k, face_depth(face, s));
-        tick.stiffness = std::fabs(face.k);
-        tick.velocity = dot(c, u, c.velocity);
-        tick.dt_s = c.dt_s;
-        tick.resolution = c.config->sensor_step;
-        passive_port_force(state, tick, c.config->passivity_control);
-        pressure = std::fabs(tick.force);
+        pressure = press_port(state, s, ideal_energy_change, face.into * saturated_spring_force(face.k, face_depth(face, s)),
+                              face.k, dot(c, u, c.velocity), c.dt_s, c.config->sensor_step,
+                              c.config->passivity_control);
     }
     // The force along u to command, passive_port_force's or port_out_of_contact's zero.
     const float normal_force = state.force;

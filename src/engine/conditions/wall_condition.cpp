@@ -62,17 +62,10 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     // Free on both ticks (most of a wall's ticks): no spring, no ledger, no rubbing.
     if (!port_out_of_contact(state, s, into, surface)) {
         const float k = element_stiffness(*c.config, wall.hardness);
-        PortTick tick;
-        tick.coordinate = s;
-        tick.ideal_energy_change =
-            saturated_spring_energy_change(k, into * (state.coordinate - surface), into * (s - surface));
-        tick.force = into * saturated_spring_force(k, into * (s - surface));
-        tick.stiffness = std::fabs(k);
-        tick.velocity = dot(c, u, c.velocity);
-        tick.dt_s = c.dt_s;
-        tick.resolution = c.config->sensor_step;
-        passive_port_force(state, tick, c.config->passivity_control);
-        pressure = std::fabs(tick.force);
+        const float depth = into * (s - surface);
+        const float energy_change = saturated_spring_energy_change(k, into * (state.coordinate - surface), depth);
+        pressure = press_port(state, s, energy_change, into * saturated_spring_force(k, depth), k, dot(c, u, c.velocity),
+                              c.dt_s, c.config->sensor_step, c.config->passivity_control);
     }
     // The force along u to command: passive_port_force's, or port_out_of_contact's zero.
     const float normal_force = state.force;
