@@ -122,9 +122,9 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
 
 // A tick of a port out of contact (docs/conditions.md, "Out of contact"): the depth
 // into(s − surface) into the element was not positive at the last tick nor is it now at
-// s = coordinate, the element held no force, and the handle's move is finite.
-// passive_port_force would then book ±0 (the ideal element stored nothing at either end,
-// and a zero force did no work), leave the ledger alone and return the element's zero
+// s = coordinate, and the force it held did no work (a zero force over a finite move, or
+// any force over no move). passive_port_force would then book ±0 (the ideal element stored
+// nothing at either end), leave the ledger alone and return the element's zero
 // force, into · 0. If this tick is such a tick, records it as passive_port_force would
 // (state.force is then the force to command) and returns true, so the element need not
 // work out its stiffness, energy or rubbing; otherwise returns false and changes nothing.
