@@ -50,6 +50,16 @@
 namespace feel::detail {
 namespace {
 
+// The out-of-contact way below costs about 100 bytes of Thumb code in the barrier: a build
+// for size (the Cortex-M4F firmware, whose flash is at its goal) leaves it out, as friction's
+// lean way, and every tick takes the general way, which gives the same force (the wall keeps
+// its way everywhere: docs/stability.md, "Walls and barriers out of contact").
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kBarrierOutOfContactWay = false;
+#else
+inline constexpr bool kBarrierOutOfContactWay = true;
+#endif
+
 // The face that holds a handle on one side: its stiffness (the crossing's), the direction
 // of travel into it along u, and its coordinate.
 struct Face {
@@ -93,40 +103,43 @@ void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     if (state.side == 0) state.side = s >= center ? 1 : -1;
     const int previous_side = state.side;
     const int previous_crossing = state.crossing != 0 ? state.crossing : -state.side;
-    const bool inside = std::fabs(s - center) < 0.5f * static_cast<float>(barrier.thickness);
+    const float half = 0.5f * static_cast<float>(barrier.thickness);
+    const bool inside = std::fabs(s - center) < half;
     if (!inside) state.crossing = 0;
     else if (state.crossing == 0) state.crossing = static_cast<int8_t>(-state.side);  // entered from this side
     if (state.side < 0 && s > center) state.side = 1;        // pushed past half the thickness
     else if (state.side > 0 && s < center) state.side = -1;  // from the other side
     const int crossing = state.crossing != 0 ? state.crossing : -state.side;
 
-    // The ideal energy change since the last tick: the tent of the crossing, split at the
-    // center if the handle popped through. Outside the slab the tent is zero whatever its
-    // hardness, so a new crossing's hardness changes nothing that was stored.
-    const Face face = face_of(barrier, center, *c.config, state.side, crossing);
-    const Face before = face_of(barrier, center, *c.config, previous_side, previous_crossing);
-    float ideal_energy_change = 0;
-    if (state.side == previous_side) {
-        ideal_energy_change = face_energy_change(before, state.coordinate, face, s);
-    } else {
-        const Face before_at_center = face_of(barrier, center, *c.config, previous_side, crossing);
-        ideal_energy_change = face_energy_change(before, state.coordinate, before_at_center, center) +
-                              face_energy_change(face, center, face, s);
-    }
+    // Out of the slab on the same side on both ticks (most of a barrier's ticks): the face
+    // holds nothing and the tent is zero at both ends, whatever the hardness, so there is
+    // no spring to evaluate, nothing to book and nothing to rub (passivity.hpp).
+    float pressure = 0;
+    if (!kBarrierOutOfContactWay || state.side != previous_side ||
+        !port_out_of_contact(state, s, state.side < 0 ? 1.0f : -1.0f, state.side < 0 ? center - half : center + half)) {
+        // The ideal energy change since the last tick: the tent of the crossing, split at the
+        // center if the handle popped through. Outside the slab the tent is zero whatever its
+        // hardness, so a new crossing's hardness changes nothing that was stored.
+        const Face face = face_of(barrier, center, *c.config, state.side, crossing);
+        const Face before = face_of(barrier, center, *c.config, previous_side, previous_crossing);
+        float ideal_energy_change = 0;
+        if (state.side == previous_side) {
+            ideal_energy_change = face_energy_change(before, state.coordinate, face, s);
+        } else {
+            const Face before_at_center = face_of(barrier, center, *c.config, previous_side, crossing);
+            ideal_energy_change = face_energy_change(before, state.coordinate, before_at_center, center) +
+                                  face_energy_change(face, center, face, s);
+        }
 
-    PortTick tick;
-    tick.coordinate = s;
-    tick.ideal_energy_change = ideal_energy_change;
-    tick.force = face.into * saturated_spring_force(face.k, face_depth(face, s));
-    tick.stiffness = std::fabs(face.k);
-    tick.velocity = dot(c, u, c.velocity);
-    tick.dt_s = c.dt_s;
-    tick.resolution = c.config->sensor_step;
-    const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
+        pressure = press_port(state, s, ideal_energy_change, face.into * saturated_spring_force(face.k, face_depth(face, s)),
+                              face.k, dot(c, u, c.velocity), c.dt_s, c.config->sensor_step,
+                              c.config->passivity_control);
+    }
+    // The force along u to command, passive_port_force's or port_out_of_contact's zero.
+    const float normal_force = state.force;
     for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
 
-    add_rubbing_force(c, std::fabs(tick.force), barrier.surface_friction, barrier.surface_texture,
-                      force);
+    add_rubbing_force(c, pressure, barrier.surface_friction, barrier.surface_texture, force);
 }
 
 }  // namespace feel::detail

@@ -80,6 +80,7 @@
 // Real-time safe: a few multiplications, no allocation, state only in ContactState.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "conditions/contact_state.hpp"
@@ -118,6 +119,34 @@ struct PortTick {
 // With control off the observer still runs (the ledger shows what a naive element
 // generates) and the force is returned unchanged.
 float passive_port_force(ContactState& state, const PortTick& tick, bool control) noexcept;
+
+// A tick of a port out of contact (docs/conditions.md, "Out of contact"): the depth
+// into(s − surface) into the element was not positive at the last tick nor is it now at
+// s = coordinate, and the force it held did no work (a zero force over a finite move, or
+// any force over no move). passive_port_force would then book ±0 (the ideal element stored
+// nothing at either end), leave the ledger alone and return the element's zero
+// force, into · 0. If this tick is such a tick, records it as passive_port_force would
+// (state.force is then the force to command) and returns true, so the element need not
+// work out its stiffness, energy or rubbing; otherwise returns false and changes nothing.
+bool port_out_of_contact(ContactState& state, float coordinate, float into, float surface) noexcept;
+
+// A contact element's tick in contact: the port's reading at coordinate s with the ideal
+// element's energy change, force along u and stiffness k, the handle's velocity along u,
+// the tick and the sensor's step, through passive_port_force (the commanded force is then
+// state.force). Returns the ideal force's magnitude, the pressure on the surface.
+inline float press_port(ContactState& state, float s, float ideal_energy_change, float ideal_force, float k,
+                        float velocity, float dt_s, float resolution, bool control) noexcept {
+    PortTick tick;
+    tick.coordinate = s;
+    tick.ideal_energy_change = ideal_energy_change;
+    tick.force = ideal_force;
+    tick.stiffness = std::fabs(k);
+    tick.velocity = velocity;
+    tick.dt_s = dt_s;
+    tick.resolution = resolution;
+    passive_port_force(state, tick, control);
+    return std::fabs(ideal_force);
+}
 
 // The energy the ledger holds, in energy units (force units · position units), in float
 // (2^-24 of it: the ledger's own resolution is 1/kLedgerScale).

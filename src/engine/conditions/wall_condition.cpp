@@ -56,24 +56,22 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const float surface = static_cast<float>(wall.offset) +
                           (wall.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
     const float into = wall.sense == WallSense::positive ? 1.0f : -1.0f;  // along u, into the solid
-    const float k = element_stiffness(*c.config, wall.hardness);
-
     ContactState& state = c.state->contact;
-    const float depth = into * (s - surface);
-    const float previous_depth = into * (state.coordinate - surface);
 
-    PortTick tick;
-    tick.coordinate = s;
-    tick.ideal_energy_change = saturated_spring_energy_change(k, previous_depth, depth);
-    tick.force = into * saturated_spring_force(k, depth);
-    tick.stiffness = std::fabs(k);
-    tick.velocity = dot(c, u, c.velocity);
-    tick.dt_s = c.dt_s;
-    tick.resolution = c.config->sensor_step;
-    const float normal_force = passive_port_force(state, tick, c.config->passivity_control);
+    float pressure = 0;
+    // Free on both ticks (most of a wall's ticks): no spring, no ledger, no rubbing.
+    if (!port_out_of_contact(state, s, into, surface)) {
+        const float k = element_stiffness(*c.config, wall.hardness);
+        const float depth = into * (s - surface);
+        const float energy_change = saturated_spring_energy_change(k, into * (state.coordinate - surface), depth);
+        pressure = press_port(state, s, energy_change, into * saturated_spring_force(k, depth), k, dot(c, u, c.velocity),
+                              c.dt_s, c.config->sensor_step, c.config->passivity_control);
+    }
+    // The force along u to command: passive_port_force's, or port_out_of_contact's zero.
+    const float normal_force = state.force;
     for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
 
-    add_rubbing_force(c, std::fabs(tick.force), wall.surface_friction, wall.surface_texture, force);
+    if (pressure > 0) add_rubbing_force(c, pressure, wall.surface_friction, wall.surface_texture, force);
 
     if (wall.clipping) {
         const float reported_depth = into * (dot(c, u, c.reported_position) - surface);
