@@ -13,7 +13,9 @@ namespace {
 constexpr float kTurnsPerCentideg = 1.0f / 36000.0f;
 }  // namespace
 
-void prepare_periodic_block(SlotParams& s) noexcept {
+// Not inlined: create and update each take slot_params, and the board's flash counts
+// every copy (once per command, its call costs nothing that matters).
+[[gnu::noinline]] void prepare_periodic_block(SlotParams& s) noexcept {
     SlotPeriodicBlock& b = s.periodic;
     // envelope_level's windows: the attack while τ < settle_time, the fade while τ > the
     // duration − fade_time; between them (or with no envelope) it returns the level unchanged.
@@ -31,7 +33,9 @@ void prepare_periodic_block(SlotParams& s) noexcept {
     const bool clockwise = b.sweep_sense == SweepSense::clockwise;
     const int32_t from = clockwise ? b.sweep_start_angle : b.sweep_end_angle;
     const int32_t to = clockwise ? b.sweep_end_angle : b.sweep_start_angle;
-    const float travel = static_cast<float>(((to - from) % 36000 + 36000) % 36000) * kTurnsPerCentideg;
+    int32_t travel_centideg = (to - from) % 36000;  // in (−36000, 36000)
+    if (travel_centideg < 0) travel_centideg += 36000;
+    const float travel = static_cast<float>(travel_centideg) * kTurnsPerCentideg;
     b.sweep_span_turns = clockwise ? travel : -travel;
 }
 

@@ -1,7 +1,7 @@
 // Dispatch from an effect type to the wave that renders it.
 #include "wave.hpp"
 
-#include "../turn_trig.hpp"
+#include "../direction.hpp"
 
 namespace feel::detail {
 namespace {
@@ -34,14 +34,9 @@ float scalar_wave_value(const WaveInput& in) noexcept {
 void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
     const SlotParams& p = *in.params;
     if (is_sweep(p.type)) {
-        // polar_factors_turns's factors (−sin, −cos on x, y; 0 on the others) applied here
-        // without forming them: the same products, so the same bits.
-        static_assert(axis_index(Axis::x) == 0 && axis_index(Axis::y) == 1);
-        const float turns = sweep_turns(p, in.tau_us);
-        const float value = periodic_wave(p, in.waveform, in.tau_us);
-        if (in.axes > 0) force[0] += -sin_turns(turns) * value;
-        if (in.axes > 1) force[1] += -cos_turns(turns) * value;
-        for (int a = 2; a < in.axes; ++a) force[a] += 0.0f * value;
+        float swept[kMaxAxes];
+        polar_factors_turns(sweep_turns(p, in.tau_us), swept);
+        add_along(swept, in.axes, periodic_wave(p, in.waveform, in.tau_us), force);
         return;
     }
     if (p.type == EffectType::force_profile && p.custom.channels > 1) {

@@ -38,8 +38,8 @@ void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept;
 [[nodiscard]] float smart_pop_wave(const SlotParams& p, int64_t tau_us) noexcept;
 [[nodiscard]] float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noexcept;
 [[nodiscard]] float ramp_wave(const SlotParams& p, int64_t tau_us) noexcept;
-// The compass direction of a sweep at τ, in turns clockwise from north (may be any value:
-// render_wave takes its −sin and −cos as direction.hpp's polar_factors_turns would).
+// The compass direction of a sweep at τ, in turns clockwise from north (may be any value;
+// direction.hpp's polar_factors_turns takes it).
 [[nodiscard]] float sweep_turns(const SlotParams& p, int64_t tau_us) noexcept;
 // A one-channel force profile's value at τ.
 [[nodiscard]] float force_profile_value(const SlotParams& p, const int16_t* samples, int64_t tau_us) noexcept;
