@@ -1,10 +1,9 @@
 // Periodic waves (§6.6.b) and the Angle Sweep (§4.2.c, §6.6.i).
 //
-// What depends only on the block (the phase, the sweep's start and its travel in turns) is
-// worked out once per command (prepare_periodic_block), not every tick, with the operations
-// the tick used to do: the same floats, so the same forces. (The envelope's steady window
-// and the period as a float were kept too, about 110 instructions a tick fewer on the busy
-// mix, for 84 bytes of the board's flash over this pass's allowance: docs/stability.md.)
+// What depends only on the command (the phase, the sweep's start and its travel in turns,
+// the envelope's steady window) is worked out once per command (prepare_periodic_block),
+// not every tick, with the operations the tick used to do: the same floats, so the same
+// forces.
 #include "../envelope.hpp"
 #include "../waveform.hpp"
 #include "wave.hpp"
@@ -17,6 +16,13 @@ constexpr float kTurnsPerCentideg = 1.0f / 36000.0f;
 
 void prepare_periodic_block(SlotParams& s) noexcept {
     SlotPeriodicBlock& b = s.periodic;
+    // envelope_level's windows: the attack while τ < settle_time, the fade while τ > the
+    // duration − fade_time; between them (or with no envelope) it returns the level unchanged.
+    const SlotEnvelope& env = s.envelope;
+    b.steady_from_us = s.has_envelope && env.settle_time_us > 0 ? env.settle_time_us : 0;
+    b.steady_until_us = s.has_envelope && s.duration_us != kInfiniteUs && env.fade_time_us > 0
+                            ? s.duration_us - env.fade_time_us
+                            : INT32_MAX;
     b.phase_turns = static_cast<float>(b.phase) * kTurnsPerCentideg;
     b.sweep_start_turns = static_cast<float>(b.sweep_start_angle) * kTurnsPerCentideg;
     // The short or the long way round as the sense says: clockwise increases the compass
@@ -37,8 +43,11 @@ float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noex
     const SlotPeriodicBlock& b = p.periodic;
     const float source = waveform_value(waveform, cycle_fraction(tau_us, b.period_us, b.phase_turns));
     const float magnitude = static_cast<float>(b.magnitude);
-    const float amplitude =
-        p.has_envelope ? shape_by_envelope(p.envelope, magnitude, tau_us, p.duration_us) : magnitude;
+    // Outside the attack and the fade the envelope gives the magnitude back (its sign kept):
+    // the window was worked out with the command.
+    const bool steady = tau_us >= b.steady_from_us && tau_us <= b.steady_until_us;
+    const float amplitude = steady || !p.has_envelope ? magnitude
+                                                      : shape_by_envelope(p.envelope, magnitude, tau_us, p.duration_us);
     return static_cast<float>(b.offset) + amplitude * source;
 }
 
