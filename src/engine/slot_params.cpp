@@ -230,7 +230,10 @@ SlotParams slot_params(const EffectParams& p, const SlotDynamicBlock* dynamic_bl
                 s.conditions[i] = condition_block<SlotConditionBlock>(p.conditions[i]);
             }
             break;
-        case Block::periodic: s.periodic = periodic_block<SlotPeriodicBlock>(p.periodic); break;
+        case Block::periodic:
+            s.periodic = periodic_block<SlotPeriodicBlock>(p.periodic);
+            prepare_periodic_block(s);  // the header's fields above are set
+            break;
         case Block::constant: s.constant = p.constant; break;
         case Block::ramp: s.ramp = p.ramp; break;
         case Block::custom: s.custom = custom_block<SlotCustomBlock>(p.custom); break;

@@ -66,7 +66,31 @@ struct SlotPeriodicBlock {
     int32_t sweep_start_angle = 0;
     int32_t sweep_end_angle = 0;
     SweepSense sweep_sense = SweepSense::clockwise;
+
+    // Worked out once per command from the fields above (prepare_periodic_block), so that the
+    // tick does not: each is the value the tick's expression gave, with the same operations,
+    // so the forces are the same bits (docs/stability.md, "The waves' tick, eleventh pass").
+    // They lie in the union's room (its largest member is a spring's curves, 52 bytes on 2
+    // axes; this block is 48): the slot does not grow.
+    float phase_turns = 0.0f;          // phase / 36000: where in the cycle τ = 0 lies
+    float sweep_start_turns = 0.0f;    // sweep_start_angle / 36000
+    float sweep_span_turns = 0.0f;     // the sweep's travel over the duration, in turns: ≥ 0 clockwise, ≤ 0 counter-clockwise
+    // Wave times τ in [steady_from_us, steady_until_us] lie outside the envelope's attack and
+    // fade (or the effect has no envelope): the amplitude there is the magnitude itself, and
+    // the envelope is not evaluated. Outside it, it is (a τ past 2^31 µs of an endless wave
+    // included: the window is 32-bit, the evaluation right either way).
+    int32_t steady_from_us = 0;
+    int32_t steady_until_us = INT32_MAX;
 };
+
+// The prepared fields cost no RAM: on every device of 2 axes or more the union already
+// holds a larger member (the firmware's slot stays 160 bytes).
+static_assert(kMaxAxes < 2 || sizeof(SlotPeriodicBlock) <= sizeof(CurvedConditions));
+
+struct SlotParams;
+// Fills the prepared fields of a periodic's or sweep's block from the others and from the
+// effect's duration and envelope (waves/periodic_wave.cpp): slot_params calls it.
+void prepare_periodic_block(SlotParams& s) noexcept;
 
 // A force profile's block (§6.6.d) in a slot: the sample period (at most 65e6 µs) in 32 bits.
 struct SlotCustomBlock {

@@ -39,11 +39,11 @@ namespace feel::detail {
 // duration has τ below it (at most 65e6 µs), so the remainder is a 32-bit one (a Cortex-M4
 // divides 32 bits in hardware, 64 in a library call) and the same integer as the 64-bit
 // remainder; only an endless wave past 2^31 µs (36 minutes) takes the 64-bit one (time_division.hpp).
-[[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, int32_t phase) noexcept {
+// phase_turns is the phase / 36000, kept with the block (SlotPeriodicBlock).
+[[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, float phase_turns) noexcept {
     const int32_t into_cycle = tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
                                                    : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
-    float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) +
-              static_cast<float>(phase) * (1.0f / 36000.0f);
+    float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) + phase_turns;
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.
     if (p >= 1.0f) p -= 1.0f;
     if (p >= 1.0f) p = 0.0f;
