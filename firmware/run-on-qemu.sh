@@ -39,6 +39,14 @@ while IFS= read -r f; do
 done < <(find "$root/src/engine" -name '*.cpp')
 newer=$(find "${!built_from[@]}" -newer "$elf" -print -quit)
 [[ -z $newer ]] || stale "is older than $newer"
+# The x86 half: the comparison program renders the same scenario with this tree's engine,
+# so it must be newer than the engine's sources and public headers too (an old one reports
+# the engine's change as a difference between the boards, not as a stale build).
+newer=$(find "$root/src/engine" "$root/include/feel" "$root/tests/firmware" -type f -newer "$compare" -print -quit)
+if [[ -n $newer ]]; then
+  echo "stale comparison program: $compare is older than $newer: rebuild the x86 tree (cmake --build on its build directory; make test does it first)" >&2
+  exit 1
+fi
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none -icount shift=0 \
