@@ -23,6 +23,14 @@
 //          the joystick's damping and mass, and the same engine with none: friction's
 //          cost per effect is their difference over 32),
 //          damper_32 (the same with 32 two-axis dampers: what any condition costs)
+//
+//   feel_tick_instructions MIX TICKS --digest [--jitter]
+//     runs the same ticks (warm-up included) and prints a 64-bit FNV-1a digest of every
+//     output's bits (forces, reported position, velocity, acceleration, mass state) and
+//     every report's: two builds that print the same digest rendered the same bits, which
+//     is how a pass that claims to be bit for bit is checked. --jitter spreads the ticks'
+//     lengths over 900..1100 µs (a fixed sequence), so that the tick-length paths run too.
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -46,7 +54,45 @@ struct Run {
     detail::MotionEstimator estimator;
     bool estimator_only = false;
     bool with_acceleration = true;
+    bool digest = false;
+    uint64_t hash = 1469598103934665603ull;  // FNV-1a's offset basis
 };
+
+void mix_bits(uint64_t& hash, const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+}
+
+template <typename T>
+void mix_value(uint64_t& hash, const T& value) {
+    mix_bits(hash, &value, sizeof value);
+}
+
+void mix_output(uint64_t& hash, const TickOutput& out) {
+    for (int a = 0; a < kMaxAxes; ++a) {
+        mix_value(hash, out.force[a]);
+        mix_value(hash, out.reported_position[a]);
+        mix_value(hash, out.velocity[a]);
+        mix_value(hash, out.acceleration[a]);
+        mix_value(hash, out.mass_position[a]);
+        mix_value(hash, out.mass_velocity[a]);
+    }
+    mix_value(hash, out.saturated);
+    mix_value(hash, out.has_mass);
+    mix_value(hash, out.playing_effects);
+}
+
+void mix_report(uint64_t& hash, const DynamicReport& r) {
+    mix_value(hash, r.effect);
+    mix_value(hash, r.kind);
+    mix_value(hash, r.t_us);
+    mix_value(hash, r.axis_count);
+    for (int a = 0; a < kMaxAxes; ++a) {
+        mix_value(hash, r.position[a]);
+        mix_value(hash, r.velocity[a]);
+        mix_value(hash, r.handle_velocity[a]);
+    }
+}
 
 [[gnu::noipa]] void run_ticks(Run& run, const std::vector<TickInput>& inputs, size_t begin, size_t end) {
     TickOutput out;
@@ -56,10 +102,20 @@ struct Run {
         if (run.estimator_only) {
             run.estimator.update(inputs[k].t_us, inputs[k].position, 2, run.with_acceleration);
             sink += run.estimator.velocity(0);
+            if (run.digest) {
+                for (int a = 0; a < 2; ++a) {
+                    mix_value(run.hash, run.estimator.velocity(a));
+                    mix_value(run.hash, run.estimator.acceleration(a));
+                }
+            }
         } else {
             run.engine->tick(inputs[k], out);
-            while (run.engine->pop_report(report)) sink += report.position[0];
+            while (run.engine->pop_report(report)) {
+                sink += report.position[0];
+                if (run.digest) mix_report(run.hash, report);
+            }
             sink += out.force[0];
+            if (run.digest) mix_output(run.hash, out);
         }
     }
     if (sink == 12345.678f) std::puts("");  // keeps the work observable
@@ -75,11 +131,27 @@ struct Run {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: feel_tick_instructions MIX [TICKS]\n");
+        std::fprintf(stderr, "usage: feel_tick_instructions MIX [TICKS] [--digest [--jitter]]\n");
         return 2;
     }
     const char* mix = argv[1];
     const int ticks = argc > 2 ? std::atoi(argv[2]) : 2000;
+    bool digest = false;
+    bool jitter = false;
+    for (int i = 3; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--digest") == 0) {
+            digest = true;
+        } else if (std::strcmp(argv[i], "--jitter") == 0) {
+            jitter = true;
+        } else {
+            std::fprintf(stderr, "unknown option %s (--digest, --jitter)\n", argv[i]);
+            return 2;
+        }
+    }
+    if (jitter && !digest) {
+        std::fprintf(stderr, "--jitter is for --digest runs (the instruction counts are taken at 1 kHz)\n");
+        return 2;
+    }
     if (ticks < 1) {
         std::fprintf(stderr, "TICKS must be >= 1\n");
         return 2;
@@ -87,6 +159,7 @@ int main(int argc, char** argv) {
     const bool moving = std::strcmp(mix, "peer_at_rest") != 0 && std::strcmp(mix, "estimator_at_rest") != 0 &&
                         std::strncmp(mix, "busy_rest_", 10) != 0;
     Run run;
+    run.digest = digest;
     std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
     for (size_t k = 0; k < inputs.size(); ++k) {
         const int64_t n = static_cast<int64_t>(k) + 1;
@@ -133,8 +206,23 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "unknown MIX %s\n", mix);
         return 2;
     }
+    if (jitter) {
+        // A fixed sequence of tick lengths in 900..1100 µs (a linear congruential walk).
+        uint32_t lcg = 12345;
+        int64_t t_us = 0;
+        for (TickInput& in : inputs) {
+            lcg = lcg * 1664525u + 1013904223u;
+            t_us += 900 + static_cast<int64_t>((lcg >> 8) % 201);
+            in.t_us = t_us;
+        }
+    }
     run_ticks(run, inputs, 0, kWarmupTicks);
     measured_ticks(run, inputs, kWarmupTicks, inputs.size());
+    if (digest) {
+        std::printf("%s%s: %d ticks, digest %016llx\n", mix, jitter ? " (jittered ticks)" : "", ticks,
+                    static_cast<unsigned long long>(run.hash));
+        return 0;
+    }
     std::printf("%s: %d ticks measured\n", mix, ticks);
     return 0;
 }
