@@ -25,6 +25,16 @@ namespace feel::detail {
 // for 3% of them). A longer tick rounds its µs first and may differ from that in its last bit.
 [[nodiscard]] inline float tick_seconds_of(int64_t dt_us) noexcept { return float_of_int64(dt_us) / 1e6f; }
 
+// Whether a slot keeps where its current iteration began (Slot::iteration_start_us), so
+// that the tick reads most clocks with one comparison (Slot::clock): on x86, not in the
+// board's build for size, where the 8 bytes a slot are RAM (issue 14) and the second path
+// flash; both read the same clocks.
+#if !defined(__OPTIMIZE_SIZE__)
+#define FEEL_KEEPS_ITERATION_START 1
+#else
+#define FEEL_KEEPS_ITERATION_START 0
+#endif
+
 enum class ClockPhase : uint8_t { delayed, playing, finished };
 
 struct ClockReading {

@@ -58,7 +58,7 @@ int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t
         if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
         if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
         const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
-        clock = detail::read_clock(t.params, t.play_iterations(), elapsed_us, t.completed_iterations);
+        clock = t.clock(elapsed_us);
         if (clock.phase == ClockPhase::playing) return j;
     }
     return -1;
@@ -197,6 +197,7 @@ int64_t detail::period_us_of(float hz) noexcept {
 }
 
 void detail::prepare_slot(Slot& s) noexcept {
+    s.forget_iteration_start();
     direction_factors(s.params, s.direction);
     s.cls = effect_class(s.params.type);
     if (is_periodic(s.params.type) || is_sweep(s.params.type)) s.waveform = waveform_of(s.params.type);
@@ -389,16 +390,16 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     int32_t last_count = 0;
     SlingPairing pairing;
+    Slot* const slots = m.slots.get();  // once: the loop's stores could alias the member
     for (int32_t i = 0; i < slot_end; ++i) {
-        Slot& s = m.slots[i];
+        Slot& s = slots[i];
         if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
         s.elapsed_us = s.state == EffectState::pending ? 0 : s.elapsed_us + dt_us;
-        const int32_t iterations = s.play_iterations();
-        const detail::ClockReading clock = detail::read_clock(s.params, iterations, s.elapsed_us, s.completed_iterations);
+        const detail::ClockReading clock = s.advance_clock();
         if (clock.phase == ClockPhase::finished) {
             s.state = EffectState::stopped;
             s.last_end = PlayEnd::finished;
-            s.completed_iterations = iterations;
+            s.completed_iterations = s.play_iterations();
             continue;
         }
         s.completed_iterations = clock.iteration;
@@ -444,7 +445,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;
             if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling) {
-                render_sling(pairing, m.slots.get(), i, slot_end, dt_us, dynamic, force, result);
+                render_sling(pairing, slots, i, slot_end, dt_us, dynamic, force, result);
             } else {
                 detail::render_dynamic(dynamic, force, result);
             }
@@ -498,14 +499,13 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                              m.applied_force, axes);
         condition.observers = &m.observers;
         for (int32_t k = 0; k < last_count; ++k) {
-            Slot& s = m.slots[m.last_slots[k]];
+            Slot& s = slots[m.last_slots[k]];
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;
             // The first pass's reading again: the same clock, and the iteration it found is
-            // the guess, so no division.
-            condition.tau_us =
-                detail::read_clock(s.params, s.play_iterations(), s.elapsed_us, s.completed_iterations).tau_us;
+            // the guess, so no division (on x86, the window it kept).
+            condition.tau_us = s.clock(s.elapsed_us).tau_us;
             condition.state = s.condition_memory;
             condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};

@@ -47,6 +47,15 @@ struct Slot {
     // start, and pause, which freezes it, needs no start time to move). Next to params
     // (96 bytes on the board, a multiple of 8) so that the slot pads nothing before it.
     int64_t elapsed_us = 0;
+#if FEEL_KEEPS_ITERATION_START
+    // The current iteration's window in the same effect time: it began at
+    // iteration_start_us (start delay + iteration · duration) and lasts iteration_span_us
+    // (the duration, INT64_MAX when endless). Kept by the tick when it reads the clock the
+    // long way (read_clock); 0 (no window) after every command that moves the clock or
+    // changes its parameters (prepare_slot, begin_play). See clock().
+    int64_t iteration_start_us = 0;
+    uint64_t iteration_span_us = 0;
+#endif
     // What the tick needs of params every tick, worked out once per command (prepare_slot).
     // Fields widest first, so that the slot pads little (issue 14's RAM).
     float direction[kMaxAxes] = {};       // force per unit value on each device axis
@@ -84,6 +93,54 @@ struct Slot {
     // Read the effect's clock with it: detail::read_clock(params, play_iterations(), t).
     [[nodiscard]] int32_t play_iterations() const noexcept {
         return iterations_override != 0 ? iterations_override : params.iterations;
+    }
+
+    // The clock at effect time elapsed (≥ 0): detail::read_clock(params, play_iterations(),
+    // elapsed, completed_iterations), the same reading.
+    [[nodiscard, gnu::always_inline]] ClockReading clock(int64_t elapsed) const noexcept {
+        ClockReading r;
+        if (in_iteration_window(elapsed, r)) return r;
+        return read_clock(params, play_iterations(), elapsed, completed_iterations);
+    }
+
+    // The same reading at elapsed_us, by the tick, which keeps the window it finds.
+    [[nodiscard, gnu::always_inline]] ClockReading advance_clock() noexcept {
+        ClockReading r;
+        if (in_iteration_window(elapsed_us, r)) return r;
+        r = read_clock(params, play_iterations(), elapsed_us, completed_iterations);
+#if FEEL_KEEPS_ITERATION_START
+        if (r.phase == ClockPhase::playing) {
+            iteration_start_us = elapsed_us - r.tau_us;
+            iteration_span_us = params.duration_us == kInfiniteUs ? uint64_t{INT64_MAX}
+                                                                  : static_cast<uint64_t>(params.duration_us);
+        }
+#endif
+        return r;
+    }
+
+    // After a command that moves the clock (a new play) or changes its parameters.
+    void forget_iteration_start() noexcept {
+#if FEEL_KEEPS_ITERATION_START
+        iteration_span_us = 0;
+#endif
+    }
+
+    // Most ticks an effect stays in the iteration it was in: when elapsed −
+    // iteration_start_us lies in [0, span) (one unsigned comparison), the iteration is the
+    // one the last reading found (read_clock's floor(t / duration) is that iteration for
+    // such a t), which was not finished and cannot be now (the count and the parameters
+    // have not changed since, or the span would be 0), and τ is that difference: one
+    // subtraction and one comparison instead of read_clock's five tests. Into r, if so.
+    [[nodiscard, gnu::always_inline]] bool in_iteration_window([[maybe_unused]] int64_t elapsed,
+                                                              [[maybe_unused]] ClockReading& r) const noexcept {
+#if FEEL_KEEPS_ITERATION_START
+        const int64_t tau = elapsed - iteration_start_us;
+        if (static_cast<uint64_t>(tau) < iteration_span_us) {
+            r = ClockReading{ClockPhase::playing, tau, completed_iterations};
+            return true;
+        }
+#endif
+        return false;
     }
 };
 
@@ -171,6 +228,7 @@ struct Engine::Impl {
         s.iterations_override = static_cast<int16_t>(iterations_override);  // validated: -1..255
         s.completed_iterations = 0;
         s.elapsed_us = 0;
+        s.forget_iteration_start();
         s.last_end = PlayEnd::none;
         ++s.starts;
     }
