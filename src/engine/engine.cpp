@@ -230,6 +230,14 @@ constexpr bool two_lanes(int axes) noexcept { return kMaxAxes == 2 || axes == 2;
 // compiler may not move a load across it); it emits no instruction.
 inline void separate_loads() noexcept { asm("" ::: "memory"); }
 
+// Whether the tick calls a scalar periodic wave itself (x86) or through scalar_wave_value
+// (the board's build for size, where the second call site is flash): the same call.
+#if !defined(__OPTIMIZE_SIZE__)
+constexpr bool kCallsPeriodicDirectly = true;
+#else
+constexpr bool kCallsPeriodicDirectly = false;
+#endif
+
 // Gains are in units of 1/kFullScale: a multiplication by this, not a division per effect.
 constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
 
@@ -416,17 +424,26 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
 
         if (s.scalar_wave) {
             // Most waves: one value along a fixed direction, gain included (prepare_slot).
-            const detail::WaveInput wave{&s.params, s.direction,
-                                         s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
-                                         clock.tau_us, s.waveform, axes};
-            const float value = detail::scalar_wave_value(wave);
+            // A scalar wave that oscillates is a periodic (sweeps are not scalar): on x86 the
+            // tick calls it without scalar_wave_value's dispatch on the type, which would
+            // take the same call (its default).
+            const bool periodic = oscillates(s.params.type);
+            float value = 0.0f;
+            if (kCallsPeriodicDirectly && periodic) {
+                value = detail::periodic_wave(s.params, s.waveform, clock.tau_us);
+            } else {
+                const detail::WaveInput wave{&s.params, s.direction,
+                                             s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
+                                             clock.tau_us, s.waveform, axes};
+                value = detail::scalar_wave_value(wave);
+            }
             if (two_lanes(axes)) {  // the common device, unrolled
                 sum[0] += value * s.direction_gain[0];
                 sum[1] += value * s.direction_gain[1];
             } else {
                 for (int a = 0; a < axes; ++a) sum[a] += value * s.direction_gain[a];
             }
-            if (oscillates(s.params.type)) {
+            if (periodic) {
                 if (two_lanes(axes)) {
                     vibration[0] += value * s.direction_gain[0];
                     vibration[1] += value * s.direction_gain[1];
