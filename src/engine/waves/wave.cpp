@@ -2,6 +2,7 @@
 #include "wave.hpp"
 
 #include "../direction.hpp"
+#include "../turn_trig.hpp"
 
 namespace feel::detail {
 namespace {
@@ -34,6 +35,20 @@ float scalar_wave_value(const WaveInput& in) noexcept {
 void render_wave(const WaveInput& in, float force[kMaxAxes]) noexcept {
     const SlotParams& p = *in.params;
     if (is_sweep(p.type)) {
+#if !defined(__OPTIMIZE_SIZE__)
+        if (in.axes == 2) {
+            // x86, the common device: polar_factors_turns's factors go straight into the
+            // force, the products and sums add_along makes, without the call and the array
+            // (on the board's build for size, that copy would be flash).
+            const float turns = sweep_turns(p, in.tau_us);
+            const float value = periodic_wave(p, in.waveform, in.tau_us);
+            const float from_x = -sin_turns(turns);
+            const float from_y = -cos_turns(turns);
+            force[axis_index(Axis::x)] += from_x * value;
+            force[axis_index(Axis::y)] += from_y * value;
+            return;
+        }
+#endif
         float swept[kMaxAxes];
         polar_factors_turns(sweep_turns(p, in.tau_us), swept);
         add_along(swept, in.axes, periodic_wave(p, in.waveform, in.tau_us), force);
