@@ -401,26 +401,33 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     Slot* const slots = m.slots.get();  // once: the loop's stores could alias the member
     for (int32_t i = 0; i < slot_end; ++i) {
         Slot& s = slots[i];
-        if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
-        s.elapsed_us = s.state == EffectState::pending ? 0 : s.elapsed_us + dt_us;
-        const detail::ClockReading clock = s.advance_clock();
-        if (clock.phase == ClockPhase::finished) {
-            s.state = EffectState::stopped;
-            s.last_end = PlayEnd::finished;
-            s.completed_iterations = s.play_iterations();
-            continue;
+        detail::ClockReading clock;
+        if (s.state == EffectState::playing && s.in_iteration_window(s.elapsed_us + dt_us, clock)) {
+            // Most slots, most ticks (x86): still in the iteration the last tick played, so
+            // still playing, its start position set (Slot::in_iteration_window).
+            s.elapsed_us += dt_us;
+        } else {
+            if (s.state == EffectState::free || s.state == EffectState::stopped) continue;
+            s.elapsed_us = s.state == EffectState::pending ? 0 : s.elapsed_us + dt_us;
+            clock = s.advance_clock();
+            if (clock.phase == ClockPhase::finished) {
+                s.state = EffectState::stopped;
+                s.last_end = PlayEnd::finished;
+                s.completed_iterations = s.play_iterations();
+                continue;
+            }
+            s.completed_iterations = clock.iteration;
+            if (clock.phase == ClockPhase::delayed) {
+                s.state = EffectState::delayed;
+                continue;
+            }
+            s.state = EffectState::playing;
+            if (!s.began_playing) {
+                for (int a = 0; a < kMaxAxes; ++a) s.start_position[a] = in.position[a];
+                s.began_playing = true;
+            }
         }
-        s.completed_iterations = clock.iteration;
-        if (clock.phase == ClockPhase::delayed) {
-            s.state = EffectState::delayed;
-            continue;
-        }
-        s.state = EffectState::playing;
         ++playing;
-        if (!s.began_playing) {
-            for (int a = 0; a < kMaxAxes; ++a) s.start_position[a] = in.position[a];
-            s.began_playing = true;
-        }
 
         if (s.scalar_wave) {
             // Most waves: one value along a fixed direction, gain included (prepare_slot).

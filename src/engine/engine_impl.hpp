@@ -103,11 +103,10 @@ struct Slot {
         return read_clock(params, play_iterations(), elapsed, completed_iterations);
     }
 
-    // The same reading at elapsed_us, by the tick, which keeps the window it finds.
+    // The reading at elapsed_us the long way, by the tick, which keeps the window it finds
+    // (after in_iteration_window has not found it there).
     [[nodiscard, gnu::always_inline]] ClockReading advance_clock() noexcept {
-        ClockReading r;
-        if (in_iteration_window(elapsed_us, r)) return r;
-        r = read_clock(params, play_iterations(), elapsed_us, completed_iterations);
+        const ClockReading r = read_clock(params, play_iterations(), elapsed_us, completed_iterations);
 #if FEEL_KEEPS_ITERATION_START
         if (r.phase == ClockPhase::playing) {
             iteration_start_us = elapsed_us - r.tau_us;
