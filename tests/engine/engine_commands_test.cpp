@@ -395,6 +395,31 @@ TEST_F(EngineCommands, ALongerDurationExtendsAPlayAndAShorterOneEndsIt) {
     EXPECT_EQ(engine_->status(b).last_end, PlayEnd::finished);
 }
 
+TEST_F(EngineCommands, FewerIterationsEndAPlayAtOnceAndMoreExtendIt) {
+    // Three iterations of 100 ms; 150 ms in, the second plays. Lowering the count to 1 ends
+    // the play at the next tick (the first iteration is already done); raising a count of 2
+    // to 3 plays the third too (to 300 ms).
+    EffectParams p = constant_on_x(1000, 100'000);
+    p.iterations = 3;
+    const EffectId a = play(p);
+    for (int n = 0; n < 150; ++n) tick();
+    p.iterations = 1;
+    ASSERT_TRUE(engine_->update(a, p, effect_field::kIterations, false).ok());
+    EXPECT_EQ(tick().force[0], 0.0f);
+    EXPECT_EQ(engine_->status(a).state, EffectState::stopped);
+    EXPECT_EQ(engine_->status(a).last_end, PlayEnd::finished);
+
+    reset(2);
+    p.iterations = 2;
+    const EffectId b = play(p);
+    for (int n = 0; n < 150; ++n) tick();
+    p.iterations = 3;
+    ASSERT_TRUE(engine_->update(b, p, effect_field::kIterations, false).ok());
+    expect_forces(150'000, 1000, [](int64_t, int axis) { return axis == 0 ? 1000.0 : 0.0; });  // to 300 ms
+    EXPECT_EQ(tick().force[0], 0.0f);
+    EXPECT_EQ(engine_->status(b).last_end, PlayEnd::finished);
+}
+
 TEST_F(EngineCommands, UpdateLeavesAStoppedEffectStoppedUnlessItRestarts) {
     const EffectId id = create(constant_on_x(1000, kInfiniteUs));
     EffectParams p = constant_on_x(3000, kInfiniteUs);
