@@ -101,6 +101,27 @@ float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     return law.handle_frame ? law.gravity - acceleration : law.gravity;
 }
 
+// Whether an axis keeps the mass where its prediction ends for the next tick's catch-up.
+// In the handle's frame both advance the same state (the catch-up starts where the
+// prediction started) against the same still handle, under the same −M·a (the acceleration
+// the prediction read is the one kept for the catch-up) and for the same step unless the
+// tick length changes: the same operations on the same inputs, so the same bits, and the
+// catch-up need not redo them. A law with regions to track advances by
+// advance_watched_tether both times; one that counts half cycles would also need its
+// count kept (none does in the handle's frame: Dynamic Inertia never ends). A fixed-frame
+// law's prediction follows the last sensed line and its catch-up the next, which differ
+// whenever the handle moves. A build for size (the Cortex-M4F image, whose flash is the
+// tighter budget) advances twice: the same bits.
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kKeepAhead = false;
+#else
+constexpr bool kKeepAhead = true;
+#endif
+bool keeps_ahead(const PreparedTether& law) noexcept {
+    return kKeepAhead && law.handle_frame && law.piecewise && law.half_cycles == 0;
+}
+bool kept(uint8_t kept_ahead, int axis) noexcept { return kKeepAhead && ((kept_ahead >> axis) & 1u) != 0; }
+
 // One axis of a plain law (PreparedTether::plain: one region, nothing counted, the fixed
 // frame) on a tick that catches up: the general loop below with every branch it does not
 // take removed, the same operations in the same order, so the same bits. The handle's line
@@ -175,6 +196,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
             c.state->plain = c.state->plain && st.laws[i].plain;
         }
         c.state->prepared = true;
+        c.state->kept_ahead = 0;  // predicted by the old laws
     }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
     // sensor's flicker around a mass at rest never counts.
@@ -186,6 +208,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         for (int i = 0; i < n; ++i) {
             if (st.laws[i].step_s != step) {
                 prepare_pieces(st.laws[i], step);
+                c.state->kept_ahead &= static_cast<uint8_t>(~(1u << i));  // predicted over another step
                 c.state->inverse_step = 1.0f / step;
             }
         }
@@ -218,6 +241,9 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         TetherAxisState& now = st.now[i];
         if (!c.state->initialized) {
             now = initial_state(law, frame_velocity, hysteresis);
+        } else if (catch_up && kept(c.state->kept_ahead, i)) {
+            now.stretch = st.ahead_stretch[i];
+            now.velocity = st.ahead_velocity[i];
         } else if (catch_up) {
             const HandleLine sensed = law.handle_frame ? HandleLine{}
                                                        : HandleLine{(handle - st.handle_position[i]) * inverse_step,
@@ -237,19 +263,38 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         const TetherAxisState& now = st.now[i];
         float pull = 0;
-        if (step > 0) {
+        bool keep = false;
+        if (step > 0 && keeps_ahead(law) && std::isfinite(handle_acceleration)) {
+            // The next tick's catch-up will advance this state against the handle standing
+            // still under the same −M·a (the acceleration kept below) for as long, unless the
+            // tick length or the laws change: keep where the prediction ends.
+            TetherAxisState ahead = now;
+            pull = -advance_watched_tether(law, gravity_in_frame(law, handle_acceleration), ahead, HandleLine{},
+                                           hysteresis) *
+                   inverse_step;
+            st.ahead_stretch[i] = ahead.stretch;
+            st.ahead_velocity[i] = ahead.velocity;
+            keep = true;
+        } else if (step > 0) {
             // The handle is expected to go on along the line through its last two sensed
             // positions; before there are two, at its estimated velocity.
-            const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
-            const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
+            const HandleLine expected =
+                law.handle_frame
+                    ? HandleLine{}
+                    : HandleLine{fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step,
+                                 handle_velocity};
             pull = -predicted_impulse(law, gravity_in_frame(law, handle_acceleration), now, expected, hysteresis) *
                    inverse_step;
         } else {
             pull = tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity);
         }
         force[a] += std::isfinite(pull) ? pull : 0.0f;
-        st.handle_position[i] = handle;
-        st.handle_velocity[i] = handle_velocity;
+        const auto bit = static_cast<uint8_t>(1u << i);
+        c.state->kept_ahead = keep ? (c.state->kept_ahead | bit) : (c.state->kept_ahead & static_cast<uint8_t>(~bit));
+        if (!keep) {
+            st.handle_position[i] = handle;
+            st.handle_velocity[i] = handle_velocity;
+        }
         st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
         result.mass_position[a] = now.stretch;
         result.mass_velocity[a] = now.velocity - frame_velocity;

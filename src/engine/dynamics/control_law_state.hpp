@@ -47,10 +47,19 @@ struct PreparedTether {
 struct ControlLawState {
     // The mass at the time of the current tick, per EFFECT axis (axes[i] of the params).
     TetherAxisState now[kMaxAxes] = {};
-    // The handle at the current tick: where the sensor saw it and the velocity the engine
-    // estimated. The next tick advances the mass from here (control_law_dynamic.cpp).
-    float handle_position[kMaxAxes] = {};      // position units
-    float handle_velocity[kMaxAxes] = {};      // position units/s
+    // A law in the fixed frame: the handle at the current tick, where the sensor saw it and
+    // the velocity the engine estimated. The next tick advances the mass from here
+    // (control_law_dynamic.cpp). A law in the handle's frame reads neither: its bytes keep
+    // the mass as this tick's prediction left it, which the next tick's catch-up takes
+    // instead of advancing the same state the same way again (DynamicState::kept_ahead).
+    union {
+        float handle_position[kMaxAxes] = {};  // position units
+        float ahead_stretch[kMaxAxes];         // position units
+    };
+    union {
+        float handle_velocity[kMaxAxes] = {};  // position units/s
+        float ahead_velocity[kMaxAxes];        // position units/s, relative to the handle
+    };
     float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
     // The laws of the effect's axes (false after every command that sets parameters:
     // DynamicState::prepared).
