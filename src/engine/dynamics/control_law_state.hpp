@@ -47,20 +47,20 @@ struct PreparedTether {
 struct ControlLawState {
     // The mass at the time of the current tick, per EFFECT axis (axes[i] of the params).
     TetherAxisState now[kMaxAxes] = {};
-    // A law in the fixed frame: the handle at the current tick, where the sensor saw it and
-    // the velocity the engine estimated. The next tick advances the mass from here
-    // (control_law_dynamic.cpp). A law in the handle's frame reads neither: its bytes keep
-    // the mass as this tick's prediction left it, which the next tick's catch-up takes
-    // instead of advancing the same state the same way again (DynamicState::kept_ahead).
-    union {
-        float handle_position[kMaxAxes] = {};  // position units
-        float ahead_stretch[kMaxAxes];         // position units
-    };
-    union {
-        float handle_velocity[kMaxAxes] = {};  // position units/s
-        float ahead_velocity[kMaxAxes];        // position units/s, relative to the handle
-    };
+    // The handle at the current tick: where the sensor saw it and the velocity the engine
+    // estimated. The next tick advances the mass from here (control_law_dynamic.cpp).
+    float handle_position[kMaxAxes] = {};      // position units
+    float handle_velocity[kMaxAxes] = {};      // position units/s
     float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
+#if !defined(__OPTIMIZE_SIZE__)
+    // The mass where this tick's prediction ended, and the handle's velocity along the line
+    // it followed: the next tick's catch-up takes it when its line is the same
+    // (DynamicState::kept_ahead, control_law_dynamic.cpp). Not in a build for size (the
+    // Cortex-M4F image, whose RAM is the tighter budget), which advances twice.
+    float ahead_stretch[kMaxAxes] = {};   // position units
+    float ahead_velocity[kMaxAxes] = {};  // position units/s
+    float ahead_line[kMaxAxes] = {};      // position units/s
+#endif
     // The laws of the effect's axes (false after every command that sets parameters:
     // DynamicState::prepared).
     PreparedTether laws[kMaxAxes] = {};
