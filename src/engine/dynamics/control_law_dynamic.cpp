@@ -60,7 +60,9 @@
 //
 // State lives in ControlLawState (in the effect's slot); nothing is allocated, no clock
 // is read, nothing throws.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "dynamics/dynamic.hpp"
@@ -99,6 +101,61 @@ void flush_subnormal(TetherAxisState& s) noexcept {
 // the frame adds the force −M·a on the mass, which the law's gravity term carries.
 float gravity_in_frame(const PreparedTether& law, float acceleration) noexcept {
     return law.handle_frame ? law.gravity - acceleration : law.gravity;
+}
+
+// The prediction of one tick and the catch-up of the next advance the same state (the
+// catch-up starts where the prediction started) for the same step (unless the tick length
+// or the laws change), under the same gravity (in the handle's frame, the same −M·a: the
+// acceleration the prediction read is the one kept for the catch-up) with the same damper
+// reading (the velocity estimate the prediction read, kept likewise). They differ only in
+// the handle's line when it moves: the prediction follows the last sensed line, the catch-up
+// the next. When that line is the same too (always in the handle's frame, where the handle
+// stands still at 0; in the fixed frame a handle at rest, or crossing counts at a steady
+// rate), the catch-up is the same operations on the same inputs as the prediction, so it
+// takes the state the prediction ended in, bit for bit, instead of redoing it. Only for a
+// law with regions to track, whose prediction advances a copy of the state
+// (predicted_impulse) by advance_watched_tether, as its catch-up does, and which counts no
+// half cycles (whose count the state would then have to keep too). A build for size (the
+// Cortex-M4F image, whose flash and RAM are the tighter budgets) advances twice: the same
+// bits.
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kKeepAhead = false;
+#else
+constexpr bool kKeepAhead = true;
+#endif
+bool keeps_ahead(const PreparedTether& law, float handle_acceleration) noexcept {
+    return kKeepAhead && law.piecewise && law.half_cycles == 0 && std::isfinite(handle_acceleration);
+}
+
+// The prediction's impulse (predicted_impulse's, for a law that keeps_ahead), keeping where
+// it ends and the line it followed for the next catch-up.
+float predict_and_keep(DynamicState& d, int axis, const PreparedTether& law, float gravity, HandleLine line,
+                       float hysteresis) noexcept {
+    TetherAxisState ahead = d.law.now[axis];
+    const float impulse = advance_watched_tether(law, gravity, ahead, line, hysteresis);
+#if !defined(__OPTIMIZE_SIZE__)
+    d.law.ahead_stretch[axis] = ahead.stretch;
+    d.law.ahead_velocity[axis] = ahead.velocity;
+    d.law.ahead_line[axis] = line.velocity;
+#endif
+    return impulse;
+}
+
+// Catches `now` up by the state the last prediction kept when it followed this line;
+// returns whether it did.
+bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, TetherAxisState& now) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
+    (void)d, (void)axis, (void)line_velocity, (void)now;
+    return false;
+#else
+    if (((d.kept_ahead >> axis) & 1u) == 0 ||
+        std::bit_cast<uint32_t>(line_velocity) != std::bit_cast<uint32_t>(d.law.ahead_line[axis])) {
+        return false;
+    }
+    now.stretch = d.law.ahead_stretch[axis];
+    now.velocity = d.law.ahead_velocity[axis];
+    return true;
+#endif
 }
 
 // One axis of a plain law (PreparedTether::plain: one region, nothing counted, the fixed
@@ -175,6 +232,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
             c.state->plain = c.state->plain && st.laws[i].plain;
         }
         c.state->prepared = true;
+        if (kKeepAhead) c.state->kept_ahead = 0;  // predicted by the old laws
     }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
     // sensor's flicker around a mass at rest never counts.
@@ -186,6 +244,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         for (int i = 0; i < n; ++i) {
             if (st.laws[i].step_s != step) {
                 prepare_pieces(st.laws[i], step);
+                if (kKeepAhead) c.state->kept_ahead &= static_cast<uint8_t>(~(1u << i));  // predicted over another step
                 c.state->inverse_step = 1.0f / step;
             }
         }
@@ -222,7 +281,10 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
             const HandleLine sensed = law.handle_frame ? HandleLine{}
                                                        : HandleLine{(handle - st.handle_position[i]) * inverse_step,
                                                                     st.handle_velocity[i]};
-            advance_prepared_tether(law, gravity_in_frame(law, st.handle_acceleration[i]), now, sensed, hysteresis);
+            if (!take_kept_ahead(*c.state, i, sensed.velocity, now)) {
+                advance_prepared_tether(law, gravity_in_frame(law, st.handle_acceleration[i]), now, sensed,
+                                        hysteresis);
+            }
         }
         flush_subnormal(now);
         if (!finite(now)) now = initial_state(law, frame_velocity, hysteresis);  // never expected
@@ -237,17 +299,25 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         const TetherAxisState& now = st.now[i];
         float pull = 0;
+        bool keep = false;
         if (step > 0) {
             // The handle is expected to go on along the line through its last two sensed
             // positions; before there are two, at its estimated velocity.
             const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
-            pull = -predicted_impulse(law, gravity_in_frame(law, handle_acceleration), now, expected, hysteresis) *
+            const float gravity = gravity_in_frame(law, handle_acceleration);
+            keep = keeps_ahead(law, handle_acceleration);
+            pull = -(keep ? predict_and_keep(*c.state, i, law, gravity, expected, hysteresis)
+                          : predicted_impulse(law, gravity, now, expected, hysteresis)) *
                    inverse_step;
         } else {
             pull = tether_reaction(exact_law(law, law.gravity), now.stretch, now.velocity - frame_velocity);
         }
         force[a] += std::isfinite(pull) ? pull : 0.0f;
+        if (kKeepAhead) {
+            const auto bit = static_cast<uint8_t>(1u << i);
+            c.state->kept_ahead = keep ? (c.state->kept_ahead | bit) : (c.state->kept_ahead & static_cast<uint8_t>(~bit));
+        }
         st.handle_position[i] = handle;
         st.handle_velocity[i] = handle_velocity;
         st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;

@@ -52,6 +52,15 @@ struct ControlLawState {
     float handle_position[kMaxAxes] = {};      // position units
     float handle_velocity[kMaxAxes] = {};      // position units/s
     float handle_acceleration[kMaxAxes] = {};  // position units/s², as the estimator gave it
+#if !defined(__OPTIMIZE_SIZE__)
+    // The mass where this tick's prediction ended, and the handle's velocity along the line
+    // it followed: the next tick's catch-up takes it when its line is the same
+    // (DynamicState::kept_ahead, control_law_dynamic.cpp). Not in a build for size (the
+    // Cortex-M4F image, whose RAM is the tighter budget), which advances twice.
+    float ahead_stretch[kMaxAxes] = {};   // position units
+    float ahead_velocity[kMaxAxes] = {};  // position units/s
+    float ahead_line[kMaxAxes] = {};      // position units/s
+#endif
     // The laws of the effect's axes (false after every command that sets parameters:
     // DynamicState::prepared).
     PreparedTether laws[kMaxAxes] = {};

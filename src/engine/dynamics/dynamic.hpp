@@ -32,6 +32,10 @@ struct DynamicState {
     // Every axis's law is plain (PreparedTether::plain), set with prepared: the tick takes
     // the short way (control_law_dynamic.cpp).
     bool plain = false;
+    // Bit i: axis i's mass as the last prediction left it is kept (ControlLawState's
+    // ahead_stretch, ahead_velocity) and the catch-up's inputs are the prediction's, so the
+    // catch-up takes it (control_law_dynamic.cpp). In the padding before inverse_step.
+    uint8_t kept_ahead = 0;
     // 1/step of the tick length the laws are prepared for (PreparedTether::step_s), set with
     // them: a double division a tick less, in the padding before the union.
     float inverse_step = 0;

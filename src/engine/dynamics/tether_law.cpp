@@ -107,7 +107,10 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s
         rate = end.velocity;
         remaining = crossed ? remaining - t : 0.0f;
         if (crossed) ++switches;
-        count_half_cycle(law, state, s, hysteresis);
+        // Only a law that ends after some half cycles counts them (advance_watched_tether's
+        // pieces too): the others' count is never read, and keeping it untouched lets a kept
+        // prediction stand for the whole state (control_law_dynamic.cpp).
+        if (law.half_cycles > 0) count_half_cycle(law, state, s, hysteresis);
     }
     return taut;
 }

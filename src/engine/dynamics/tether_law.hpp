@@ -105,7 +105,8 @@ template <typename T>
 
 // Advances the stretch (s, ṡ) of one axis exactly by one piece of h seconds (ω·h ≤ 1,
 // h >= 0) against the handle path (its position unused: s is relative to the handle),
-// switching regions at the edges it finds (tether_crossing) and counting half cycles:
+// switching regions at the edges it finds (tether_crossing) and, for a law that ends
+// after some (law.half_cycles > 0; else state is left as it is), counting half cycles:
 // each time the stretch goes from beyond +hysteresis of the rest stretch to beyond
 // −hysteresis, or back, checked at every edge crossing and at the piece's end. Float, as
 // the tick; tether_tick.cpp calls it for the pieces in which an edge may lie. `end` is the
