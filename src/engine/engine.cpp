@@ -497,8 +497,14 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                                          s.params.type == EffectType::force_profile ? m.samples.data(i) : nullptr,
                                          clock.tau_us, s.waveform, axes};
             detail::render_wave(wave, force);
-            if (oscillates(s.params.type))
-                for (int a = 0; a < axes; ++a) vibration[a] += force[a] * s.gain_factor;
+            if (oscillates(s.params.type)) {
+                if (two_lanes(axes)) {  // the common device, unrolled
+                    vibration[0] += force[0] * s.gain_factor;
+                    vibration[1] += force[1] * s.gain_factor;
+                } else {
+                    for (int a = 0; a < axes; ++a) vibration[a] += force[a] * s.gain_factor;
+                }
+            }
         }
         if (two_lanes(axes)) {  // the common device, unrolled
             const float f0 = force[0];

@@ -59,4 +59,26 @@ namespace feel::detail {
     return envelope_level(env, value, tau_us, duration_us);
 }
 
+// envelope_level's windows: the attack while τ < settle_time, the fade while τ > the duration
+// − fade_time; between them (or with no envelope) it returns the level unchanged, and
+// shape_by_envelope the value (−(−v) is v to the bit). The header's fields must be set.
+[[nodiscard]] inline SteadyWindow steady_window(const SlotParams& s) noexcept {
+    const SlotEnvelope& env = s.envelope;
+    SteadyWindow w;
+    w.from_us = s.has_envelope && env.settle_time_us > 0 ? env.settle_time_us : 0;
+    w.until_us = s.has_envelope && s.duration_us != kInfiniteUs && env.fade_time_us > 0
+                     ? s.duration_us - env.fade_time_us
+                     : INT32_MAX;
+    return w;
+}
+
+// A wave's value shaped by its envelope, if it has one: the value itself inside its steady
+// window (worked out with the command), so the envelope is evaluated in the attack and
+// fade only.
+[[nodiscard]] inline float shape_outside_steady(const SlotParams& p, const SteadyWindow& steady, float value,
+                                                int64_t tau_us) noexcept {
+    if (steady.holds(tau_us) || !p.has_envelope) return value;
+    return shape_by_envelope(p.envelope, value, tau_us, p.duration_us);
+}
+
 }  // namespace feel::detail

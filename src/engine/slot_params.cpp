@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "conditions/condition.hpp"
+#include "envelope.hpp"
 
 namespace feel::detail {
 namespace {
@@ -216,6 +217,8 @@ SlotParams slot_params(const EffectParams& p, const SlotDynamicBlock* dynamic_bl
         s.envelope.impulse_level = static_cast<int16_t>(p.envelope.impulse_level);
         s.envelope.fade_level = static_cast<int16_t>(p.envelope.fade_level);
     }
+    // The waves' envelope window, from the header's fields above (kept in each wave's block).
+    const SteadyWindow steady = steady_window(s);
     // Assigning a member of the union makes it the live one (the blocks are trivially copyable).
     switch (block_of(p.type)) {
         case Block::curved:
@@ -232,11 +235,17 @@ SlotParams slot_params(const EffectParams& p, const SlotDynamicBlock* dynamic_bl
             break;
         case Block::periodic:
             s.periodic = periodic_block<SlotPeriodicBlock>(p.periodic);
+            s.periodic.steady = steady;
             prepare_periodic_block(s);  // the header's fields above are set
             break;
-        case Block::constant: s.constant = p.constant; break;
-        case Block::ramp: s.ramp = p.ramp; break;
-        case Block::custom: s.custom = custom_block<SlotCustomBlock>(p.custom); break;
+        case Block::constant:
+            s.constant = {p.constant.magnitude, steady};
+            break;
+        case Block::ramp: s.ramp = {p.ramp.start, p.ramp.end, steady}; break;
+        case Block::custom:
+            s.custom = custom_block<SlotCustomBlock>(p.custom);
+            s.custom.steady = steady;
+            break;
         case Block::texture: s.texture = p.texture; break;
         case Block::wall: s.wall = p.wall; break;
         case Block::barrier: s.barrier = p.barrier; break;
@@ -275,8 +284,8 @@ EffectParams effect_params(const SlotParams& s) noexcept {
             }
             break;
         case Block::periodic: p.periodic = periodic_block<PeriodicBlock>(s.periodic); break;
-        case Block::constant: p.constant = s.constant; break;
-        case Block::ramp: p.ramp = s.ramp; break;
+        case Block::constant: p.constant.magnitude = s.constant.magnitude; break;
+        case Block::ramp: p.ramp = {s.ramp.start, s.ramp.end}; break;
         case Block::custom: p.custom = custom_block<CustomBlock>(s.custom); break;
         case Block::texture: p.texture = s.texture; break;
         case Block::wall: p.wall = s.wall; break;

@@ -56,6 +56,18 @@ struct SlotConditionBlock {
     OffsetMode offset_mode = OffsetMode::absolute;
 };
 
+// The wave times τ in [from_us, until_us] lie outside an enveloped wave's attack and fade
+// (or the wave has no envelope): its amplitude there is its value itself, and the envelope
+// is not evaluated. Worked out with the command (envelope.hpp's steady_window) and kept in
+// the block of each wave that takes an envelope, in the union's room. Outside it the
+// envelope is evaluated (a τ past 2^31 µs of an endless wave included: the window is
+// 32-bit, the evaluation right either way).
+struct SteadyWindow {
+    int32_t from_us = 0;
+    int32_t until_us = INT32_MAX;
+    [[nodiscard]] constexpr bool holds(int64_t tau_us) const noexcept { return tau_us >= from_us && tau_us <= until_us; }
+};
+
 // A periodic's or sweep's block (§6.6.b, §6.6.i) in a slot: the period (at most 65e6 µs) in
 // 32 bits, so that no member of the union needs 8-byte alignment; the rest as the host's.
 struct SlotPeriodicBlock {
@@ -75,12 +87,7 @@ struct SlotPeriodicBlock {
     float phase_turns = 0.0f;          // phase / 36000: where in the cycle τ = 0 lies
     float sweep_start_turns = 0.0f;    // sweep_start_angle / 36000
     float sweep_span_turns = 0.0f;     // the sweep's travel over the duration, in turns: ≥ 0 clockwise, ≤ 0 counter-clockwise
-    // Wave times τ in [steady_from_us, steady_until_us] lie outside the envelope's attack and
-    // fade (or the effect has no envelope): the amplitude there is the magnitude itself, and
-    // the envelope is not evaluated. Outside it, it is (a τ past 2^31 µs of an endless wave
-    // included: the window is 32-bit, the evaluation right either way).
-    int32_t steady_from_us = 0;
-    int32_t steady_until_us = INT32_MAX;
+    SteadyWindow steady{};  // the envelope's steady window (steady_window)
 };
 
 // The prepared fields cost no RAM: on every device of 2 axes or more the union already
@@ -88,8 +95,8 @@ struct SlotPeriodicBlock {
 static_assert(kMaxAxes < 2 || sizeof(SlotPeriodicBlock) <= sizeof(CurvedConditions));
 
 struct SlotParams;
-// Fills the prepared fields of a periodic's or sweep's block from the others and from the
-// effect's duration and envelope (waves/periodic_wave.cpp): slot_params calls it.
+// Fills the prepared turns of a periodic's or sweep's block from its other fields
+// (waves/periodic_wave.cpp): slot_params calls it, and sets the steady window itself.
 void prepare_periodic_block(SlotParams& s) noexcept;
 
 // A force profile's block (§6.6.d) in a slot: the sample period (at most 65e6 µs) in 32 bits.
@@ -97,6 +104,19 @@ struct SlotCustomBlock {
     int32_t channels = 1;
     int32_t sample_period_us = 1;
     int32_t sample_count = 0;
+    SteadyWindow steady{};
+};
+
+// A constant's, vector force's or smart pop's block (§6.6.c) and a ramp's (§6.6.e) in a
+// slot: the host's fields, and the envelope's steady window.
+struct SlotConstantBlock {
+    int32_t magnitude = 0;
+    SteadyWindow steady{};
+};
+struct SlotRampBlock {
+    int32_t start = 0;
+    int32_t end = 0;
+    SteadyWindow steady{};
 };
 
 // One axis of a Dynamic Control Law (§8.4) in a dynamic's record: every field within
@@ -203,8 +223,8 @@ struct SlotParams {
         CurvedConditions curved;                  // spring, damper, inertia, angle_spring
         SlotConditionBlock conditions[kMaxAxes];  // friction
         SlotPeriodicBlock periodic;               // periodics and sweeps
-        ConstantBlock constant;                   // constant, vector_force, smart_pop
-        RampBlock ramp;
+        SlotConstantBlock constant;               // constant, vector_force, smart_pop
+        SlotRampBlock ramp;
         SlotCustomBlock custom;                   // force_profile
         TextureBlock texture;
         WallBlock wall;                           // axis_wall, angle_wall

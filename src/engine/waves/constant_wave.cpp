@@ -7,7 +7,7 @@ namespace feel::detail {
 
 float constant_wave(const SlotParams& p, int64_t tau_us) noexcept {
     const float m = static_cast<float>(p.constant.magnitude);
-    return p.has_envelope ? shape_by_envelope(p.envelope, m, tau_us, p.duration_us) : m;
+    return shape_outside_steady(p, p.constant.steady, m, tau_us);
 }
 
 // The primer lists Smart Pop (§6.4.b) with a Constant Struct and no envelope but does not

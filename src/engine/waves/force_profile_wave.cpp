@@ -22,7 +22,7 @@ const int16_t* frame_at(const SlotCustomBlock& c, const int16_t* samples, int64_
 }
 
 float shaped(const SlotParams& p, float v, int64_t tau_us) noexcept {
-    return p.has_envelope ? shape_by_envelope(p.envelope, v, tau_us, p.duration_us) : v;
+    return shape_outside_steady(p, p.custom.steady, v, tau_us);
 }
 
 }  // namespace

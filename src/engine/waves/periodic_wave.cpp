@@ -1,8 +1,8 @@
 // Periodic waves (§6.6.b) and the Angle Sweep (§4.2.c, §6.6.i).
 //
-// What depends only on the command (the phase, the sweep's start and its travel in turns,
-// the envelope's steady window) is worked out once per command (prepare_periodic_block),
-// not every tick, with the operations the tick used to do: the same floats, so the same
+// What depends only on the command (the phase, the sweep's start and its travel in turns)
+// is worked out once per command (prepare_periodic_block; the envelope's steady window by
+// slot_params, as for every enveloped wave), not every tick, with the operations the tick used to do: the same floats, so the same
 // forces.
 #include "../envelope.hpp"
 #include "../waveform.hpp"
@@ -16,13 +16,6 @@ constexpr float kTurnsPerCentideg = 1.0f / 36000.0f;
 
 void prepare_periodic_block(SlotParams& s) noexcept {
     SlotPeriodicBlock& b = s.periodic;
-    // envelope_level's windows: the attack while τ < settle_time, the fade while τ > the
-    // duration − fade_time; between them (or with no envelope) it returns the level unchanged.
-    const SlotEnvelope& env = s.envelope;
-    b.steady_from_us = s.has_envelope && env.settle_time_us > 0 ? env.settle_time_us : 0;
-    b.steady_until_us = s.has_envelope && s.duration_us != kInfiniteUs && env.fade_time_us > 0
-                            ? s.duration_us - env.fade_time_us
-                            : INT32_MAX;
     b.phase_turns = static_cast<float>(b.phase) * kTurnsPerCentideg;
     b.sweep_start_turns = static_cast<float>(b.sweep_start_angle) * kTurnsPerCentideg;
     // The short or the long way round as the sense says: clockwise increases the compass
@@ -45,9 +38,7 @@ float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noex
     const float magnitude = static_cast<float>(b.magnitude);
     // Outside the attack and the fade the envelope gives the magnitude back (its sign kept):
     // the window was worked out with the command.
-    const bool steady = tau_us >= b.steady_from_us && tau_us <= b.steady_until_us;
-    const float amplitude = steady || !p.has_envelope ? magnitude
-                                                      : shape_by_envelope(p.envelope, magnitude, tau_us, p.duration_us);
+    const float amplitude = shape_outside_steady(p, b.steady, magnitude, tau_us);
     return static_cast<float>(b.offset) + amplitude * source;
 }
 
