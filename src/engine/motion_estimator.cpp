@@ -176,6 +176,14 @@ void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[2] = int64_t{sum_of_m_squared(n)} * value;
 }
 
+// The prefix sums through a frozen sample from those through the one before it: its value
+// X with weights 1, j, j² (FEEL_ESTIMATOR_PREFIX_SUMS), modulo 2^64.
+[[maybe_unused]] inline void add_prefix(const uint64_t before[3], uint64_t j, uint64_t value, uint64_t out[3]) noexcept {
+    out[0] = before[0] + value;
+    out[1] = before[1] + j * value;
+    out[2] = before[2] + j * j * value;
+}
+
 // Where the running-sum fits start their downward search: kRungsUp above the rung accepted
 // last time, the whole history (top) at most. The full search (longest window first) is
 // what the general path does every tick; a window that passed last tick grows by a rung or
@@ -300,8 +308,10 @@ void MotionEstimator::reset() noexcept {
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
-        sums_[a] = RungSums{};
+#if !FEEL_ESTIMATOR_PREFIX_SUMS
+        sums_[a] = RungSums{};  // the prefix sums are written afresh by rebuild_sums (sums_axes_ 0)
         sums_still_[a] = false;
+#endif
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
         velocity_rung_[a] = acceleration_rung_[a] = kRungs;
@@ -383,6 +393,9 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         newest_fixed_value_[a] = fixed_value(x);
     }
 
+#if FEEL_ESTIMATOR_PREFIX_SUMS
+    if (pushed && count_ >= 2) ++frozen_count_;
+#endif
     for (int a = 0; a < axes; ++a) {
         if (a >= sums_axes_) {
             rebuild_sums(a);
@@ -410,6 +423,13 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
 void MotionEstimator::slide_sums(int axis) noexcept {
     const bool representable = frozen_fixed_[axis];
     fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
+#if FEEL_ESTIMATOR_PREFIX_SUMS
+    // The prefix sums: the newest frozen sample (index 1, j = frozen_count_) adds its terms to
+    // the sums up to the one before it (index 2, or the zeros past the oldest). Nothing
+    // leaves, and at rest there is nothing to skip: three additions whatever the motion.
+    const uint64_t value = static_cast<uint64_t>(int64_t{frozen_fixed_value_[axis]});
+    add_prefix(prefix_[axis][(head_ + 2) & kMask], frozen_count_, value, prefix_[axis][(head_ + 1) & kMask]);
+#else
     // At rest (the newest frozen sample and the longest ladder window all one value) the
     // sums are implied; leaving rest, they are first written out for the state before
     // this push (every window full of the value now at index 2).
@@ -434,31 +454,31 @@ void MotionEstimator::slide_sums(int axis) noexcept {
     // Where every leaving sample is known to have a value (the common case), it is read
     // without the range check.
     const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
-#if !defined(__OPTIMIZE_SIZE__)
-    // The tick's common case, a full ring: a sample leaves every window. Unrolled, each
-    // window's length and leaving index are constants (about a third fewer instructions; the
-    // board keeps the one loop below, for its flash).
-    if (held && count_ > kLadder[kLadderSize - 1] + 1) {
-#pragma GCC unroll 8
-        for (int k = kFirstSummed; k < kLadderSize; ++k) slide(k, held_fixed_at(axis, kLadder[k] + 1));
-        return;
-    }
-#endif
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         // Before the ring holds n + 1 frozen samples nothing leaves.
         const int leaving = kLadder[k] + 1;
         slide(k, leaving > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving));
     }
+#endif
 }
 
 // The running sums of an axis from the ring, for an axis that was not kept up to date.
 void MotionEstimator::rebuild_sums(int axis) noexcept {
     const float* x = x_[axis];
     fixed_run_[axis] = 0;
-    sums_still_[axis] = false;
     while (fixed_run_[axis] + 1 < count_ && representable(x[(head_ + fixed_run_[axis] + 1) & kMask])) {
         ++fixed_run_[axis];
     }
+#if FEEL_ESTIMATOR_PREFIX_SUMS
+    // From the zeros past the oldest frozen sample to the newest (index 1, j = frozen_count_).
+    uint64_t* past_oldest = prefix_[axis][(head_ + count_) & kMask];
+    past_oldest[0] = past_oldest[1] = past_oldest[2] = 0;
+    for (int i = count_ - 1; i >= 1; --i) {
+        add_prefix(prefix_[axis][(head_ + i + 1) & kMask], frozen_count_ - static_cast<uint64_t>(i - 1),
+                   static_cast<uint64_t>(fixed_at(axis, i)), prefix_[axis][(head_ + i) & kMask]);
+    }
+#else
+    sums_still_[axis] = false;
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         int64_t* s = sums_[axis].at(k);
         s[0] = s[1] = s[2] = 0;
@@ -470,6 +490,7 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
             s[2] += m * m * value;
         }
     }
+#endif
 }
 
 bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
@@ -494,8 +515,21 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
                                                                float out[3]) const noexcept {
 #endif
     const int n = pattern_.rung_n[r];
-    const int k = pattern_.rung_ladder[r];
     int64_t s[3] = {0, 0, 0};
+#if FEEL_ESTIMATOR_PREFIX_SUMS
+    // Frozen samples 1..n: the prefix sums at index 1 less those at n + 1, their j (m = c - j
+    // for the newest frozen sample's c) turned into m: Σ m·X = c·Σ X - Σ j·X,
+    // Σ m²·X = c²·Σ X - 2c·Σ j·X + Σ j²·X, modulo 2^64 and so exact.
+    const uint64_t* through_newest = prefix_[axis][(head_ + 1) & kMask];
+    const uint64_t* before_window = prefix_[axis][(head_ + n + 1) & kMask];
+    const uint64_t c = frozen_count_;
+    const uint64_t sx = through_newest[0] - before_window[0];
+    const uint64_t sjx = through_newest[1] - before_window[1];
+    s[0] = static_cast<int64_t>(sx);
+    s[1] = static_cast<int64_t>(c * sx - sjx);
+    if (parabola) s[2] = static_cast<int64_t>(c * (c * sx - 2 * sjx) + (through_newest[2] - before_window[2]));
+#else
+    const int k = pattern_.rung_ladder[r];
     int from = 1;
     if (k >= 0) {
         // At rest every ladder window holds the newest frozen sample's value (sums_still_).
@@ -516,6 +550,7 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
         s[1] += m * value;
         if (parabola) s[2] += m * m * value;
     }
+#endif
     // The newest sample's share, X_0·Σ m^p over m = 0..n-1.
     int64_t newest[3];
     constant_sums(n, newest_fixed_value_[axis], newest);

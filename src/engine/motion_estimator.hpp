@@ -29,6 +29,19 @@
 
 #include "feel/axis.hpp"
 
+// Where the build optimises for speed the running sums are prefix sums over every frozen
+// sample (O(1) a tick, 3 KB an axis); a build for size (the Cortex-M4F image, whose RAM has
+// no 3 KB to spare) keeps the sums of each ladder window and slides them. Both are exact
+// integers, so both give the same sums and the same bits. It sets the class's layout: every
+// translation unit of a program must agree (the board's image is -Os throughout).
+#if !defined(FEEL_ESTIMATOR_PREFIX_SUMS)
+#if defined(__OPTIMIZE_SIZE__)
+#define FEEL_ESTIMATOR_PREFIX_SUMS 0
+#else
+#define FEEL_ESTIMATOR_PREFIX_SUMS 1
+#endif
+#endif
+
 namespace feel::detail {
 
 class MotionEstimator {
@@ -137,6 +150,7 @@ private:
     // same instant may replace) over the ladder's window lengths, in 1/fixed_scale_ units:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
     // Only the windows of kFirstSummed up are kept (issue 14's RAM: 120 bytes an axis).
+    // The board's (FEEL_ESTIMATOR_PREFIX_SUMS 0).
     struct RungSums {
         int64_t s[kLadderSize - kFirstSummed][3];
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
@@ -233,10 +247,21 @@ private:
     float frozen_interval_u_;
     // Axes whose running sums are kept up to date (the first sums_axes_).
     int sums_axes_;
+#if FEEL_ESTIMATOR_PREFIX_SUMS
+    // prefix_[axis][slot] = Σ X_j, Σ j·X_j, Σ j²·X_j over the axis's frozen samples up to and
+    // including the one in that slot, j counting frozen samples (frozen_count_: the newest's),
+    // modulo 2^64: a window's sums are the difference of two (window_sums), exact wherever
+    // the true sum fits an int64. The slot past the oldest frozen sample holds the sums
+    // before it (the newest sample's slot, once the ring is full: its own are written when
+    // it is frozen).
+    uint64_t prefix_[kMaxAxes][kHistory][3];
+    uint64_t frozen_count_;
+#else
     RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
     // frozen sample's, and its sums follow from it (window_sums). True while that holds.
     bool sums_still_[kMaxAxes];
+#endif
     float velocity_[kMaxAxes];
     float acceleration_[kMaxAxes];
     int velocity_window_[kMaxAxes];
