@@ -150,9 +150,17 @@ void add_moments(const float* y, const float* u, int begin, int end, float sum[3
     sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
 }
 
-float det3(float a, float b, float c, float d, float e, float f, float g, float h, float k) noexcept {
-    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+// A 3x3 determinant expanded along its first row (a, b, c) with the minors of each
+// (minor_a = e·k - f·h, minor_b = d·k - f·g, minor_c = d·h - e·g for rows (d, e, f) and
+// (g, h, k)): apart so that a minor of the normal matrix alone can be the time pattern's.
+float expand_row(float a, float b, float c, float minor_a, float minor_b, float minor_c) noexcept {
+    return a * minor_a - b * minor_b + c * minor_c;
 }
+float det3(float a, float b, float c, float d, float e, float f, float g, float h, float k) noexcept {
+    return expand_row(a, b, c, e * k - f * h, d * k - f * g, d * h - e * g);
+}
+// A line's normal matrix's determinant: m0 = Σ u⁰ (the sample count), m1 = Σ u, m2 = Σ u².
+float line_det(float m0, float m1, float m2) noexcept { return m0 * m2 - m1 * m1; }
 
 // Σ m^p·X over m = 0..n-1 for a constant X (p = 0, 1, 2): a window at rest, or the newest
 // sample's share of a window's sums. Exact in 64-bit integers.
@@ -177,7 +185,7 @@ void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
 }
 
 // The prefix sums through a frozen sample from those through the one before it: its value
-// X with weights 1, j, j² (FEEL_ESTIMATOR_PREFIX_SUMS), modulo 2^64.
+// X with weights 1, j, j² (FEEL_ESTIMATOR_SPEED_TABLES), modulo 2^64.
 [[maybe_unused]] inline void add_prefix(const uint64_t before[3], uint64_t j, uint64_t value, uint64_t out[3]) noexcept {
     out[0] = before[0] + value;
     out[1] = before[1] + j * value;
@@ -308,7 +316,7 @@ void MotionEstimator::reset() noexcept {
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
-#if !FEEL_ESTIMATOR_PREFIX_SUMS
+#if !FEEL_ESTIMATOR_SPEED_TABLES
         sums_[a] = RungSums{};  // the prefix sums are written afresh by rebuild_sums (sums_axes_ 0)
         sums_still_[a] = false;
 #endif
@@ -393,7 +401,7 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         newest_fixed_value_[a] = fixed_value(x);
     }
 
-#if FEEL_ESTIMATOR_PREFIX_SUMS
+#if FEEL_ESTIMATOR_SPEED_TABLES
     if (pushed && count_ >= 2) ++frozen_count_;
 #endif
     for (int a = 0; a < axes; ++a) {
@@ -423,7 +431,7 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
 void MotionEstimator::slide_sums(int axis) noexcept {
     const bool representable = frozen_fixed_[axis];
     fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
-#if FEEL_ESTIMATOR_PREFIX_SUMS
+#if FEEL_ESTIMATOR_SPEED_TABLES
     // The prefix sums: the newest frozen sample (index 1, j = frozen_count_) adds its terms to
     // the sums up to the one before it (index 2, or the zeros past the oldest). Nothing
     // leaves, and at rest there is nothing to skip: three additions whatever the motion.
@@ -469,7 +477,7 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
     while (fixed_run_[axis] + 1 < count_ && representable(x[(head_ + fixed_run_[axis] + 1) & kMask])) {
         ++fixed_run_[axis];
     }
-#if FEEL_ESTIMATOR_PREFIX_SUMS
+#if FEEL_ESTIMATOR_SPEED_TABLES
     // From the zeros past the oldest frozen sample to the newest (index 1, j = frozen_count_).
     uint64_t* past_oldest = prefix_[axis][(head_ + count_) & kMask];
     past_oldest[0] = past_oldest[1] = past_oldest[2] = 0;
@@ -516,7 +524,7 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
 #endif
     const int n = pattern_.rung_n[r];
     int64_t s[3] = {0, 0, 0};
-#if FEEL_ESTIMATOR_PREFIX_SUMS
+#if FEEL_ESTIMATOR_SPEED_TABLES
     // Frozen samples 1..n: the prefix sums at index 1 less those at n + 1, their j (m = c - j
     // for the newest frozen sample's c) turned into m: Σ m·X = c·Σ X - Σ j·X,
     // Σ m²·X = c²·Σ X - 2c·Σ j·X + Σ j²·X, modulo 2^64 and so exact.
@@ -611,6 +619,14 @@ void MotionEstimator::refresh_time_pattern() noexcept {
             sum[3] += u2 * u2;
         }
         for (int k = 0; k < 4; ++k) p.moment[k][r] = sum[k];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+        const float m0 = static_cast<float>(p.rung_n[r] + 1), m1 = sum[0], m2 = sum[1], m3 = sum[2], m4 = sum[3];
+        p.line_det[r] = line_det(m0, m1, m2);
+        p.parabola_det[r] = det3(m0, m1, m2, m1, m2, m3, m2, m3, m4);
+        p.normal_minor[0][r] = m1 * m3 - m2 * m2;
+        p.normal_minor[1][r] = m2 * m4 - m3 * m3;
+        p.normal_minor[2][r] = m1 * m4 - m3 * m2;
+#endif
     }
 }
 
@@ -697,19 +713,41 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* dense, 
         const float m0 = static_cast<float>(n + 1), m1 = p.moment[0][r], m2 = p.moment[1][r];
         float c0 = 0, c1 = 0, c2 = 0, estimate = 0;
         if (line) {
-            const float det = m0 * m2 - m1 * m1;
+#if FEEL_ESTIMATOR_SPEED_TABLES
+            const float det = p.line_det[r];
+#else
+            const float det = line_det(m0, m1, m2);
+#endif
             if (!(det > 0)) continue;
             c1 = (m0 * s[1] - m1 * s[0]) / det;
             c0 = (s[0] - c1 * m1) / m0;
             estimate = c1 / kWindowS;
         } else {
+            // Cramer's rule, each determinant expanded along the sums' column; the
+            // determinant and the minors of the normal matrix alone (normal_minor) are the
+            // time pattern's where it keeps them.
             const float m3 = p.moment[2][r], m4 = p.moment[3][r];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+            const float det = p.parabola_det[r];
+            const float minor_01_12 = p.normal_minor[0][r], minor_11_22 = p.normal_minor[1][r],
+                        minor_01_22 = p.normal_minor[2][r];
+#else
             const float det = det3(m0, m1, m2, m1, m2, m3, m2, m3, m4);
+            const float minor_01_12 = m1 * m3 - m2 * m2, minor_11_22 = m2 * m4 - m3 * m3,
+                        minor_01_22 = m1 * m4 - m3 * m2;
+#endif
             if (!(det > 0)) continue;
-            c2 = det3(m0, m1, s[0], m1, m2, s[1], m2, m3, s[2]) / det;
-            c0 = det3(s[0], m1, m2, s[1], m2, m3, s[2], m3, m4) / det;
-            c1 = det3(m0, s[0], m2, m1, s[1], m3, m2, s[2], m4) / det;
+            // det3(m0, m1, s0, m1, m2, s1, m2, m3, s2), det3(s0, m1, m2, s1, m2, m3, s2, m3, m4)
+            // and det3(m0, s0, m2, m1, s1, m3, m2, s2, m4), the same operations.
+            const float s2_m3 = m1 * s[2] - s[1] * m2, s1_m4 = s[1] * m4 - m3 * s[2];
+            c2 = expand_row(m0, m1, s[0], m2 * s[2] - s[1] * m3, s2_m3, minor_01_12) / det;
             estimate = 2.0f * c2 / (kWindowS * kWindowS);
+            // Over kMinAccelerationWindow the parabola is taken without the band check, which
+            // alone reads c0 and c1.
+            if (n > kMinAccelerationWindow) {
+                c0 = expand_row(s[0], m1, m2, minor_11_22, s1_m4, s[1] * m3 - m2 * s[2]) / det;
+                c1 = expand_row(m0, s[0], m2, s1_m4, minor_01_22, s2_m3) / det;
+            }
         }
         const float* x = x_[axis];
         const bool passes =

@@ -29,16 +29,18 @@
 
 #include "feel/axis.hpp"
 
-// Where the build optimises for speed the running sums are prefix sums over every frozen
-// sample (O(1) a tick, 3 KB an axis); a build for size (the Cortex-M4F image, whose RAM has
-// no 3 KB to spare) keeps the sums of each ladder window and slides them. Both are exact
-// integers, so both give the same sums and the same bits. It sets the class's layout: every
-// translation unit of a program must agree (the board's image is -Os throughout).
-#if !defined(FEEL_ESTIMATOR_PREFIX_SUMS)
+// Where the build optimises for speed the estimator keeps larger tables: the running sums
+// are prefix sums over every frozen sample (O(1) a tick, 3 KB an axis) and the time
+// pattern keeps each rung's determinants; a build for size (the Cortex-M4F image, whose RAM
+// has no 3 KB to spare) keeps the sums of each ladder window and slides them, and works the
+// determinants out in each fit. The sums are exact integers and the determinants the same
+// operations, so both give the same bits. It sets the class's layout: every translation
+// unit of a program must agree (the board's image is -Os throughout).
+#if !defined(FEEL_ESTIMATOR_SPEED_TABLES)
 #if defined(__OPTIMIZE_SIZE__)
-#define FEEL_ESTIMATOR_PREFIX_SUMS 0
+#define FEEL_ESTIMATOR_SPEED_TABLES 0
 #else
-#define FEEL_ESTIMATOR_PREFIX_SUMS 1
+#define FEEL_ESTIMATOR_SPEED_TABLES 1
 #endif
 #endif
 
@@ -144,13 +146,22 @@ private:
         // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
         float u[kHistory];
         int64_t steady_interval_us;  // every interval was this (0: not a steady pattern)
+#if FEEL_ESTIMATOR_SPEED_TABLES
+        // Per rung, what the fits' Cramer's rule reads of the normal matrix alone (M, with
+        // M[i][j] = moment of order i + j): a line's det, a parabola's det and the three
+        // 2x2 minors without the sums (normal_minor: M01·M12 - M11·M11, M11·M22 - M12·M12,
+        // M01·M22 - M12·M11), computed as the fit would (fit_order).
+        float line_det[kRungs];
+        float parabola_det[kRungs];
+        float normal_minor[3][kRungs];
+#endif
     };
 
     // Running sums of the frozen samples (all but the newest, which a later sample of the
     // same instant may replace) over the ladder's window lengths, in 1/fixed_scale_ units:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
     // Only the windows of kFirstSummed up are kept (issue 14's RAM: 120 bytes an axis).
-    // The board's (FEEL_ESTIMATOR_PREFIX_SUMS 0).
+    // The board's (FEEL_ESTIMATOR_SPEED_TABLES 0).
     struct RungSums {
         int64_t s[kLadderSize - kFirstSummed][3];
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
@@ -247,7 +258,7 @@ private:
     float frozen_interval_u_;
     // Axes whose running sums are kept up to date (the first sums_axes_).
     int sums_axes_;
-#if FEEL_ESTIMATOR_PREFIX_SUMS
+#if FEEL_ESTIMATOR_SPEED_TABLES
     // prefix_[axis][slot] = Σ X_j, Σ j·X_j, Σ j²·X_j over the axis's frozen samples up to and
     // including the one in that slot, j counting frozen samples (frozen_count_: the newest's),
     // modulo 2^64: a window's sums are the difference of two (window_sums), exact wherever
