@@ -63,19 +63,23 @@
 //     for a bending motion leaves the band, so a failed rung costs a few samples.
 // That is the general path. On the common one (every older interval the same, positions
 // within range) the sums come without a pass at all (issue 14):
-//   * each ladder window's sums over the frozen samples (all but the newest, which a
-//     fresher reading of the same instant may replace) are kept in 64-bit integers, the
-//     positions as integers of a power-of-two unit far below a sensor count, and slid by
-//     O(1) updates when a sample arrives (slide_sums). Integers are exact, so the sums
-//     never drift; at rest they are not slid at all (window_sums);
+//   * the sums over the frozen samples (all but the newest, which a fresher reading of the
+//     same instant may replace) are kept in 64-bit integers, the positions as integers of
+//     a power-of-two unit far below a sensor count. Where the build optimises for speed
+//     (x86) they are prefix sums through every frozen sample, one addition of three terms
+//     a tick, and a window's sums are the difference of two (issue 14, twelfth pass: the
+//     slides below were a fifth of the moving tick's estimator); on the board (RAM) each
+//     ladder window's sums, slid by O(1) updates when a sample arrives (slide_sums), not
+//     at all at rest (window_sums). Integers are exact, so the sums never drift and both
+//     are the same numbers;
 //   * the band is checked on a fixed set of samples: the newest kDenseSamples, where a
 //     stop or a reversal shows first, and the window's eighths, where a bend shows, looked
 //     at in the order windows fail (within_band);
 //   * the downward search starts kRungsUp above the window accepted last tick.
 // Where the build optimises for speed (x86) the tick's common cases have their own code: a
-// line's window sums without the parabola's share, the full ring's slide unrolled, the
-// newest samples gathered once a tick and checked as vectors; the board (-Os) keeps one
-// path for each (flash). Both give the same bits.
+// line's window sums without the parabola's share, each rung's determinants kept with the
+// time pattern, the newest samples gathered once a tick and checked as vectors; the board
+// (-Os) keeps one path for each (flash, RAM). Both give the same bits.
 // On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
 // (docs/stability.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
@@ -117,38 +121,6 @@ constexpr int64_t elapsed_us(uint32_t later, uint32_t earlier) noexcept {
 // u is time in units of kMaxWindowUs: d/dt = d/du / kWindowS.
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
-
-// Sums of y, u·y and u²·y over samples begin..end-1, added to sum[0..2]: a short segment
-// (the short windows' few samples) one by one, a longer one in four partial sums in a fixed
-// order (vectorizable and the same on every platform). The line fits do not read Σ u²·y;
-// it is summed anyway, on the general path only, for one copy of this code (issue 14's flash).
-void add_moments(const float* y, const float* u, int begin, int end, float sum[3]) noexcept {
-    if (end - begin < 8) {
-        for (int i = begin; i < end; ++i) {
-            sum[0] += y[i];
-            sum[1] += u[i] * y[i];
-            sum[2] += (u[i] * u[i]) * y[i];
-        }
-        return;
-    }
-    float a0[4] = {}, a1[4] = {}, a2[4] = {};
-    int i = begin;
-    for (; i + 4 <= end; i += 4) {
-        for (int j = 0; j < 4; ++j) {
-            a0[j] += y[i + j];
-            a1[j] += u[i + j] * y[i + j];
-            a2[j] += (u[i + j] * u[i + j]) * y[i + j];
-        }
-    }
-    for (int j = 0; i < end; ++i, ++j) {
-        a0[j] += y[i];
-        a1[j] += u[i] * y[i];
-        a2[j] += (u[i] * u[i]) * y[i];
-    }
-    sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
-    sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
-    sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
-}
 
 // A 3x3 determinant expanded along its first row (a, b, c) with the minors of each
 // (minor_a = e·k - f·h, minor_b = d·k - f·g, minor_c = d·h - e·g for rows (d, e, f) and
@@ -207,10 +179,10 @@ int start_rung(int previous, int top) noexcept {
 // window's eighths (where a bend shows: a line fitted to a curve departs from it most at
 // the ends and the middle, a parabola fitted to a cubic at the ends and at about a sixth in
 // from them). The general path checks the same set first, then every other sample.
-constexpr int kDenseSamples = 8;
+constexpr int kDenseSamples = MotionEstimator::kDenseSamples;
 // The newest samples relative to the newest one, dense[i] = x_i - x_0 (i = 0..kDenseSamples),
 // gathered once an axis and tick on x86 for every band check of both fits (dense_samples).
-constexpr int kDenseSlots = kDenseSamples + 1;
+constexpr int kDenseSlots = MotionEstimator::kDenseSlots;
 
 // True if every sample of a window of n intervals lies within band of c0 + c1·u (+ c2·u²
 // for a parabola): on the running-sum path (y null) the fixed set of samples kDenseSamples
@@ -421,7 +393,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
 }
 
-// After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
+// After a push: the newest frozen sample joins the prefix sums (x86); on the board it
+// enters every ladder window at m = 0,
 // the others move one m older, and the one that reaches m = n (index n + 1) leaves:
 //   Σ X   += X_in - X_out
 //   Σ m·X += Σ X - n·X_out           (each staying sample's m grows by one)
@@ -630,27 +603,6 @@ void MotionEstimator::refresh_time_pattern() noexcept {
     }
 }
 
-void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) const noexcept {
-    const TimePattern& p = pattern_;
-    const int max_n = p.max_n;
-    // The samples newest first, relative to the newest: the ring from head_ to its end,
-    // then from its start.
-    const float* x = x_[axis];
-    const float x0 = x[head_];
-    const int first = head_ + max_n < kHistory ? max_n + 1 : kHistory - head_;
-    for (int i = 0; i < first; ++i) y[i] = x[head_ + i] - x0;
-    for (int i = first; i <= max_n; ++i) y[i] = x[i - first] - x0;
-    // The window sums at every rung: one pass, segment by segment.
-    float running[3] = {};
-    int begin = 0;
-    for (int r = 0; r < p.rung_count; ++r) {
-        const int end = p.rung_n[r] + 1;
-        add_moments(y, p.u, begin, end, running);
-        begin = end;
-        for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
-    }
-}
-
 // The newest kDenseSlots samples of an axis relative to the newest (within_band), in buffer:
 // without the ring's wrap when it is not in the way (vector code). Null on the board, whose
 // band check reads them from the ring (flash).
@@ -825,19 +777,6 @@ void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) 
     const float* dense = dense_samples(axis, buffer);
     if (velocity) fit(axis, 1, dense, nullptr, nullptr);
     if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
-}
-
-// The general path keeps the gathered samples and sums on its own stack frame, apart from
-// the tick's common path (fast_fit_possible), which needs neither.
-void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleration) noexcept {
-    if (velocity) velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
-    float y[kHistory];
-    float sums[3][kRungs];
-    gather_axis(axis, y, sums);
-    float buffer[kDenseSlots];
-    const float* dense = dense_samples(axis, buffer);
-    if (velocity) fit(axis, 1, dense, y, sums);
-    if (acceleration) fit(axis, 2, dense, y, sums);
 }
 
 }  // namespace feel::detail

@@ -13,8 +13,9 @@
 // changing motion a short one (little lag). motion_estimator.cpp has the details and
 // docs/conditions.md the reasoning and the measured accuracy.
 //
-// Cost (issue 14): the window sums come from running sums kept per ladder rung, exact in
-// integers, so a fit is O(1); the band check looks at a fixed set of samples (the newest
+// Cost (issue 14): the window sums come from running sums, exact in integers (prefix sums
+// on x86, each ladder rung's on the board: FEEL_ESTIMATOR_SPEED_TABLES), so a fit is O(1);
+// the band check looks at a fixed set of samples (the newest
 // few, then the window's eighths) instead of all of them. motion_estimator.cpp explains.
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
@@ -81,6 +82,10 @@ public:
     // Running sums are kept for the ladder's windows of this many intervals or more;
     // shorter ones are summed from the ring when a fit needs them.
     static constexpr int kMinSummedWindow = 8;
+    // The band check's newest samples, looked at one by one, and the slots that hold them
+    // with the newest (motion_estimator.cpp, within_band and dense_samples).
+    static constexpr int kDenseSamples = 8;
+    static constexpr int kDenseSlots = kDenseSamples + 1;
     // The first kLadder index whose window's sums are kept.
     static constexpr int kFirstSummed = [] {
         int k = 0;
