@@ -164,6 +164,14 @@ void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[2] = before[2] + j * j * value;
 }
 
+// Whether a fit solves only for the coefficients it reads (the speed build) or for all of
+// them in one straight path (the board, whose flash the branch would cost).
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kSolveUnread = true;
+#else
+constexpr bool kSolveUnread = false;
+#endif
+
 // Where the running-sum fits start their downward search: kRungsUp above the rung accepted
 // last time, the whole history (top) at most. The full search (longest window first) is
 // what the general path does every tick; a window that passed last tick grows by a rung or
@@ -695,8 +703,8 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* dense, 
             c2 = expand_row(m0, m1, s[0], m2 * s[2] - s[1] * m3, s2_m3, minor_01_12) / det;
             estimate = 2.0f * c2 / (kWindowS * kWindowS);
             // Over kMinAccelerationWindow the parabola is taken without the band check, which
-            // alone reads c0 and c1.
-            if (n > kMinAccelerationWindow) {
+            // alone reads c0 and c1 (x86: the board solves for them anyway, for its flash).
+            if (kSolveUnread || n > kMinAccelerationWindow) {
                 c0 = expand_row(s[0], m1, m2, minor_11_22, s1_m4, s[1] * m3 - m2 * s[2]) / det;
                 c1 = expand_row(m0, s[0], m2, s1_m4, minor_01_22, s2_m3) / det;
             }
