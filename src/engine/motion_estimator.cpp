@@ -146,11 +146,12 @@ constexpr int32_t sum_of_m(int n) noexcept { return static_cast<int32_t>(static_
 constexpr int32_t sum_of_m_squared(int n) noexcept {
     return static_cast<int32_t>(static_cast<uint32_t>((n - 1) * n * (2 * n - 1)) / 6u);
 }
-// Out of line on the board: three callers share one copy (flash).
+// Out of line on the board: three callers share one copy (flash). The ladder's sums only
+// (FEEL_ESTIMATOR_SPEED_TABLES 0: the prefix sums read the time pattern's Σ m^p).
 #if defined(__OPTIMIZE_SIZE__)
 [[gnu::noinline]]
 #endif
-void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
+[[maybe_unused]] void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[0] = n * value;
     out[1] = int64_t{sum_of_m(n)} * value;
     out[2] = int64_t{sum_of_m_squared(n)} * value;
@@ -540,9 +541,16 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
         if (parabola) s[2] += m * m * value;
     }
 #endif
-    // The newest sample's share, X_0·Σ m^p over m = 0..n-1.
+    // The newest sample's share, X_0·Σ m^p over m = 0..n-1 (Σ m^p the time pattern's on x86).
     int64_t newest[3];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    const int64_t x0 = newest_fixed_value_[axis];
+    newest[0] = n * x0;
+    newest[1] = int64_t{pattern_.m_sums[0][r]} * x0;
+    newest[2] = int64_t{pattern_.m_sums[1][r]} * x0;
+#else
     constant_sums(n, newest_fixed_value_[axis], newest);
+#endif
     const float unit = fixed_unit_;
     const float sy = float_of_int64(s[0] - newest[0]) * unit;
     const float smy = float_of_int64(s[1] - newest[1]) * unit;
@@ -607,6 +615,8 @@ void MotionEstimator::refresh_time_pattern() noexcept {
         p.normal_minor[0][r] = m1 * m3 - m2 * m2;
         p.normal_minor[1][r] = m2 * m4 - m3 * m3;
         p.normal_minor[2][r] = m1 * m4 - m3 * m2;
+        p.m_sums[0][r] = sum_of_m(p.rung_n[r]);
+        p.m_sums[1][r] = sum_of_m_squared(p.rung_n[r]);
 #endif
     }
 }

@@ -159,6 +159,9 @@ private:
         float line_det[kRungs];
         float parabola_det[kRungs];
         float normal_minor[3][kRungs];
+        // Σ m and Σ m² over m = 0..rung_n[r] - 1: the weights of the newest sample's share of
+        // a window's sums (window_sums).
+        int32_t m_sums[2][kRungs];
 #endif
     };
 
