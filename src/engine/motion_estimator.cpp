@@ -165,8 +165,8 @@ constexpr int32_t sum_of_m_squared(int n) noexcept {
     out[2] = before[2] + j * j * value;
 }
 
-// Whether a fit solves only for the coefficients it reads (the speed build) or for all of
-// them in one straight path (the board, whose flash the branch would cost).
+// Whether a fit solves for every coefficient, read or not: on the board, in one straight
+// path (the branch would cost its flash); elsewhere it solves only for those it reads.
 #if defined(__OPTIMIZE_SIZE__)
 constexpr bool kSolveUnread = true;
 #else

@@ -15,8 +15,8 @@
 //
 // Cost (issue 14): the window sums come from running sums, exact in integers (prefix sums
 // on x86, each ladder rung's on the board: FEEL_ESTIMATOR_SPEED_TABLES), so a fit is O(1);
-// the band check looks at a fixed set of samples (the newest
-// few, then the window's eighths) instead of all of them. motion_estimator.cpp explains.
+// the band check looks at a fixed set of samples (the newest few, then the window's
+// eighths) instead of all of them. motion_estimator.cpp explains.
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
 // function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
@@ -79,8 +79,9 @@ public:
     // A window grows by at most this many rungs a tick (the fits search downwards from
     // there): one tick's new sample rarely lets a window grow more.
     static constexpr int kRungsUp = 1;
-    // Running sums are kept for the ladder's windows of this many intervals or more;
-    // shorter ones are summed from the ring when a fit needs them.
+    // The board's running sums are kept for the ladder's windows of this many intervals or
+    // more; shorter ones are summed from the ring when a fit needs them (x86's prefix sums
+    // serve every window).
     static constexpr int kMinSummedWindow = 8;
     // The band check's newest samples, looked at one by one, and the slots that hold them
     // with the newest (motion_estimator.cpp, within_band and dense_samples).
