@@ -63,19 +63,23 @@
 //     for a bending motion leaves the band, so a failed rung costs a few samples.
 // That is the general path. On the common one (every older interval the same, positions
 // within range) the sums come without a pass at all (issue 14):
-//   * each ladder window's sums over the frozen samples (all but the newest, which a
-//     fresher reading of the same instant may replace) are kept in 64-bit integers, the
-//     positions as integers of a power-of-two unit far below a sensor count, and slid by
-//     O(1) updates when a sample arrives (slide_sums). Integers are exact, so the sums
-//     never drift; at rest they are not slid at all (window_sums);
+//   * the sums over the frozen samples (all but the newest, which a fresher reading of the
+//     same instant may replace) are kept in 64-bit integers, the positions as integers of
+//     a power-of-two unit far below a sensor count. Where the build optimises for speed
+//     (x86) they are prefix sums through every frozen sample, one addition of three terms
+//     a tick, and a window's sums are the difference of two (issue 14, twelfth pass: the
+//     slides below were a fifth of the moving tick's estimator); on the board (RAM) each
+//     ladder window's sums, slid by O(1) updates when a sample arrives (slide_sums), not
+//     at all at rest (window_sums). Integers are exact, so the sums never drift and both
+//     are the same numbers;
 //   * the band is checked on a fixed set of samples: the newest kDenseSamples, where a
 //     stop or a reversal shows first, and the window's eighths, where a bend shows, looked
 //     at in the order windows fail (within_band);
 //   * the downward search starts kRungsUp above the window accepted last tick.
 // Where the build optimises for speed (x86) the tick's common cases have their own code: a
-// line's window sums without the parabola's share, the full ring's slide unrolled, the
-// newest samples gathered once a tick and checked as vectors; the board (-Os) keeps one
-// path for each (flash). Both give the same bits.
+// line's window sums without the parabola's share, each rung's determinants kept with the
+// time pattern, the newest samples gathered once a tick and checked as vectors; the board
+// (-Os) keeps one path for each (flash, RAM). Both give the same bits.
 // On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
 // (docs/stability.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
@@ -118,41 +122,17 @@ constexpr int64_t elapsed_us(uint32_t later, uint32_t earlier) noexcept {
 constexpr float kWindowS = static_cast<float>(MotionEstimator::kMaxWindowUs) * 1e-6f;
 
 
-// Sums of y, u·y and u²·y over samples begin..end-1, added to sum[0..2]: a short segment
-// (the short windows' few samples) one by one, a longer one in four partial sums in a fixed
-// order (vectorizable and the same on every platform). The line fits do not read Σ u²·y;
-// it is summed anyway, on the general path only, for one copy of this code (issue 14's flash).
-void add_moments(const float* y, const float* u, int begin, int end, float sum[3]) noexcept {
-    if (end - begin < 8) {
-        for (int i = begin; i < end; ++i) {
-            sum[0] += y[i];
-            sum[1] += u[i] * y[i];
-            sum[2] += (u[i] * u[i]) * y[i];
-        }
-        return;
-    }
-    float a0[4] = {}, a1[4] = {}, a2[4] = {};
-    int i = begin;
-    for (; i + 4 <= end; i += 4) {
-        for (int j = 0; j < 4; ++j) {
-            a0[j] += y[i + j];
-            a1[j] += u[i + j] * y[i + j];
-            a2[j] += (u[i + j] * u[i + j]) * y[i + j];
-        }
-    }
-    for (int j = 0; i < end; ++i, ++j) {
-        a0[j] += y[i];
-        a1[j] += u[i] * y[i];
-        a2[j] += (u[i] * u[i]) * y[i];
-    }
-    sum[0] += (a0[0] + a0[1]) + (a0[2] + a0[3]);
-    sum[1] += (a1[0] + a1[1]) + (a1[2] + a1[3]);
-    sum[2] += (a2[0] + a2[1]) + (a2[2] + a2[3]);
+// A 3x3 determinant expanded along its first row (a, b, c) with the minors of each
+// (minor_a = e·k - f·h, minor_b = d·k - f·g, minor_c = d·h - e·g for rows (d, e, f) and
+// (g, h, k)): apart so that a minor of the normal matrix alone can be the time pattern's.
+float expand_row(float a, float b, float c, float minor_a, float minor_b, float minor_c) noexcept {
+    return a * minor_a - b * minor_b + c * minor_c;
 }
-
 float det3(float a, float b, float c, float d, float e, float f, float g, float h, float k) noexcept {
-    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+    return expand_row(a, b, c, e * k - f * h, d * k - f * g, d * h - e * g);
 }
+// A line's normal matrix's determinant: m0 = Σ u⁰ (the sample count), m1 = Σ u, m2 = Σ u².
+float line_det(float m0, float m1, float m2) noexcept { return m0 * m2 - m1 * m1; }
 
 // Σ m^p·X over m = 0..n-1 for a constant X (p = 0, 1, 2): a window at rest, or the newest
 // sample's share of a window's sums. Exact in 64-bit integers.
@@ -166,15 +146,32 @@ constexpr int32_t sum_of_m(int n) noexcept { return static_cast<int32_t>(static_
 constexpr int32_t sum_of_m_squared(int n) noexcept {
     return static_cast<int32_t>(static_cast<uint32_t>((n - 1) * n * (2 * n - 1)) / 6u);
 }
-// Out of line on the board: three callers share one copy (flash).
+// Out of line on the board: three callers share one copy (flash). The ladder's sums only
+// (FEEL_ESTIMATOR_SPEED_TABLES 0: the prefix sums read the time pattern's Σ m^p).
 #if defined(__OPTIMIZE_SIZE__)
 [[gnu::noinline]]
 #endif
-void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
+[[maybe_unused]] void constant_sums(int n, int64_t value, int64_t out[3]) noexcept {
     out[0] = n * value;
     out[1] = int64_t{sum_of_m(n)} * value;
     out[2] = int64_t{sum_of_m_squared(n)} * value;
 }
+
+// The prefix sums through a frozen sample from those through the one before it: its value
+// X with weights 1, j, j² (FEEL_ESTIMATOR_SPEED_TABLES), modulo 2^64.
+[[maybe_unused]] inline void add_prefix(const uint64_t before[3], uint64_t j, uint64_t value, uint64_t out[3]) noexcept {
+    out[0] = before[0] + value;
+    out[1] = before[1] + j * value;
+    out[2] = before[2] + j * j * value;
+}
+
+// Whether a fit solves for every coefficient, read or not: on the board, in one straight
+// path (the branch would cost its flash); elsewhere it solves only for those it reads.
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kSolveUnread = true;
+#else
+constexpr bool kSolveUnread = false;
+#endif
 
 // Where the running-sum fits start their downward search: kRungsUp above the rung accepted
 // last time, the whole history (top) at most. The full search (longest window first) is
@@ -191,10 +188,10 @@ int start_rung(int previous, int top) noexcept {
 // window's eighths (where a bend shows: a line fitted to a curve departs from it most at
 // the ends and the middle, a parabola fitted to a cubic at the ends and at about a sixth in
 // from them). The general path checks the same set first, then every other sample.
-constexpr int kDenseSamples = 8;
+constexpr int kDenseSamples = MotionEstimator::kDenseSamples;
 // The newest samples relative to the newest one, dense[i] = x_i - x_0 (i = 0..kDenseSamples),
 // gathered once an axis and tick on x86 for every band check of both fits (dense_samples).
-constexpr int kDenseSlots = kDenseSamples + 1;
+constexpr int kDenseSlots = MotionEstimator::kDenseSlots;
 
 // True if every sample of a window of n intervals lies within band of c0 + c1·u (+ c2·u²
 // for a parabola): on the running-sum path (y null) the fixed set of samples kDenseSamples
@@ -300,8 +297,10 @@ void MotionEstimator::reset() noexcept {
     for (int a = 0; a < kMaxAxes; ++a) {
         fixed_run_[a] = 0;
         newest_fixed_[a] = frozen_fixed_[a] = false;
-        sums_[a] = RungSums{};
+#if !FEEL_ESTIMATOR_SPEED_TABLES
+        sums_[a] = RungSums{};  // the prefix sums are written afresh by rebuild_sums (sums_axes_ 0)
         sums_still_[a] = false;
+#endif
         velocity_[a] = acceleration_[a] = 0.0f;
         velocity_window_[a] = acceleration_window_[a] = 0;
         velocity_rung_[a] = acceleration_rung_[a] = kRungs;
@@ -383,6 +382,9 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
         newest_fixed_value_[a] = fixed_value(x);
     }
 
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    if (pushed && count_ >= 2) ++frozen_count_;
+#endif
     for (int a = 0; a < axes; ++a) {
         if (a >= sums_axes_) {
             rebuild_sums(a);
@@ -400,7 +402,8 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
     for (int a = 0; a < axes; ++a) estimate(a, true, with_acceleration);
 }
 
-// After a push: the newest frozen sample (index 1) enters every ladder window at m = 0,
+// After a push: the newest frozen sample joins the prefix sums (x86); on the board it
+// enters every ladder window at m = 0,
 // the others move one m older, and the one that reaches m = n (index n + 1) leaves:
 //   Σ X   += X_in - X_out
 //   Σ m·X += Σ X - n·X_out           (each staying sample's m grows by one)
@@ -410,6 +413,13 @@ void MotionEstimator::update(int64_t t_us, const float position[kMaxAxes], int a
 void MotionEstimator::slide_sums(int axis) noexcept {
     const bool representable = frozen_fixed_[axis];
     fixed_run_[axis] = representable ? (fixed_run_[axis] < kHistory ? fixed_run_[axis] + 1 : kHistory) : 0;
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    // The prefix sums: the newest frozen sample (index 1, j = frozen_count_) adds its terms to
+    // the sums up to the one before it (index 2, or the zeros past the oldest). Nothing
+    // leaves, and at rest there is nothing to skip: three additions whatever the motion.
+    const uint64_t value = static_cast<uint64_t>(int64_t{frozen_fixed_value_[axis]});
+    add_prefix(prefix_[axis][(head_ + 2) & kMask], frozen_count_, value, prefix_[axis][(head_ + 1) & kMask]);
+#else
     // At rest (the newest frozen sample and the longest ladder window all one value) the
     // sums are implied; leaving rest, they are first written out for the state before
     // this push (every window full of the value now at index 2).
@@ -434,31 +444,31 @@ void MotionEstimator::slide_sums(int axis) noexcept {
     // Where every leaving sample is known to have a value (the common case), it is read
     // without the range check.
     const bool held = fixed_run_[axis] > kLadder[kLadderSize - 1];
-#if !defined(__OPTIMIZE_SIZE__)
-    // The tick's common case, a full ring: a sample leaves every window. Unrolled, each
-    // window's length and leaving index are constants (about a third fewer instructions; the
-    // board keeps the one loop below, for its flash).
-    if (held && count_ > kLadder[kLadderSize - 1] + 1) {
-#pragma GCC unroll 8
-        for (int k = kFirstSummed; k < kLadderSize; ++k) slide(k, held_fixed_at(axis, kLadder[k] + 1));
-        return;
-    }
-#endif
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         // Before the ring holds n + 1 frozen samples nothing leaves.
         const int leaving = kLadder[k] + 1;
         slide(k, leaving > count_ - 1 ? 0 : held ? held_fixed_at(axis, leaving) : fixed_at(axis, leaving));
     }
+#endif
 }
 
 // The running sums of an axis from the ring, for an axis that was not kept up to date.
 void MotionEstimator::rebuild_sums(int axis) noexcept {
     const float* x = x_[axis];
     fixed_run_[axis] = 0;
-    sums_still_[axis] = false;
     while (fixed_run_[axis] + 1 < count_ && representable(x[(head_ + fixed_run_[axis] + 1) & kMask])) {
         ++fixed_run_[axis];
     }
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    // From the zeros past the oldest frozen sample to the newest (index 1, j = frozen_count_).
+    uint64_t* past_oldest = prefix_[axis][(head_ + count_) & kMask];
+    past_oldest[0] = past_oldest[1] = past_oldest[2] = 0;
+    for (int i = count_ - 1; i >= 1; --i) {
+        add_prefix(prefix_[axis][(head_ + i + 1) & kMask], frozen_count_ - static_cast<uint64_t>(i - 1),
+                   static_cast<uint64_t>(fixed_at(axis, i)), prefix_[axis][(head_ + i) & kMask]);
+    }
+#else
+    sums_still_[axis] = false;
     for (int k = kFirstSummed; k < kLadderSize; ++k) {
         int64_t* s = sums_[axis].at(k);
         s[0] = s[1] = s[2] = 0;
@@ -470,6 +480,7 @@ void MotionEstimator::rebuild_sums(int axis) noexcept {
             s[2] += m * m * value;
         }
     }
+#endif
 }
 
 bool MotionEstimator::fast_fit_possible(int axis) const noexcept {
@@ -494,8 +505,21 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
                                                                float out[3]) const noexcept {
 #endif
     const int n = pattern_.rung_n[r];
-    const int k = pattern_.rung_ladder[r];
     int64_t s[3] = {0, 0, 0};
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    // Frozen samples 1..n: the prefix sums at index 1 less those at n + 1, their j (m = c - j
+    // for the newest frozen sample's c) turned into m: Σ m·X = c·Σ X - Σ j·X,
+    // Σ m²·X = c²·Σ X - 2c·Σ j·X + Σ j²·X, modulo 2^64 and so exact.
+    const uint64_t* through_newest = prefix_[axis][(head_ + 1) & kMask];
+    const uint64_t* before_window = prefix_[axis][(head_ + n + 1) & kMask];
+    const uint64_t c = frozen_count_;
+    const uint64_t sx = through_newest[0] - before_window[0];
+    const uint64_t sjx = through_newest[1] - before_window[1];
+    s[0] = static_cast<int64_t>(sx);
+    s[1] = static_cast<int64_t>(c * sx - sjx);
+    if (parabola) s[2] = static_cast<int64_t>(c * (c * sx - 2 * sjx) + (through_newest[2] - before_window[2]));
+#else
+    const int k = pattern_.rung_ladder[r];
     int from = 1;
     if (k >= 0) {
         // At rest every ladder window holds the newest frozen sample's value (sums_still_).
@@ -516,9 +540,17 @@ void MotionEstimator::window_sums(int axis, int r, bool parabola, float out[3]) 
         s[1] += m * value;
         if (parabola) s[2] += m * m * value;
     }
-    // The newest sample's share, X_0·Σ m^p over m = 0..n-1.
+#endif
+    // The newest sample's share, X_0·Σ m^p over m = 0..n-1 (Σ m^p the time pattern's on x86).
     int64_t newest[3];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    const int64_t x0 = newest_fixed_value_[axis];
+    newest[0] = n * x0;
+    newest[1] = int64_t{pattern_.m_sums[0][r]} * x0;
+    newest[2] = int64_t{pattern_.m_sums[1][r]} * x0;
+#else
     constant_sums(n, newest_fixed_value_[axis], newest);
+#endif
     const float unit = fixed_unit_;
     const float sy = float_of_int64(s[0] - newest[0]) * unit;
     const float smy = float_of_int64(s[1] - newest[1]) * unit;
@@ -576,27 +608,16 @@ void MotionEstimator::refresh_time_pattern() noexcept {
             sum[3] += u2 * u2;
         }
         for (int k = 0; k < 4; ++k) p.moment[k][r] = sum[k];
-    }
-}
-
-void MotionEstimator::gather_axis(int axis, float* y, float (*sums)[kRungs]) const noexcept {
-    const TimePattern& p = pattern_;
-    const int max_n = p.max_n;
-    // The samples newest first, relative to the newest: the ring from head_ to its end,
-    // then from its start.
-    const float* x = x_[axis];
-    const float x0 = x[head_];
-    const int first = head_ + max_n < kHistory ? max_n + 1 : kHistory - head_;
-    for (int i = 0; i < first; ++i) y[i] = x[head_ + i] - x0;
-    for (int i = first; i <= max_n; ++i) y[i] = x[i - first] - x0;
-    // The window sums at every rung: one pass, segment by segment.
-    float running[3] = {};
-    int begin = 0;
-    for (int r = 0; r < p.rung_count; ++r) {
-        const int end = p.rung_n[r] + 1;
-        add_moments(y, p.u, begin, end, running);
-        begin = end;
-        for (int k = 0; k < 3; ++k) sums[k][r] = running[k];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+        const float m0 = static_cast<float>(p.rung_n[r] + 1), m1 = sum[0], m2 = sum[1], m3 = sum[2], m4 = sum[3];
+        p.line_det[r] = line_det(m0, m1, m2);
+        p.parabola_det[r] = det3(m0, m1, m2, m1, m2, m3, m2, m3, m4);
+        p.normal_minor[0][r] = m1 * m3 - m2 * m2;
+        p.normal_minor[1][r] = m2 * m4 - m3 * m3;
+        p.normal_minor[2][r] = m1 * m4 - m3 * m2;
+        p.m_sums[0][r] = sum_of_m(p.rung_n[r]);
+        p.m_sums[1][r] = sum_of_m_squared(p.rung_n[r]);
+#endif
     }
 }
 
@@ -662,19 +683,41 @@ inline void MotionEstimator::fit_order(int axis, int order, const float* dense, 
         const float m0 = static_cast<float>(n + 1), m1 = p.moment[0][r], m2 = p.moment[1][r];
         float c0 = 0, c1 = 0, c2 = 0, estimate = 0;
         if (line) {
-            const float det = m0 * m2 - m1 * m1;
+#if FEEL_ESTIMATOR_SPEED_TABLES
+            const float det = p.line_det[r];
+#else
+            const float det = line_det(m0, m1, m2);
+#endif
             if (!(det > 0)) continue;
             c1 = (m0 * s[1] - m1 * s[0]) / det;
             c0 = (s[0] - c1 * m1) / m0;
             estimate = c1 / kWindowS;
         } else {
+            // Cramer's rule, each determinant expanded along the sums' column; the
+            // determinant and the minors of the normal matrix alone (normal_minor) are the
+            // time pattern's where it keeps them.
             const float m3 = p.moment[2][r], m4 = p.moment[3][r];
+#if FEEL_ESTIMATOR_SPEED_TABLES
+            const float det = p.parabola_det[r];
+            const float minor_01_12 = p.normal_minor[0][r], minor_11_22 = p.normal_minor[1][r],
+                        minor_01_22 = p.normal_minor[2][r];
+#else
             const float det = det3(m0, m1, m2, m1, m2, m3, m2, m3, m4);
+            const float minor_01_12 = m1 * m3 - m2 * m2, minor_11_22 = m2 * m4 - m3 * m3,
+                        minor_01_22 = m1 * m4 - m3 * m2;
+#endif
             if (!(det > 0)) continue;
-            c2 = det3(m0, m1, s[0], m1, m2, s[1], m2, m3, s[2]) / det;
-            c0 = det3(s[0], m1, m2, s[1], m2, m3, s[2], m3, m4) / det;
-            c1 = det3(m0, s[0], m2, m1, s[1], m3, m2, s[2], m4) / det;
+            // det3(m0, m1, s0, m1, m2, s1, m2, m3, s2), det3(s0, m1, m2, s1, m2, m3, s2, m3, m4)
+            // and det3(m0, s0, m2, m1, s1, m3, m2, s2, m4), the same operations.
+            const float s2_m3 = m1 * s[2] - s[1] * m2, s1_m4 = s[1] * m4 - m3 * s[2];
+            c2 = expand_row(m0, m1, s[0], m2 * s[2] - s[1] * m3, s2_m3, minor_01_12) / det;
             estimate = 2.0f * c2 / (kWindowS * kWindowS);
+            // Over kMinAccelerationWindow the parabola is taken without the band check, which
+            // alone reads c0 and c1 (x86: the board solves for them anyway, for its flash).
+            if (kSolveUnread || n > kMinAccelerationWindow) {
+                c0 = expand_row(s[0], m1, m2, minor_11_22, s1_m4, s[1] * m3 - m2 * s[2]) / det;
+                c1 = expand_row(m0, s[0], m2, s1_m4, minor_01_22, s2_m3) / det;
+            }
         }
         const float* x = x_[axis];
         const bool passes =
@@ -752,19 +795,6 @@ void MotionEstimator::estimate_fast(int axis, bool velocity, bool acceleration) 
     const float* dense = dense_samples(axis, buffer);
     if (velocity) fit(axis, 1, dense, nullptr, nullptr);
     if (acceleration) fit(axis, 2, dense, nullptr, nullptr);
-}
-
-// The general path keeps the gathered samples and sums on its own stack frame, apart from
-// the tick's common path (fast_fit_possible), which needs neither.
-void MotionEstimator::estimate_general(int axis, bool velocity, bool acceleration) noexcept {
-    if (velocity) velocity_rung_[axis] = acceleration_rung_[axis] = kRungs;
-    float y[kHistory];
-    float sums[3][kRungs];
-    gather_axis(axis, y, sums);
-    float buffer[kDenseSlots];
-    const float* dense = dense_samples(axis, buffer);
-    if (velocity) fit(axis, 1, dense, y, sums);
-    if (acceleration) fit(axis, 2, dense, y, sums);
 }
 
 }  // namespace feel::detail

@@ -13,9 +13,10 @@
 // changing motion a short one (little lag). motion_estimator.cpp has the details and
 // docs/conditions.md the reasoning and the measured accuracy.
 //
-// Cost (issue 14): the window sums come from running sums kept per ladder rung, exact in
-// integers, so a fit is O(1); the band check looks at a fixed set of samples (the newest
-// few, then the window's eighths) instead of all of them. motion_estimator.cpp explains.
+// Cost (issue 14): the window sums come from running sums, exact in integers (prefix sums
+// on x86, each ladder rung's on the board: FEEL_ESTIMATOR_SPEED_TABLES), so a fit is O(1);
+// the band check looks at a fixed set of samples (the newest few, then the window's
+// eighths) instead of all of them. motion_estimator.cpp explains.
 //
 // Real-time safe: fixed-size history, no allocation, no clock; the output is a pure
 // function of the samples fed in. Single precision throughout (a Cortex-M4F has no double
@@ -28,6 +29,21 @@
 #include <type_traits>
 
 #include "feel/axis.hpp"
+
+// Where the build optimises for speed the estimator keeps larger tables: the running sums
+// are prefix sums over every frozen sample (O(1) a tick, 3 KB an axis) and the time
+// pattern keeps each rung's determinants; a build for size (the Cortex-M4F image, whose RAM
+// has no 3 KB to spare) keeps the sums of each ladder window and slides them, and works the
+// determinants out in each fit. The sums are exact integers and the determinants the same
+// operations, so both give the same bits. It sets the class's layout: every translation
+// unit of a program must agree (the board's image is -Os throughout).
+#if !defined(FEEL_ESTIMATOR_SPEED_TABLES)
+#if defined(__OPTIMIZE_SIZE__)
+#define FEEL_ESTIMATOR_SPEED_TABLES 0
+#else
+#define FEEL_ESTIMATOR_SPEED_TABLES 1
+#endif
+#endif
 
 namespace feel::detail {
 
@@ -63,9 +79,14 @@ public:
     // A window grows by at most this many rungs a tick (the fits search downwards from
     // there): one tick's new sample rarely lets a window grow more.
     static constexpr int kRungsUp = 1;
-    // Running sums are kept for the ladder's windows of this many intervals or more;
-    // shorter ones are summed from the ring when a fit needs them.
+    // The board's running sums are kept for the ladder's windows of this many intervals or
+    // more; shorter ones are summed from the ring when a fit needs them (x86's prefix sums
+    // serve every window).
     static constexpr int kMinSummedWindow = 8;
+    // The band check's newest samples, looked at one by one, and the slots that hold them
+    // with the newest (motion_estimator.cpp, within_band and dense_samples).
+    static constexpr int kDenseSamples = 8;
+    static constexpr int kDenseSlots = kDenseSamples + 1;
     // The first kLadder index whose window's sums are kept.
     static constexpr int kFirstSummed = [] {
         int k = 0;
@@ -131,12 +152,25 @@ private:
         // (one multiplication, the same rounding as a stored copy, half a KB less: issue 14).
         float u[kHistory];
         int64_t steady_interval_us;  // every interval was this (0: not a steady pattern)
+#if FEEL_ESTIMATOR_SPEED_TABLES
+        // Per rung, what the fits' Cramer's rule reads of the normal matrix alone (M, with
+        // M[i][j] = moment of order i + j): a line's det, a parabola's det and the three
+        // 2x2 minors without the sums (normal_minor: M01·M12 - M11·M11, M11·M22 - M12·M12,
+        // M01·M22 - M12·M11), computed as the fit would (fit_order).
+        float line_det[kRungs];
+        float parabola_det[kRungs];
+        float normal_minor[3][kRungs];
+        // Σ m and Σ m² over m = 0..rung_n[r] - 1: the weights of the newest sample's share of
+        // a window's sums (window_sums).
+        int32_t m_sums[2][kRungs];
+#endif
     };
 
     // Running sums of the frozen samples (all but the newest, which a later sample of the
     // same instant may replace) over the ladder's window lengths, in 1/fixed_scale_ units:
     // for the n frozen samples 1..n (m = i - 1 = 0..n-1), Σ X, Σ m·X, Σ m²·X.
     // Only the windows of kFirstSummed up are kept (issue 14's RAM: 120 bytes an axis).
+    // The board's (FEEL_ESTIMATOR_SPEED_TABLES 0).
     struct RungSums {
         int64_t s[kLadderSize - kFirstSummed][3];
         int64_t* at(int k) noexcept { return s[k - kFirstSummed]; }
@@ -233,10 +267,21 @@ private:
     float frozen_interval_u_;
     // Axes whose running sums are kept up to date (the first sums_axes_).
     int sums_axes_;
+#if FEEL_ESTIMATOR_SPEED_TABLES
+    // prefix_[axis][slot] = Σ X_j, Σ j·X_j, Σ j²·X_j over the axis's frozen samples up to and
+    // including the one in that slot, j counting frozen samples (frozen_count_: the newest's),
+    // modulo 2^64: a window's sums are the difference of two (window_sums), exact wherever
+    // the true sum fits an int64. The slot past the oldest frozen sample holds the sums
+    // before it (the newest sample's slot, once the ring is full: its own are written when
+    // it is frozen).
+    uint64_t prefix_[kMaxAxes][kHistory][3];
+    uint64_t frozen_count_;
+#else
     RungSums sums_[kMaxAxes];
     // At rest the sums are not slid: every ladder window then holds one value, the newest
     // frozen sample's, and its sums follow from it (window_sums). True while that holds.
     bool sums_still_[kMaxAxes];
+#endif
     float velocity_[kMaxAxes];
     float acceleration_[kMaxAxes];
     int velocity_window_[kMaxAxes];
