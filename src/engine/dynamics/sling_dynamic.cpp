@@ -57,6 +57,7 @@
 // Real-time safe: no allocation; at most kMaxSteps steps per tick.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "dynamics/ball_tick.hpp"
@@ -85,53 +86,73 @@ struct AxisCapacity<std::integral_constant<int, N>> {
 
 struct Sling {
     float mass = 1;          // m, force units per (position unit/s²)
-    float stiffness = 0;     // k, force units per position unit
     float length = 0;        // L, position units
     float drag = 0;          // c, force units per (position unit/s)
     float rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
     float rate_length = 0;   // ω²·L
+    float rate = 0;          // ω, rad/s
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
-    mutable float air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
-    mutable float air_factor = 1;
+    DynamicState& state;      // the slot's: the ball and, once it is live, the form (BallState::sling)
+    // The string's pull at the end of the last advance and the squared distance it is for:
+    // the prediction starts where the catch-up ended (ball_tick), at the same pull.
+    mutable float end_r2 = std::numeric_limits<float>::quiet_NaN();
+    mutable float end_pull = 0;
 
-    Sling(const SlotParams& p, const EngineConfig& config) noexcept {
-        const SlotDynamicBlock& d = *p.dynamic;
-        mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
-        stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
-        length = static_cast<float>(d.string_length);
-        drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
-        rate_squared = stiffness / mass;
-        rate_length = rate_squared * length;
+    // The law from the slot's form, worked out from the parameters once per command
+    // (DynamicState::prepared) instead of every tick: four divisions and a square root. The
+    // form is the ball's, live from its first tick (ball_tick starts it), so that tick
+    // works the law out and the next keeps it.
+    Sling(const DynamicContext& c) noexcept : state(*c.state) {
+        const SlotParams& p = *c.params;
+        SlingForm& form = state.ball.sling;
+        if (state.initialized && state.prepared) {
+            mass = form.mass;
+            length = form.length;
+            drag = form.drag;
+            rate_squared = form.rate_squared;
+            rate_length = form.rate_length;
+            rate = form.rate;
+        } else {
+            const SlotDynamicBlock& d = *p.dynamic;
+            const EngineConfig& config = *c.config;
+            mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
+            const float stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
+            length = static_cast<float>(d.string_length);
+            drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
+            rate_squared = stiffness / mass;
+            rate_length = rate_squared * length;
+            rate = std::sqrt(rate_squared);
+            if (state.initialized) {
+                form.mass = mass;
+                form.length = length;
+                form.drag = drag;
+                form.rate_squared = rate_squared;
+                form.rate_length = rate_length;
+                form.rate = rate;
+                form.advance_s = 0;  // its steps are the old law's
+                state.prepared = true;
+            }
+        }
         count = p.axis_count;
         for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
     }
 
-    // e^(−c·h/2m), what the air leaves of the velocity over half a step of h seconds. The
-    // catch-up and the prediction of a tick mostly take steps of the same length: the
-    // exponential of the last length asked is kept (the Sling lives for one tick).
-    float air_over_half_step(float h) const noexcept {
-        if (h != air_step_s) {
-            air_step_s = h;
-            air_factor = ball_decay(drag * h / (2.0f * mass));
-        }
-        return air_factor;
+    // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass when taut, for |r|² = r2: the
+    // string's pull on the ball per unit mass is this times r. L = 0: −k, smooth through
+    // r = 0. The quotient is computed either way (inf or NaN at r = 0, then not used) so
+    // that the choice is a select, not a branch on the step's chain that a string going
+    // slack and taut would make the processor mispredict.
+    float pull_at(float r2) const noexcept {
+        const float distance = std::sqrt(r2);
+        return distance > length ? rate_length / distance - rate_squared : 0.0f;
     }
 
-    // The string's pull on the ball per unit mass, for r = ball − handle (per effect axis).
-    // Count is the number of the effect's axes: an int, or a compile-time constant for the
-    // common two (advance says why).
     template <typename Count>
-    void acceleration(Count n, const float* r, float* a) const noexcept {
+    static float squared_norm(Count n, const float* r) noexcept {
         float r2 = 0;
         for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
-        const float distance = std::sqrt(r2);
-        // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass, when taut. L = 0: −k·r,
-        // smooth through r = 0. The quotient is computed either way (inf or NaN at r = 0, then not used) so that the
-        // choice is a select, not a branch on the step's chain that a string going slack
-        // and taut would make the processor mispredict.
-        const float pull = distance > length ? rate_length / distance - rate_squared : 0.0f;
-        for (int i = 0; i < n; ++i) a[i] = pull * r[i];
+        return r2;
     }
 
     // Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
@@ -144,18 +165,42 @@ struct Sling {
         return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
     }
 
-    // The ball's angular rate about the handle when the string is at its length, rad/s:
-    // what the steps must resolve besides the string's own radial rate. With L = 0 the
-    // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
-    template <typename Count>
-    float turning_rate(Count n, const float* r, const float* relative_velocity) const noexcept {
-        if (length <= 0) return 0.0f;
-        float r2 = 0;
-        float v2 = 0;
-        for (int i = 0; i < n; ++i) {
-            r2 += r[i] * r[i];
-            v2 += relative_velocity[i] * relative_velocity[i];
+    // The constants of `steps` Verlet steps over h_total seconds (VerletRun says what each is).
+    SlingSteps steps_of(int steps, float h_total) const noexcept {
+        SlingSteps k;
+        k.count = steps;
+        k.h = h_total / static_cast<float>(steps);
+        k.half_h = 0.5f * k.h;
+        k.half_drag = ball_decay(drag * k.h / (2.0f * mass));
+        k.drag_squared = k.half_drag * k.half_drag;
+        k.kick_gain = k.half_h * (1.0f + k.drag_squared);
+        const float move_gain = k.h * k.kick_gain;
+        k.move_pull = move_gain * rate_length;
+        k.move_rate = move_gain * rate_squared;
+        return k;
+    }
+
+    // The steps the string's own rate asks for over h_total seconds: they depend on the
+    // advance's length alone, so the form keeps them until the tick's length changes (at a
+    // fixed loop rate, never): a division, the air's exponential and the count's rounding
+    // a tick less. Only for a live ball (advance runs after ball_tick has started it).
+    [[gnu::always_inline]] inline const SlingSteps& string_steps(float h_total) const noexcept {
+        SlingForm& form = state.ball.sling;
+        if (form.advance_s != h_total) {
+            form.steps = steps_of(step_count(rate, h_total), h_total);
+            form.advance_s = h_total;
         }
+        return form.steps;
+    }
+
+    // The ball's angular rate about the handle when the string is at its length, rad/s, for
+    // |r|² = r2: what the steps must resolve besides the string's own radial rate. With
+    // L = 0 the string is a linear spring, which Verlet integrates exactly in angle, and
+    // only ω counts.
+    template <typename Count>
+    float turning_rate(Count n, float r2, const float* relative_velocity) const noexcept {
+        if (length <= 0) return 0.0f;
+        const float v2 = squared_norm(n, relative_velocity);
         return std::sqrt(v2) / std::max(std::sqrt(r2), length);
     }
 
@@ -188,7 +233,7 @@ struct Sling {
                       float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
         begin(run, ball, handle, h_total);
-        for (int step = 1; step < run.steps; ++step) take_step(run);
+        for (int step = 1; step < run.steps.count; ++step) take_step(run);
         finish(run, ball, impulse);
     }
 
@@ -208,14 +253,14 @@ struct Sling {
             VerletRun<Two> run_b(Two{});
             a.begin(run_a, ball_a, handle_a, h_a);
             b.begin(run_b, ball_b, handle_b, h_b);
-            const int together = std::min(run_a.steps, run_b.steps);
+            const int together = std::min(run_a.steps.count, run_b.steps.count);
             int step = 1;
             for (; step < together; ++step) {
                 a.take_step(run_a);
                 b.take_step(run_b);
             }
-            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a);
-            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b);
+            for (int s = step; s < run_a.steps.count; ++s) a.take_step(run_a);
+            for (int s = step; s < run_b.steps.count; ++s) b.take_step(run_b);
             a.finish(run_a, ball_a, impulse_a);
             b.finish(run_b, ball_b, impulse_b);
             return;
@@ -254,14 +299,7 @@ struct Sling {
         float drift[kCapacity];  // the next move without the string's pull: h·(v_d·D² − u) − r_low
         float kicks[kCapacity];  // Σ (h/2)·(string acceleration) over the half kicks, the string's Δv
         float path_velocity[kCapacity];  // the handle's, per effect axis
-        int steps = 0;           // 0: idle (the ball stays as it is), else the Verlet steps
-        float h = 0;
-        float half_h = 0;
-        float half_drag = 1;     // D
-        float drag_squared = 1;  // D²
-        float kick_gain = 0;     // (h/2)·(1 + D²): the two half kicks between steps, per acceleration
-        float move_pull = 0;     // h·kick_gain·k·L/m: the move's pull, over |r|
-        float move_rate = 0;     // h·kick_gain·k/m
+        SlingSteps steps{};  // count 0: idle (the ball stays as it is), else the Verlet steps
     };
 
     // The string's pull per unit mass and of r (a = pull·r), and the same scaled for the
@@ -276,7 +314,7 @@ struct Sling {
         // through r = 0.
         const bool taut = distance > length;
         pull = taut ? rate_length / distance - rate_squared : 0.0f;
-        move = taut ? run.move_pull / distance - run.move_rate : 0.0f;
+        move = taut ? run.steps.move_pull / distance - run.steps.move_rate : 0.0f;
     }
 
     template <typename Count>
@@ -292,8 +330,16 @@ struct Sling {
             run.path_velocity[i] = handle.velocity[a];
             relative[i] = run.v[i] - run.path_velocity[i];
         }
+        // The prediction starts where the catch-up ended: the pull finish worked out there.
+        const float r2 = squared_norm(n, run.r);
+        float pull;
+        if (r2 == end_r2) {
+            pull = end_pull;
+        } else {
+            pull = pull_at(r2);
+        }
         float acc[VerletRun<Count>::kCapacity];
-        acceleration(n, run.r, acc);
+        for (int i = 0; i < n; ++i) acc[i] = pull * run.r[i];
         // A ball at rest on a slack string beside a still handle stays exactly where it is
         // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
         // ball back as it was and mass·0).
@@ -306,37 +352,25 @@ struct Sling {
         // The steps the string's own rate asks for depend on the advance's length alone;
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
         // not a select, so that the processor predicts it and starts stepping without
-        // waiting for the turning rate's square roots and division, then the count's
-        // division, rounding and conversions (about a hundred cycles on the ball's chain).
-        // The same numbers either way: max(ω, turning) is ω.
-        const float omega = std::sqrt(rate_squared);
-        const int string_steps = step_count(omega, h_total);
-        const float string_h = h_total / static_cast<float>(string_steps);
-        const float turning = turning_rate(n, run.r, relative);
-        if (turning <= omega) [[likely]] {
-            run.steps = string_steps;
-            run.h = string_h;
+        // waiting for the turning rate's square roots and division. The same numbers either
+        // way: max(ω, turning) is ω.
+        const float turning = turning_rate(n, r2, relative);
+        if (turning <= rate) [[likely]] {
+            run.steps = string_steps(h_total);
         } else {
-            run.steps = step_count(std::max(omega, turning), h_total);
-            run.h = h_total / static_cast<float>(run.steps);
+            run.steps = steps_of(step_count(std::max(rate, turning), h_total), h_total);
         }
-        run.half_h = 0.5f * run.h;
-        run.half_drag = air_over_half_step(run.h);
-        run.drag_squared = run.half_drag * run.half_drag;
-        run.kick_gain = run.half_h * (1.0f + run.drag_squared);
-        const float move_gain = run.h * run.kick_gain;
-        run.move_pull = move_gain * rate_length;
-        run.move_rate = move_gain * rate_squared;
+        const SlingSteps& k = run.steps;
         // The first step's half kick and drift.
         for (int i = 0; i < n; ++i) {
-            const float kick = run.half_h * acc[i];
+            const float kick = k.half_h * acc[i];
             run.kicks[i] = kick;
-            run.v[i] = run.v[i] * run.half_drag + kick;
-            const float move = run.h * (run.v[i] - run.path_velocity[i]);
+            run.v[i] = run.v[i] * k.half_drag + kick;
+            const float move = k.h * (run.v[i] - run.path_velocity[i]);
             const float moved = run.r[i] + move;
             run.r_low[i] = (moved - run.r[i]) - move;
             run.r[i] = moved;
-            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
+            run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
     }
 
@@ -349,27 +383,29 @@ struct Sling {
         float pull;
         float move_pull;
         step_pulls(run, r2, pull, move_pull);
+        const SlingSteps& k = run.steps;
         for (int i = 0; i < n; ++i) {
             const float acc = pull * run.r[i];
-            run.kicks[i] += run.h * acc;  // two half kicks: h/2 is h·0.5 exactly
-            run.v[i] = run.v[i] * run.drag_squared + run.kick_gain * acc;
+            run.kicks[i] += k.h * acc;  // two half kicks: h/2 is h·0.5 exactly
+            run.v[i] = run.v[i] * k.drag_squared + k.kick_gain * acc;
             const float move = run.drift[i] + move_pull * run.r[i];
             const float moved = run.r[i] + move;
             run.r_low[i] = (moved - run.r[i]) - move;
             run.r[i] = moved;
-            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
+            run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
     }
 
     // The last step's second half kick and air.
     template <typename Count>
     [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
-        if (run.steps > 0) {
-            float acc[VerletRun<Count>::kCapacity];
-            acceleration(run.n, run.r, acc);
+        if (run.steps.count > 0) {
+            const SlingSteps& k = run.steps;
+            end_r2 = squared_norm(run.n, run.r);
+            end_pull = pull_at(end_r2);
             for (int i = 0; i < run.n; ++i) {
-                const float kick = run.half_h * acc[i];
-                run.v[i] = (run.v[i] + kick) * run.half_drag;
+                const float kick = k.half_h * (end_pull * run.r[i]);
+                run.v[i] = (run.v[i] + kick) * k.half_drag;
                 run.kicks[i] += kick;
             }
         }
@@ -385,9 +421,8 @@ struct Sling {
     void reaction(const BallMotion& ball, const DynamicContext&, float force[kMaxAxes]) const noexcept {
         float r[kMaxAxes] = {};
         for (int i = 0; i < count; ++i) r[i] = ball.offset[axes[i]];
-        float acc[kMaxAxes] = {};
-        acceleration(count, r, acc);
-        for (int i = 0; i < count; ++i) force[axes[i]] -= mass * acc[i];
+        const float pull = pull_at(squared_norm(count, r));
+        for (int i = 0; i < count; ++i) force[axes[i]] -= mass * (pull * r[i]);
     }
 };
 
@@ -433,7 +468,7 @@ void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult
         rest_sling(c, result);
         return;
     }
-    const Sling sling(*c.params, *c.config);
+    const Sling sling(c);
     ball_tick(sling, sling.axes, sling.count, c, force);
     report_ball(c.state->ball.now, c, sling.axes, sling.count, result);
     result.finished = false;
@@ -446,8 +481,8 @@ void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, float 
         sling_dynamic(b, force_b, result_b);
         return;
     }
-    const Sling sling_a(*a.params, *a.config);
-    const Sling sling_b(*b.params, *b.config);
+    const Sling sling_a(a);
+    const Sling sling_b(b);
     ball_tick_pair(sling_a, a, force_a, sling_b, b, force_b);
     report_ball(a.state->ball.now, a, sling_a.axes, sling_a.count, result_a);
     report_ball(b.state->ball.now, b, sling_b.axes, sling_b.count, result_b);
