@@ -33,16 +33,17 @@ struct BallMotion {
 };
 
 // Sling only: the constants of a run of Verlet steps over one advance (sling_dynamic.cpp's
-// Sling::VerletRun says what each is for).
+// Sling::VerletRun says what each is for). No initializers: a run's own are set before
+// they are read, and the form's are zeroed with the ball (BallState{}).
 struct SlingSteps {
-    int32_t count = 0;        // the steps
-    float h = 0;              // their length, s
-    float half_h = 0;         // h/2
-    float half_drag = 1;      // D = e^(−c·h/2m), the air over half a step
-    float drag_squared = 1;   // D²
-    float kick_gain = 0;      // (h/2)·(1 + D²)
-    float move_pull = 0;      // h·kick_gain·k·L/m
-    float move_rate = 0;      // h·kick_gain·k/m
+    int32_t count;       // the steps
+    float h;             // their length, s
+    float half_h;        // h/2
+    float half_drag;     // D = e^(−c·h/2m), the air over half a step
+    float drag_squared;  // D²
+    float kick_gain;     // (h/2)·(1 + D²)
+    float move_pull;     // h·kick_gain·k·L/m
+    float move_rate;     // h·kick_gain·k/m
 };
 
 // Sling only: its parameters in float, and the steps of an advance of advance_s seconds,

@@ -84,113 +84,112 @@ struct AxisCapacity<std::integral_constant<int, N>> {
     static constexpr int value = N;
 };
 
+// The sling's law in float, from its parameters (the form's steps are left as they were).
+void work_out_law(SlingForm& law, const SlotParams& p, const EngineConfig& config) noexcept {
+    const SlotDynamicBlock& d = *p.dynamic;
+    law.mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
+    const float stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
+    law.length = static_cast<float>(d.string_length);
+    law.drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
+    law.rate_squared = stiffness / law.mass;
+    law.rate_length = law.rate_squared * law.length;
+    law.rate = std::sqrt(law.rate_squared);
+}
+
+// −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass when taut, for |r|² = r2: the
+// string's pull on the ball per unit mass is this times r. L = 0: −k, smooth through r = 0.
+// The quotient is computed either way (inf or NaN at r = 0, then not used) so that the
+// choice is a select, not a branch on the step's chain that a string going slack and taut
+// would make the processor mispredict.
+float pull_at(const SlingForm& law, float r2) noexcept {
+    const float distance = std::sqrt(r2);
+    return distance > law.length ? law.rate_length / distance - law.rate_squared : 0.0f;
+}
+
+template <typename Count>
+float squared_norm(Count n, const float* r) noexcept {
+    float r2 = 0;
+    for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
+    return r2;
+}
+
+// Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
+// kMaxPhasePerStep rounded up, 1 to kMaxSteps (a NaN or infinite rate: kMaxSteps). The
+// rounding up is done by hand: ceilf is a library call on the Cortex-M4F.
+int step_count(float rate, float h_total) noexcept {
+    const float phase_steps = rate * h_total / kMaxPhasePerStep;
+    if (!(phase_steps < static_cast<float>(kMaxSteps))) return kMaxSteps;
+    const int whole = static_cast<int>(phase_steps);  // >= 0: rate and h_total are
+    return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
+}
+
+// The constants of `steps` Verlet steps over h_total seconds (Sling::VerletRun says what
+// each is for).
+void work_out_steps(SlingSteps& k, const SlingForm& law, int steps, float h_total) noexcept {
+    k.count = steps;
+    k.h = h_total / static_cast<float>(steps);
+    k.half_h = 0.5f * k.h;
+    k.half_drag = ball_decay(law.drag * k.h / (2.0f * law.mass));
+    k.drag_squared = k.half_drag * k.half_drag;
+    k.kick_gain = k.half_h * (1.0f + k.drag_squared);
+    const float move_gain = k.h * k.kick_gain;
+    k.move_pull = move_gain * law.rate_length;
+    k.move_rate = move_gain * law.rate_squared;
+}
+
+// The slot keeps the sling's form (BallState::sling) between ticks. Not in a build for
+// size (the Cortex-M4F image, whose flash is the tighter budget): there the Sling works the
+// law out each tick and keeps the steps for the tick only, in a form of its own; the same
+// operations on the same numbers, so the same bits.
+// Nor does it take the pull the catch-up ended with for the prediction's start
+// (Sling::end_pull), which it works out again.
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kSlotKeepsForm = false;
+constexpr bool kReusesEndPull = false;
+#else
+constexpr bool kSlotKeepsForm = true;
+constexpr bool kReusesEndPull = true;
+#endif
+
 struct Sling {
-    float mass = 1;          // m, force units per (position unit/s²)
-    float length = 0;        // L, position units
-    float drag = 0;          // c, force units per (position unit/s)
-    float rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
-    float rate_length = 0;   // ω²·L
-    float rate = 0;          // ω, rad/s
+    const SlotParams& params;
+    const EngineConfig& config;
+    DynamicState& state;      // the slot's: the ball, and the form (BallState::sling) once the ball is live
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
-    DynamicState& state;      // the slot's: the ball and, once it is live, the form (BallState::sling)
     // The string's pull at the end of the last advance and the squared distance it is for:
     // the prediction starts where the catch-up ended (ball_tick), at the same pull.
     mutable float end_r2 = std::numeric_limits<float>::quiet_NaN();
     mutable float end_pull = 0;
+#if defined(__OPTIMIZE_SIZE__)
+    mutable SlingForm own_form;  // the form, as the slot keeps none (kSlotKeepsForm)
+    SlingForm& form = own_form;
+#else
+    SlingForm& form;  // the slot's
+#endif
 
-    // The law from the slot's form, worked out from the parameters once per command
-    // (DynamicState::prepared) instead of every tick: four divisions and a square root. The
-    // form is the ball's, live from its first tick (ball_tick starts it), so that tick
-    // works the law out and the next keeps it.
-    Sling(const DynamicContext& c) noexcept : state(*c.state) {
-        const SlotParams& p = *c.params;
-        SlingForm& form = state.ball.sling;
-        if (state.initialized && state.prepared) {
-            mass = form.mass;
-            length = form.length;
-            drag = form.drag;
-            rate_squared = form.rate_squared;
-            rate_length = form.rate_length;
-            rate = form.rate;
-        } else {
-            const SlotDynamicBlock& d = *p.dynamic;
-            const EngineConfig& config = *c.config;
-            mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
-            const float stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
-            length = static_cast<float>(d.string_length);
-            drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
-            rate_squared = stiffness / mass;
-            rate_length = rate_squared * length;
-            rate = std::sqrt(rate_squared);
-            if (state.initialized) {
-                form.mass = mass;
-                form.length = length;
-                form.drag = drag;
-                form.rate_squared = rate_squared;
-                form.rate_length = rate_length;
-                form.rate = rate;
-                form.advance_s = 0;  // its steps are the old law's
-                state.prepared = true;
-            }
+    explicit Sling(const DynamicContext& c) noexcept
+#if defined(__OPTIMIZE_SIZE__)
+        : params(*c.params), config(*c.config), state(*c.state) {
+        work_out_law(own_form, params, config);
+#else
+        : params(*c.params), config(*c.config), state(*c.state), form(c.state->ball.sling) {
+#endif
+        count = params.axis_count;
+        for (int i = 0; i < count; ++i) axes[i] = axis_index(params.axes[i]);
+    }
+
+    // The law, kept in the slot's form from one command that sets the parameters to the
+    // next (DynamicState::prepared): four divisions and a square root a tick less. That
+    // form is the live ball's (ball_tick starts the ball before the sling advances or
+    // reacts).
+    [[gnu::always_inline]] inline const SlingForm& law() const noexcept {
+        if (kSlotKeepsForm && !state.prepared) {
+            work_out_law(form, params, config);
+            form.advance_s = 0;  // its steps were the old law's
+            state.prepared = true;
         }
-        count = p.axis_count;
-        for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
-    }
-
-    // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass when taut, for |r|² = r2: the
-    // string's pull on the ball per unit mass is this times r. L = 0: −k, smooth through
-    // r = 0. The quotient is computed either way (inf or NaN at r = 0, then not used) so
-    // that the choice is a select, not a branch on the step's chain that a string going
-    // slack and taut would make the processor mispredict.
-    float pull_at(float r2) const noexcept {
-        const float distance = std::sqrt(r2);
-        return distance > length ? rate_length / distance - rate_squared : 0.0f;
-    }
-
-    template <typename Count>
-    static float squared_norm(Count n, const float* r) noexcept {
-        float r2 = 0;
-        for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
-        return r2;
-    }
-
-    // Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
-    // kMaxPhasePerStep rounded up, 1 to kMaxSteps (a NaN or infinite rate: kMaxSteps). The
-    // rounding up is done by hand: ceilf is a library call on the Cortex-M4F.
-    static int step_count(float rate, float h_total) noexcept {
-        const float phase_steps = rate * h_total / kMaxPhasePerStep;
-        if (!(phase_steps < static_cast<float>(kMaxSteps))) return kMaxSteps;
-        const int whole = static_cast<int>(phase_steps);  // >= 0: rate and h_total are
-        return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
-    }
-
-    // The constants of `steps` Verlet steps over h_total seconds (VerletRun says what each is).
-    SlingSteps steps_of(int steps, float h_total) const noexcept {
-        SlingSteps k;
-        k.count = steps;
-        k.h = h_total / static_cast<float>(steps);
-        k.half_h = 0.5f * k.h;
-        k.half_drag = ball_decay(drag * k.h / (2.0f * mass));
-        k.drag_squared = k.half_drag * k.half_drag;
-        k.kick_gain = k.half_h * (1.0f + k.drag_squared);
-        const float move_gain = k.h * k.kick_gain;
-        k.move_pull = move_gain * rate_length;
-        k.move_rate = move_gain * rate_squared;
-        return k;
-    }
-
-    // The steps the string's own rate asks for over h_total seconds: they depend on the
-    // advance's length alone, so the form keeps them until the tick's length changes (at a
-    // fixed loop rate, never): a division, the air's exponential and the count's rounding
-    // a tick less. Only for a live ball (advance runs after ball_tick has started it).
-    [[gnu::always_inline]] inline const SlingSteps& string_steps(float h_total) const noexcept {
-        SlingForm& form = state.ball.sling;
-        if (form.advance_s != h_total) {
-            form.steps = steps_of(step_count(rate, h_total), h_total);
-            form.advance_s = h_total;
-        }
-        return form.steps;
+        return form;
     }
 
     // The ball's angular rate about the handle when the string is at its length, rad/s, for
@@ -198,10 +197,10 @@ struct Sling {
     // L = 0 the string is a linear spring, which Verlet integrates exactly in angle, and
     // only ω counts.
     template <typename Count>
-    float turning_rate(Count n, float r2, const float* relative_velocity) const noexcept {
-        if (length <= 0) return 0.0f;
+    static float turning_rate(const SlingForm& law, Count n, float r2, const float* relative_velocity) noexcept {
+        if (law.length <= 0) return 0.0f;
         const float v2 = squared_norm(n, relative_velocity);
-        return std::sqrt(v2) / std::max(std::sqrt(r2), length);
+        return std::sqrt(v2) / std::max(std::sqrt(r2), law.length);
     }
 
     // Hanging at the bobbin, at rest.
@@ -233,7 +232,7 @@ struct Sling {
                       float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
         begin(run, ball, handle, h_total);
-        for (int step = 1; step < run.steps.count; ++step) take_step(run);
+        for (int step = 1; step < run.steps; ++step) take_step(run);
         finish(run, ball, impulse);
     }
 
@@ -253,14 +252,14 @@ struct Sling {
             VerletRun<Two> run_b(Two{});
             a.begin(run_a, ball_a, handle_a, h_a);
             b.begin(run_b, ball_b, handle_b, h_b);
-            const int together = std::min(run_a.steps.count, run_b.steps.count);
+            const int together = std::min(run_a.steps, run_b.steps);
             int step = 1;
             for (; step < together; ++step) {
                 a.take_step(run_a);
                 b.take_step(run_b);
             }
-            for (int s = step; s < run_a.steps.count; ++s) a.take_step(run_a);
-            for (int s = step; s < run_b.steps.count; ++s) b.take_step(run_b);
+            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a);
+            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b);
             a.finish(run_a, ball_a, impulse_a);
             b.finish(run_b, ball_b, impulse_b);
             return;
@@ -299,7 +298,8 @@ struct Sling {
         float drift[kCapacity];  // the next move without the string's pull: h·(v_d·D² − u) − r_low
         float kicks[kCapacity];  // Σ (h/2)·(string acceleration) over the half kicks, the string's Δv
         float path_velocity[kCapacity];  // the handle's, per effect axis
-        SlingSteps steps{};  // count 0: idle (the ball stays as it is), else the Verlet steps
+        const SlingForm* form = nullptr;  // the string's law and the steps' constants (Sling::law)
+        int steps = 0;                    // 0: idle (the ball stays as it is), else the Verlet steps
     };
 
     // The string's pull per unit mass and of r (a = pull·r), and the same scaled for the
@@ -312,9 +312,10 @@ struct Sling {
         // that the choice is a select, not a branch on the step's chain that a string going
         // slack and taut would make the processor mispredict. L = 0: pull = −k/m, smooth
         // through r = 0.
-        const bool taut = distance > length;
-        pull = taut ? rate_length / distance - rate_squared : 0.0f;
-        move = taut ? run.steps.move_pull / distance - run.steps.move_rate : 0.0f;
+        const SlingForm& law = *run.form;
+        const bool taut = distance > law.length;
+        pull = taut ? law.rate_length / distance - law.rate_squared : 0.0f;
+        move = taut ? run.form->steps.move_pull / distance - run.form->steps.move_rate : 0.0f;
     }
 
     template <typename Count>
@@ -330,13 +331,15 @@ struct Sling {
             run.path_velocity[i] = handle.velocity[a];
             relative[i] = run.v[i] - run.path_velocity[i];
         }
+        const SlingForm& law = this->law();
+        run.form = &law;
         // The prediction starts where the catch-up ended: the pull finish worked out there.
         const float r2 = squared_norm(n, run.r);
         float pull;
-        if (r2 == end_r2) {
+        if (kReusesEndPull && r2 == end_r2) {
             pull = end_pull;
         } else {
-            pull = pull_at(r2);
+            pull = pull_at(law, r2);
         }
         float acc[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) acc[i] = pull * run.r[i];
@@ -354,13 +357,18 @@ struct Sling {
         // not a select, so that the processor predicts it and starts stepping without
         // waiting for the turning rate's square roots and division. The same numbers either
         // way: max(ω, turning) is ω.
-        const float turning = turning_rate(n, r2, relative);
-        if (turning <= rate) [[likely]] {
-            run.steps = string_steps(h_total);
-        } else {
-            run.steps = steps_of(step_count(std::max(rate, turning), h_total), h_total);
+        // They are kept in the form until the tick's length changes (at a fixed loop rate,
+        // never): a division, the air's exponential and the count's rounding a tick less.
+        // A ball turning faster has steps of its own for this advance, worked out in the
+        // form's place and not kept.
+        const float turning = turning_rate(law, n, r2, relative);
+        const bool turns_faster = !(turning <= law.rate);
+        if (turns_faster || form.advance_s != h_total) [[unlikely]] {
+            work_out_steps(form.steps, law, step_count(std::max(law.rate, turning), h_total), h_total);
+            form.advance_s = turns_faster ? 0.0f : h_total;
         }
-        const SlingSteps& k = run.steps;
+        const SlingSteps& k = form.steps;
+        run.steps = k.count;
         // The first step's half kick and drift.
         for (int i = 0; i < n; ++i) {
             const float kick = k.half_h * acc[i];
@@ -383,7 +391,7 @@ struct Sling {
         float pull;
         float move_pull;
         step_pulls(run, r2, pull, move_pull);
-        const SlingSteps& k = run.steps;
+        const SlingSteps& k = run.form->steps;
         for (int i = 0; i < n; ++i) {
             const float acc = pull * run.r[i];
             run.kicks[i] += k.h * acc;  // two half kicks: h/2 is h·0.5 exactly
@@ -399,12 +407,16 @@ struct Sling {
     // The last step's second half kick and air.
     template <typename Count>
     [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
-        if (run.steps.count > 0) {
-            const SlingSteps& k = run.steps;
-            end_r2 = squared_norm(run.n, run.r);
-            end_pull = pull_at(end_r2);
+        if (run.steps > 0) {
+            const SlingSteps& k = run.form->steps;
+            const float r2 = squared_norm(run.n, run.r);
+            const float pull = pull_at(*run.form, r2);
+            if (kReusesEndPull) {
+                end_r2 = r2;
+                end_pull = pull;
+            }
             for (int i = 0; i < run.n; ++i) {
-                const float kick = k.half_h * (end_pull * run.r[i]);
+                const float kick = k.half_h * (pull * run.r[i]);
                 run.v[i] = (run.v[i] + kick) * k.half_drag;
                 run.kicks[i] += kick;
             }
@@ -412,7 +424,7 @@ struct Sling {
         for (int i = 0; i < run.n; ++i) {
             ball.offset[axes[i]] = run.r[i];
             ball.velocity[axes[i]] = run.v[i];
-            impulse[axes[i]] = mass * run.kicks[i];
+            impulse[axes[i]] = run.form->mass * run.kicks[i];
         }
     }
 
@@ -421,8 +433,9 @@ struct Sling {
     void reaction(const BallMotion& ball, const DynamicContext&, float force[kMaxAxes]) const noexcept {
         float r[kMaxAxes] = {};
         for (int i = 0; i < count; ++i) r[i] = ball.offset[axes[i]];
-        const float pull = pull_at(squared_norm(count, r));
-        for (int i = 0; i < count; ++i) force[axes[i]] -= mass * (pull * r[i]);
+        const SlingForm& law = this->law();
+        const float pull = pull_at(law, squared_norm(count, r));
+        for (int i = 0; i < count; ++i) force[axes[i]] -= law.mass * (pull * r[i]);
     }
 };
 
