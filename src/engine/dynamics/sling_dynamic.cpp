@@ -56,7 +56,9 @@
 //
 // Real-time safe: no allocation; at most kMaxSteps steps per tick.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -346,9 +348,13 @@ struct Sling {
         // A ball at rest on a slack string beside a still handle stays exactly where it is
         // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
         // ball back as it was and mass·0).
-        bool idle = true;
-        for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && acc[i] == 0;
-        if (idle) {
+        // All of them ±0: their bits ORed, the sign shifted out (a NaN is not 0, as for ==).
+        uint32_t bits = 0;
+        for (int i = 0; i < n; ++i) {
+            bits |= std::bit_cast<uint32_t>(run.v[i]) | std::bit_cast<uint32_t>(run.path_velocity[i]) |
+                    std::bit_cast<uint32_t>(acc[i]);
+        }
+        if (bits << 1 == 0) {
             for (int i = 0; i < n; ++i) run.kicks[i] = 0;
             return;
         }
