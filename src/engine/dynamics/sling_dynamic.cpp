@@ -495,7 +495,9 @@ void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult
 
 void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
                         float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
-    if (sling_rests(a) || sling_rests(b)) {  // nothing to overlap
+    // A resting b has nothing to overlap. A resting a (the engine asks before pairing)
+    // takes its two idle advances beside b's, which leave what its short way does.
+    if (sling_rests(b)) {
         sling_dynamic(a, force_a, result_a);
         sling_dynamic(b, force_b, result_b);
         return;
