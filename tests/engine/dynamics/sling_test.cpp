@@ -375,7 +375,7 @@ TEST(Sling, TheOrderOfTheAxesDoesNotMatter) {
 // pull and report exactly as each rendered alone: a sling's ball knows nothing of another.
 // Different strings (different step counts), one axis beside two, a start a few ticks
 // later, stalls and repeated timestamps, and stretches of a still handle where a ball left
-// at rest takes the short way.
+// at rest takes the short way alone, and its idle advances beside a swinging one.
 TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
     struct Case {
         EffectParams a, b;
@@ -384,7 +384,10 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
     one_axis.axis_count = 1;
     const Case cases[] = {{sling_params(2000, 1500, 3000, 500), sling_params(2000, 1500, 3000, 500)},
                           {sling_params(500, 0, 10000, 0), sling_params(9000, 2500, 1000, 3000)},
-                          {one_axis, sling_params(4000, 1200, 6000, 100)}};
+                          {one_axis, sling_params(4000, 1200, 6000, 100)},
+                          // a's string longer than the hand's reach: its ball never moves, and
+                          // rests whenever the hand holds still while b swings on
+                          {sling_params(2000, 10000, 3000, 500), sling_params(2000, 1500, 3000, 500)}};
     const EngineConfig config{};
     for (const Case& k : cases) {
         const detail::SlotDynamicBlock block_a = detail::slot_dynamic_block(k.a);
