@@ -362,11 +362,10 @@ struct Sling {
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
         // not a select, so that the processor predicts it and starts stepping without
         // waiting for the turning rate's square roots and division. The same numbers either
-        // way: max(ω, turning) is ω.
-        // They are kept in the form until the tick's length changes (at a fixed loop rate,
-        // never): a division, the air's exponential and the count's rounding a tick less.
-        // A ball turning faster has steps of its own for this advance, worked out in the
-        // form's place and not kept.
+        // way: max(ω, turning) is ω. The form keeps them until the tick's length changes (at
+        // a fixed loop rate, never): a division, the air's exponential and the count's
+        // rounding a tick less. A ball turning faster has steps of its own for this
+        // advance, worked out in the form's place and not kept.
         const float turning = turning_rate(law, n, r2, relative);
         const bool turns_faster = !(turning <= law.rate);
         if (turns_faster || form.advance_s != h_total) [[unlikely]] {
