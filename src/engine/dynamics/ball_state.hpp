@@ -11,6 +11,8 @@
 // 10000 units: 2^-10 of a unit), not of where on the travel the handle happens to be.
 #pragma once
 
+#include <cstdint>
+
 #include "feel/axis.hpp"
 
 namespace feel::detail {
@@ -30,6 +32,34 @@ struct BallMotion {
     float contact_s = 0;
 };
 
+// Sling only: the constants of a run of Verlet steps over one advance (sling_dynamic.cpp's
+// Sling::VerletRun says what each is for). No initializers: a run's own are set before
+// they are read, and the form's are zeroed with the ball (BallState{}).
+struct SlingSteps {
+    int32_t count;       // the steps
+    float h;             // their length, s
+    float half_h;        // h/2
+    float half_drag;     // D = e^(−c·h/2m), the air over half a step
+    float drag_squared;  // D²
+    float kick_gain;     // (h/2)·(1 + D²)
+    float move_pull;     // h·kick_gain·k·L/m
+    float move_rate;     // h·kick_gain·k/m
+};
+
+// Sling only: its parameters in float, and the steps of an advance of advance_s seconds,
+// worked out again when the parameters change (DynamicState::prepared) or the tick's length
+// does, not every tick (sling_dynamic.cpp).
+struct SlingForm {
+    float advance_s = 0;     // the advance steps is for; 0: none yet
+    float mass = 1;          // m
+    float length = 0;        // L
+    float drag = 0;          // c
+    float rate_squared = 0;  // ω² = k/m
+    float rate_length = 0;   // ω²·L
+    float rate = 0;          // ω
+    SlingSteps steps{};
+};
+
 struct BallState {
     BallMotion now{};  // at the current tick
     // The handle at the current tick, per device axis: where the sensor saw it (position
@@ -37,6 +67,7 @@ struct BallState {
     // advances the ball from here.
     float handle[kMaxAxes] = {};
     float handle_velocity[kMaxAxes] = {};
+    SlingForm sling{};  // the sling's constants (the paddle keeps none)
 };
 
 }  // namespace feel::detail

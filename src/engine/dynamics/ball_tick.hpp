@@ -98,6 +98,7 @@ bool ball_catch_up_path(const Model& model, const int* axes, int count, const Dy
     step = std::min(dt, kBallMaxAdvanceS);  // how far the ball advances
     if (!c.state->initialized) {
         c.state->ball = BallState{};  // the union member (DynamicState) begins here
+        c.state->prepared = false;    // with a sling's form (BallState::sling) zeroed
         model.start(ball.now, c);
         c.state->initialized = true;
         return false;

@@ -26,8 +26,8 @@ struct DynamicState {
     DynamicState() noexcept : law{} {}  // the union's first member live; every other field as declared
 
     bool initialized = false;  // the first playing tick sets up the mass
-    // The slot's parameters are worked into its per-tick form (ControlLawState::laws);
-    // prepare_slot clears it after every command that sets them.
+    // The slot's parameters are worked into its per-tick form (ControlLawState::laws, a
+    // sling's BallState::sling); prepare_slot clears it after every command that sets them.
     bool prepared = false;
     // Every axis's law is plain (PreparedTether::plain), set with prepared: the tick takes
     // the short way (control_law_dynamic.cpp).

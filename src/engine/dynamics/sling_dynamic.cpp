@@ -56,7 +56,10 @@
 //
 // Real-time safe: no allocation; at most kMaxSteps steps per tick.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "dynamics/ball_tick.hpp"
@@ -83,80 +86,123 @@ struct AxisCapacity<std::integral_constant<int, N>> {
     static constexpr int value = N;
 };
 
+// The sling's law in float, from its parameters (the form's steps are left as they were).
+void work_out_law(SlingForm& law, const SlotParams& p, const EngineConfig& config) noexcept {
+    const SlotDynamicBlock& d = *p.dynamic;
+    law.mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
+    const float stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
+    law.length = static_cast<float>(d.string_length);
+    law.drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
+    law.rate_squared = stiffness / law.mass;
+    law.rate_length = law.rate_squared * law.length;
+    law.rate = std::sqrt(law.rate_squared);
+}
+
+// −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass when taut, for |r|² = r2: the
+// string's pull on the ball per unit mass is this times r. L = 0: −k, smooth through r = 0.
+// The quotient is computed either way (inf or NaN at r = 0, then not used) so that the
+// choice is a select, not a branch on the step's chain that a string going slack and taut
+// would make the processor mispredict.
+float pull_at(const SlingForm& law, float r2) noexcept {
+    const float distance = std::sqrt(r2);
+    return distance > law.length ? law.rate_length / distance - law.rate_squared : 0.0f;
+}
+
+template <typename Count>
+float squared_norm(Count n, const float* r) noexcept {
+    float r2 = 0;
+    for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
+    return r2;
+}
+
+// Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
+// kMaxPhasePerStep rounded up, 1 to kMaxSteps (a NaN or infinite rate: kMaxSteps). The
+// rounding up is done by hand: ceilf is a library call on the Cortex-M4F.
+int step_count(float rate, float h_total) noexcept {
+    const float phase_steps = rate * h_total / kMaxPhasePerStep;
+    if (!(phase_steps < static_cast<float>(kMaxSteps))) return kMaxSteps;
+    const int whole = static_cast<int>(phase_steps);  // >= 0: rate and h_total are
+    return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
+}
+
+// The constants of `steps` Verlet steps over h_total seconds (Sling::VerletRun says what
+// each is for).
+void work_out_steps(SlingSteps& k, const SlingForm& law, int steps, float h_total) noexcept {
+    k.count = steps;
+    k.h = h_total / static_cast<float>(steps);
+    k.half_h = 0.5f * k.h;
+    k.half_drag = ball_decay(law.drag * k.h / (2.0f * law.mass));
+    k.drag_squared = k.half_drag * k.half_drag;
+    k.kick_gain = k.half_h * (1.0f + k.drag_squared);
+    const float move_gain = k.h * k.kick_gain;
+    k.move_pull = move_gain * law.rate_length;
+    k.move_rate = move_gain * law.rate_squared;
+}
+
+// The slot keeps the sling's form (BallState::sling) between ticks. Not in a build for
+// size (the Cortex-M4F image, whose flash is the tighter budget): there the Sling works the
+// law out each tick and keeps the steps for the tick only, in a form of its own; the same
+// operations on the same numbers, so the same bits.
+// Nor does it take the pull the catch-up ended with for the prediction's start
+// (Sling::end_pull), which it works out again.
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kSlotKeepsForm = false;
+constexpr bool kReusesEndPull = false;
+#else
+constexpr bool kSlotKeepsForm = true;
+constexpr bool kReusesEndPull = true;
+#endif
+
 struct Sling {
-    float mass = 1;          // m, force units per (position unit/s²)
-    float stiffness = 0;     // k, force units per position unit
-    float length = 0;        // L, position units
-    float drag = 0;          // c, force units per (position unit/s)
-    float rate_squared = 0;  // ω² = k/m, the string's radial rate squared: its pull per unit mass and stretch
-    float rate_length = 0;   // ω²·L
+    const SlotParams& params;
+    const EngineConfig& config;
+    DynamicState& state;      // the slot's: the ball, and the form (BallState::sling) once the ball is live
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
-    mutable float air_step_s = -1;  // the step length air_factor is for (air_over_half_step)
-    mutable float air_factor = 1;
+    // The string's pull at the end of the last advance and the squared distance it is for:
+    // the prediction starts where the catch-up ended (ball_tick), at the same pull.
+    mutable float end_r2 = std::numeric_limits<float>::quiet_NaN();
+    mutable float end_pull = 0;
+#if defined(__OPTIMIZE_SIZE__)
+    mutable SlingForm own_form;  // the form, as the slot keeps none (kSlotKeepsForm)
+    SlingForm& form = own_form;
+#else
+    SlingForm& form;  // the slot's
+#endif
 
-    Sling(const SlotParams& p, const EngineConfig& config) noexcept {
-        const SlotDynamicBlock& d = *p.dynamic;
-        mass = ball_scale(d.ball_mass, config.dynamic_mass_ref);
-        stiffness = ball_scale(d.string_compliance, config.dynamic_stiffness_ref);
-        length = static_cast<float>(d.string_length);
-        drag = ball_scale(d.ball_damping, config.dynamic_damping_ref);
-        rate_squared = stiffness / mass;
-        rate_length = rate_squared * length;
-        count = p.axis_count;
-        for (int i = 0; i < p.axis_count; ++i) axes[i] = axis_index(p.axes[i]);
+    explicit Sling(const DynamicContext& c) noexcept
+#if defined(__OPTIMIZE_SIZE__)
+        : params(*c.params), config(*c.config), state(*c.state) {
+        work_out_law(own_form, params, config);
+#else
+        : params(*c.params), config(*c.config), state(*c.state), form(c.state->ball.sling) {
+#endif
+        count = params.axis_count;
+        for (int i = 0; i < count; ++i) axes[i] = axis_index(params.axes[i]);
     }
 
-    // e^(−c·h/2m), what the air leaves of the velocity over half a step of h seconds. The
-    // catch-up and the prediction of a tick mostly take steps of the same length: the
-    // exponential of the last length asked is kept (the Sling lives for one tick).
-    float air_over_half_step(float h) const noexcept {
-        if (h != air_step_s) {
-            air_step_s = h;
-            air_factor = ball_decay(drag * h / (2.0f * mass));
+    // The law, kept in the slot's form from one command that sets the parameters to the
+    // next (DynamicState::prepared): four divisions and a square root a tick less. That
+    // form is the live ball's (ball_tick starts the ball before the sling advances or
+    // reacts).
+    [[gnu::always_inline]] inline const SlingForm& law() const noexcept {
+        if (kSlotKeepsForm && !state.prepared) {
+            work_out_law(form, params, config);
+            form.advance_s = 0;  // its steps were the old law's
+            state.prepared = true;
         }
-        return air_factor;
+        return form;
     }
 
-    // The string's pull on the ball per unit mass, for r = ball − handle (per effect axis).
-    // Count is the number of the effect's axes: an int, or a compile-time constant for the
-    // common two (advance says why).
+    // The ball's angular rate about the handle when the string is at its length, rad/s, for
+    // |r|² = r2: what the steps must resolve besides the string's own radial rate. With
+    // L = 0 the string is a linear spring, which Verlet integrates exactly in angle, and
+    // only ω counts.
     template <typename Count>
-    void acceleration(Count n, const float* r, float* a) const noexcept {
-        float r2 = 0;
-        for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
-        const float distance = std::sqrt(r2);
-        // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass, when taut. L = 0: −k·r,
-        // smooth through r = 0. The quotient is computed either way (inf or NaN at r = 0, then not used) so that the
-        // choice is a select, not a branch on the step's chain that a string going slack
-        // and taut would make the processor mispredict.
-        const float pull = distance > length ? rate_length / distance - rate_squared : 0.0f;
-        for (int i = 0; i < n; ++i) a[i] = pull * r[i];
-    }
-
-    // Verlet steps over h_total seconds for the fastest rate in play, rad/s: the phase over
-    // kMaxPhasePerStep rounded up, 1 to kMaxSteps (a NaN or infinite rate: kMaxSteps). The
-    // rounding up is done by hand: ceilf is a library call on the Cortex-M4F.
-    static int step_count(float rate, float h_total) noexcept {
-        const float phase_steps = rate * h_total / kMaxPhasePerStep;
-        if (!(phase_steps < static_cast<float>(kMaxSteps))) return kMaxSteps;
-        const int whole = static_cast<int>(phase_steps);  // >= 0: rate and h_total are
-        return std::max(1, whole + (static_cast<float>(whole) < phase_steps ? 1 : 0));
-    }
-
-    // The ball's angular rate about the handle when the string is at its length, rad/s:
-    // what the steps must resolve besides the string's own radial rate. With L = 0 the
-    // string is a linear spring, which Verlet integrates exactly in angle, and only ω counts.
-    template <typename Count>
-    float turning_rate(Count n, const float* r, const float* relative_velocity) const noexcept {
-        if (length <= 0) return 0.0f;
-        float r2 = 0;
-        float v2 = 0;
-        for (int i = 0; i < n; ++i) {
-            r2 += r[i] * r[i];
-            v2 += relative_velocity[i] * relative_velocity[i];
-        }
-        return std::sqrt(v2) / std::max(std::sqrt(r2), length);
+    static float turning_rate(const SlingForm& law, Count n, float r2, const float* relative_velocity) noexcept {
+        if (law.length <= 0) return 0.0f;
+        const float v2 = squared_norm(n, relative_velocity);
+        return std::sqrt(v2) / std::max(std::sqrt(r2), law.length);
     }
 
     // Hanging at the bobbin, at rest.
@@ -254,14 +300,8 @@ struct Sling {
         float drift[kCapacity];  // the next move without the string's pull: h·(v_d·D² − u) − r_low
         float kicks[kCapacity];  // Σ (h/2)·(string acceleration) over the half kicks, the string's Δv
         float path_velocity[kCapacity];  // the handle's, per effect axis
-        int steps = 0;           // 0: idle (the ball stays as it is), else the Verlet steps
-        float h = 0;
-        float half_h = 0;
-        float half_drag = 1;     // D
-        float drag_squared = 1;  // D²
-        float kick_gain = 0;     // (h/2)·(1 + D²): the two half kicks between steps, per acceleration
-        float move_pull = 0;     // h·kick_gain·k·L/m: the move's pull, over |r|
-        float move_rate = 0;     // h·kick_gain·k/m
+        const SlingForm* form = nullptr;  // the string's law and the steps' constants (Sling::law)
+        int steps = 0;                    // 0: idle (the ball stays as it is), else the Verlet steps
     };
 
     // The string's pull per unit mass and of r (a = pull·r), and the same scaled for the
@@ -274,9 +314,10 @@ struct Sling {
         // that the choice is a select, not a branch on the step's chain that a string going
         // slack and taut would make the processor mispredict. L = 0: pull = −k/m, smooth
         // through r = 0.
-        const bool taut = distance > length;
-        pull = taut ? rate_length / distance - rate_squared : 0.0f;
-        move = taut ? run.move_pull / distance - run.move_rate : 0.0f;
+        const SlingForm& law = *run.form;
+        const bool taut = distance > law.length;
+        pull = taut ? law.rate_length / distance - law.rate_squared : 0.0f;
+        move = taut ? run.form->steps.move_pull / distance - run.form->steps.move_rate : 0.0f;
     }
 
     template <typename Count>
@@ -292,51 +333,57 @@ struct Sling {
             run.path_velocity[i] = handle.velocity[a];
             relative[i] = run.v[i] - run.path_velocity[i];
         }
+        const SlingForm& law = this->law();
+        run.form = &law;
+        // The prediction starts where the catch-up ended: the pull finish worked out there.
+        const float r2 = squared_norm(n, run.r);
+        float pull;
+        if (kReusesEndPull && r2 == end_r2) {
+            pull = end_pull;
+        } else {
+            pull = pull_at(law, r2);
+        }
         float acc[VerletRun<Count>::kCapacity];
-        acceleration(n, run.r, acc);
+        for (int i = 0; i < n; ++i) acc[i] = pull * run.r[i];
         // A ball at rest on a slack string beside a still handle stays exactly where it is
         // (every Verlet step maps it to itself): no steps, no impulse (finish writes the
         // ball back as it was and mass·0).
-        bool idle = true;
-        for (int i = 0; i < n; ++i) idle = idle && run.v[i] == 0 && run.path_velocity[i] == 0 && acc[i] == 0;
-        if (idle) {
+        // All of them ±0: their bits ORed, the sign shifted out (a NaN is not 0, as for ==).
+        uint32_t bits = 0;
+        for (int i = 0; i < n; ++i) {
+            bits |= std::bit_cast<uint32_t>(run.v[i]) | std::bit_cast<uint32_t>(run.path_velocity[i]) |
+                    std::bit_cast<uint32_t>(acc[i]);
+        }
+        if (bits << 1 == 0) {
             for (int i = 0; i < n; ++i) run.kicks[i] = 0;
             return;
         }
         // The steps the string's own rate asks for depend on the advance's length alone;
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
         // not a select, so that the processor predicts it and starts stepping without
-        // waiting for the turning rate's square roots and division, then the count's
-        // division, rounding and conversions (about a hundred cycles on the ball's chain).
-        // The same numbers either way: max(ω, turning) is ω.
-        const float omega = std::sqrt(rate_squared);
-        const int string_steps = step_count(omega, h_total);
-        const float string_h = h_total / static_cast<float>(string_steps);
-        const float turning = turning_rate(n, run.r, relative);
-        if (turning <= omega) [[likely]] {
-            run.steps = string_steps;
-            run.h = string_h;
-        } else {
-            run.steps = step_count(std::max(omega, turning), h_total);
-            run.h = h_total / static_cast<float>(run.steps);
+        // waiting for the turning rate's square roots and division. The same numbers either
+        // way: max(ω, turning) is ω. The form keeps them until the tick's length changes (at
+        // a fixed loop rate, never): a division, the air's exponential and the count's
+        // rounding a tick less. A ball turning faster has steps of its own for this
+        // advance, worked out in the form's place and not kept.
+        const float turning = turning_rate(law, n, r2, relative);
+        const bool turns_faster = !(turning <= law.rate);
+        if (turns_faster || form.advance_s != h_total) [[unlikely]] {
+            work_out_steps(form.steps, law, step_count(std::max(law.rate, turning), h_total), h_total);
+            form.advance_s = turns_faster ? 0.0f : h_total;
         }
-        run.half_h = 0.5f * run.h;
-        run.half_drag = air_over_half_step(run.h);
-        run.drag_squared = run.half_drag * run.half_drag;
-        run.kick_gain = run.half_h * (1.0f + run.drag_squared);
-        const float move_gain = run.h * run.kick_gain;
-        run.move_pull = move_gain * rate_length;
-        run.move_rate = move_gain * rate_squared;
+        const SlingSteps& k = form.steps;
+        run.steps = k.count;
         // The first step's half kick and drift.
         for (int i = 0; i < n; ++i) {
-            const float kick = run.half_h * acc[i];
+            const float kick = k.half_h * acc[i];
             run.kicks[i] = kick;
-            run.v[i] = run.v[i] * run.half_drag + kick;
-            const float move = run.h * (run.v[i] - run.path_velocity[i]);
+            run.v[i] = run.v[i] * k.half_drag + kick;
+            const float move = k.h * (run.v[i] - run.path_velocity[i]);
             const float moved = run.r[i] + move;
             run.r_low[i] = (moved - run.r[i]) - move;
             run.r[i] = moved;
-            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
+            run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
     }
 
@@ -349,15 +396,16 @@ struct Sling {
         float pull;
         float move_pull;
         step_pulls(run, r2, pull, move_pull);
+        const SlingSteps& k = run.form->steps;
         for (int i = 0; i < n; ++i) {
             const float acc = pull * run.r[i];
-            run.kicks[i] += run.h * acc;  // two half kicks: h/2 is h·0.5 exactly
-            run.v[i] = run.v[i] * run.drag_squared + run.kick_gain * acc;
+            run.kicks[i] += k.h * acc;  // two half kicks: h/2 is h·0.5 exactly
+            run.v[i] = run.v[i] * k.drag_squared + k.kick_gain * acc;
             const float move = run.drift[i] + move_pull * run.r[i];
             const float moved = run.r[i] + move;
             run.r_low[i] = (moved - run.r[i]) - move;
             run.r[i] = moved;
-            run.drift[i] = run.h * (run.v[i] * run.drag_squared - run.path_velocity[i]) - run.r_low[i];
+            run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
     }
 
@@ -365,18 +413,23 @@ struct Sling {
     template <typename Count>
     [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
         if (run.steps > 0) {
-            float acc[VerletRun<Count>::kCapacity];
-            acceleration(run.n, run.r, acc);
+            const SlingSteps& k = run.form->steps;
+            const float r2 = squared_norm(run.n, run.r);
+            const float pull = pull_at(*run.form, r2);
+            if (kReusesEndPull) {
+                end_r2 = r2;
+                end_pull = pull;
+            }
             for (int i = 0; i < run.n; ++i) {
-                const float kick = run.half_h * acc[i];
-                run.v[i] = (run.v[i] + kick) * run.half_drag;
+                const float kick = k.half_h * (pull * run.r[i]);
+                run.v[i] = (run.v[i] + kick) * k.half_drag;
                 run.kicks[i] += kick;
             }
         }
         for (int i = 0; i < run.n; ++i) {
             ball.offset[axes[i]] = run.r[i];
             ball.velocity[axes[i]] = run.v[i];
-            impulse[axes[i]] = mass * run.kicks[i];
+            impulse[axes[i]] = run.form->mass * run.kicks[i];
         }
     }
 
@@ -385,9 +438,9 @@ struct Sling {
     void reaction(const BallMotion& ball, const DynamicContext&, float force[kMaxAxes]) const noexcept {
         float r[kMaxAxes] = {};
         for (int i = 0; i < count; ++i) r[i] = ball.offset[axes[i]];
-        float acc[kMaxAxes] = {};
-        acceleration(count, r, acc);
-        for (int i = 0; i < count; ++i) force[axes[i]] -= mass * acc[i];
+        const SlingForm& law = this->law();
+        const float pull = pull_at(law, squared_norm(count, r));
+        for (int i = 0; i < count; ++i) force[axes[i]] -= law.mass * (pull * r[i]);
     }
 };
 
@@ -433,7 +486,7 @@ void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult
         rest_sling(c, result);
         return;
     }
-    const Sling sling(*c.params, *c.config);
+    const Sling sling(c);
     ball_tick(sling, sling.axes, sling.count, c, force);
     report_ball(c.state->ball.now, c, sling.axes, sling.count, result);
     result.finished = false;
@@ -441,13 +494,15 @@ void sling_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult
 
 void sling_pair_dynamic(const DynamicContext& a, const DynamicContext& b, float force_a[kMaxAxes],
                         float force_b[kMaxAxes], DynamicResult& result_a, DynamicResult& result_b) noexcept {
-    if (sling_rests(a) || sling_rests(b)) {  // nothing to overlap
+    // A resting b has nothing to overlap. A resting a (the engine asks before pairing)
+    // takes its two idle advances beside b's, which leave what its short way does.
+    if (sling_rests(b)) {
         sling_dynamic(a, force_a, result_a);
         sling_dynamic(b, force_b, result_b);
         return;
     }
-    const Sling sling_a(*a.params, *a.config);
-    const Sling sling_b(*b.params, *b.config);
+    const Sling sling_a(a);
+    const Sling sling_b(b);
     ball_tick_pair(sling_a, a, force_a, sling_b, b, force_b);
     report_ball(a.state->ball.now, a, sling_a.axes, sling_a.count, result_a);
     report_ball(b.state->ball.now, b, sling_b.axes, sling_b.count, result_b);

@@ -93,6 +93,42 @@ TEST(Sling, ATautStringPullsTheHandleTowardTheBall) {
     }
 }
 
+// Engine::update of a playing sling's string, without restart: the ball stays where it is
+// and the next tick pulls as the new string does (the sling keeps its law worked out
+// between ticks, so the update must reach it). A heavy ball on a soft string (ω = 21 rad/s)
+// stays within a few units of where it hung while the handle, moved 3000 units off, holds
+// still: the pull is k·(3000 − L) toward it, within the ball's fall of k·s/m·t²/2.
+TEST(Sling, AStringUpdatedWhileItPullsPullsAsTheNewString) {
+    const EngineConfig config{};
+    Engine engine(config);
+    EffectParams p = sling_params(10000, 1000, 1000, 0);
+    const CreateResult created = engine.create(p);
+    ASSERT_TRUE(created.error.ok());
+    ASSERT_TRUE(engine.start(created.id).ok());
+    int64_t t_us = 0;
+    const auto force_x = [&](float x) {
+        TickInput in;
+        in.t_us = t_us;
+        in.position[0] = x;
+        TickOutput out;
+        engine.tick(in, out);
+        t_us += 1000;
+        return static_cast<double>(out.force[0]);
+    };
+    force_x(0);
+    force_x(3000);  // the jump: its prediction has the handle going on at 3000 units a tick
+    const double k = scaled(p.dynamic.string_compliance, config.dynamic_stiffness_ref);
+    EXPECT_NEAR(force_x(3000), -k * (3000 - 1000), 0.01 * k * 2000);
+    p.dynamic.string_length = 2000;
+    ASSERT_TRUE(engine.update(created.id, p, effect_field::kTypeSpecific, false).ok());
+    EXPECT_NEAR(force_x(3000), -k * (3000 - 2000), 0.01 * k * 1000);
+    p.dynamic.string_compliance = 3000;
+    ASSERT_TRUE(engine.update(created.id, p, effect_field::kTypeSpecific, false).ok());
+    const double stiffer = scaled(p.dynamic.string_compliance, config.dynamic_stiffness_ref);
+    EXPECT_NEAR(force_x(3000), -stiffer * (3000 - 2000), 0.01 * stiffer * 1000);
+    EXPECT_EQ(engine.state(created.id), EffectState::playing);
+}
+
 // A ball circling a still handle at speed u on radius R with k·(R − L) = m·u²/R.
 double orbit_radius(const SlingPhysics& s, double u) {
     return (s.L + std::sqrt(s.L * s.L + 4 * s.m * u * u / s.k)) / 2;
@@ -339,7 +375,7 @@ TEST(Sling, TheOrderOfTheAxesDoesNotMatter) {
 // pull and report exactly as each rendered alone: a sling's ball knows nothing of another.
 // Different strings (different step counts), one axis beside two, a start a few ticks
 // later, stalls and repeated timestamps, and stretches of a still handle where a ball left
-// at rest takes the short way.
+// at rest takes the short way alone, and its idle advances beside a swinging one.
 TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
     struct Case {
         EffectParams a, b;
@@ -348,7 +384,10 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
     one_axis.axis_count = 1;
     const Case cases[] = {{sling_params(2000, 1500, 3000, 500), sling_params(2000, 1500, 3000, 500)},
                           {sling_params(500, 0, 10000, 0), sling_params(9000, 2500, 1000, 3000)},
-                          {one_axis, sling_params(4000, 1200, 6000, 100)}};
+                          {one_axis, sling_params(4000, 1200, 6000, 100)},
+                          // a's string longer than the hand's reach: its ball never moves, and
+                          // rests whenever the hand holds still while b swings on
+                          {sling_params(2000, 10000, 3000, 500), sling_params(2000, 1500, 3000, 500)}};
     const EngineConfig config{};
     for (const Case& k : cases) {
         const detail::SlotDynamicBlock block_a = detail::slot_dynamic_block(k.a);
