@@ -122,7 +122,7 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     const float* u = c.direction;
 
     // The velocity along the surface: v without its part across it.
-    const float across = dot(c, u, c.velocity);
+    const float across = along(c, u, c.velocity);
     float v_t[kMaxAxes] = {};
     float speed_sq = 0;
     for (int a = 0; a < c.axes; ++a) {

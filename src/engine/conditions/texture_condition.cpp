@@ -52,7 +52,7 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     } else {
         condition_line(c, u);
     }
-    const float s = along(u, c.position);
+    const float s = along(c, u, c.position);
     const float pos = static_cast<float>(t.pos_roughness), neg = static_cast<float>(t.neg_roughness);
     const float roughness = pos > neg ? pos : neg;
     // What is per tick length rather than per tick is kept with friction's, under its key:
@@ -73,7 +73,7 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     // The others' force in this texture's units, as for friction (friction_condition.cpp).
     const bool others_known = c.others_force != nullptr && output_gain != 0;
-    const float pushed = others_known ? along(u, c.others_force) / output_gain : 0.0f;
+    const float pushed = others_known ? along(c, u, c.others_force) / output_gain : 0.0f;
     if (others_known) {
         if (at_rest && (state.others_known || first)) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
@@ -88,21 +88,21 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
     if (presliding > 0 && c.dt_s > 0) {
-        f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), state.inverse_fade_speed);
+        f += bristle_damping(roughness * bump / presliding, z, along(c, u, c.velocity), state.inverse_fade_speed);
     }
     const float limit = roughness * bump;
     if (c.applied_force != nullptr && limit > 0) {
         if (state.guard_tick.on) {
-            const float others = c.others_force != nullptr ? along(u, c.others_force)
-                                                            : along(u, c.applied_force) - block.guard.own;
+            const float others = c.others_force != nullptr ? along(c, u, c.others_force)
+                                                            : along(c, u, c.applied_force) - block.guard.own;
             StopGuard& g = block.guard;
-            f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit,
+            f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(c, u, c.applied_force), others, f, limit,
                                    pos * bump, neg * bump);
             f = f > limit ? limit : (f < -limit ? -limit : f);
             remember_output(g, f, output_gain);
         }
     }
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
+    add_force_along(c, u, f, force);
 }
 
 }  // namespace feel::detail
