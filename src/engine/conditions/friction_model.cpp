@@ -36,7 +36,10 @@ float presliding_distance(const EngineConfig& config, float dt_s, float f) noexc
 
 float texture_bump(float s, int32_t spacing, float width) noexcept {
     if (!(spacing > 0) || !(width > 0)) return 0.0f;
-    const float step = static_cast<float>(spacing);
+    return grating_bump(s, static_cast<float>(spacing), width);
+}
+
+float grating_bump(float s, float step, float width) noexcept {
     // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
     const float r = s - step * round_half_away(s / step);
     const float half = width / 2.0f;

@@ -261,4 +261,8 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 // same on every platform.
 [[nodiscard]] float texture_bump(float s, int32_t spacing, float width) noexcept;
 
+// texture_bump for a spacing (> 0, a whole number of position units) and width (> 0) kept as
+// floats: the texture's tick, which keeps them (TextureLaw, friction_state.hpp).
+[[nodiscard]] float grating_bump(float s, float spacing, float width) noexcept;
+
 }  // namespace feel::detail
