@@ -68,9 +68,9 @@ namespace feel::detail {
 inline void condition_line(const ConditionContext& c, double u[kMaxAxes]) noexcept {
     for (int a = 0; a < kMaxAxes; ++a) u[a] = -static_cast<double>(c.direction[a]);
 }
-// (The float line on the device's axes only: what along and add_force_along read of it.)
+// (The float line on the device's axes, condition_lanes: what along and add_force_along read.)
 inline void condition_line(const ConditionContext& c, float u[kMaxAxes]) noexcept {
-    for (int a = 0; a < c.axes; ++a) u[a] = -c.direction[a];
+    for (int a = 0; a < condition_lanes(c); ++a) u[a] = -c.direction[a];
 }
 
 // v · u over the device axes.

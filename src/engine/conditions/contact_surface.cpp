@@ -124,7 +124,7 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     // The velocity along the surface: v without its part across it.
     const float across = along(c, u, c.velocity);
     float v_t[kMaxAxes];  // on the device's axes
-    for (int a = 0; a < c.axes; ++a) v_t[a] = c.velocity[a] - across * u[a];
+    for (int a = 0; a < condition_lanes(c); ++a) v_t[a] = c.velocity[a] - across * u[a];
     const float speed = std::sqrt(along(c, v_t, v_t));
     if (!(speed > 0)) return;
 

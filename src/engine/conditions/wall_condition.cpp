@@ -77,19 +77,19 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
         const float reported_depth = into * (along(c, u, c.reported_position) - surface);
         if (reported_depth > 0) {
             float clipped[kMaxAxes];  // (u is 0 beyond the device's axes: nothing to move there)
-            for (int a = 0; a < c.axes; ++a) {
+            for (int a = 0; a < condition_lanes(c); ++a) {
                 clipped[a] = c.reported_position[a] - into * reported_depth * u[a];
             }
             // The projection is rounded: if it still reads inside, step the moved
             // coordinates an ulp toward the free side (once: each further step would only
             // chase the rounding of the test itself away from the surface).
             if (into * (along(c, u, clipped) - surface) > 0) {
-                for (int a = 0; a < c.axes; ++a) {
+                for (int a = 0; a < condition_lanes(c); ++a) {
                     if (u[a] == 0) continue;
                     clipped[a] = next_float(clipped[a], -into * u[a] > 0);
                 }
             }
-            for (int a = 0; a < c.axes; ++a) {
+            for (int a = 0; a < condition_lanes(c); ++a) {
                 if (u[a] != 0) c.reported_position[a] = clipped[a];
             }
         }
