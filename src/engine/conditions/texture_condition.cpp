@@ -57,8 +57,8 @@ inline constexpr bool kKeepTextureLaw = true;
 
 // The texture's law for its block at tick period dt_s: what its tick used to work out every
 // tick, once (issue 14, twelfth pass).
-void remember_texture_law(TextureLaw& law, const EngineConfig& config, float dt_s,
-                                        const TextureBlock& t) noexcept {
+TextureLaw texture_law_for(const EngineConfig& config, float dt_s, const TextureBlock& t) noexcept {
+    TextureLaw law;
     law.key[0] = t.pos_roughness;
     law.key[1] = t.neg_roughness;
     law.key[2] = t.spacing;
@@ -71,6 +71,7 @@ void remember_texture_law(TextureLaw& law, const EngineConfig& config, float dt_
     law.spacing = static_cast<float>(t.spacing);
     law.width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
     law.bumps = t.spacing > 0 && law.width > 0;
+    return law;
 }
 
 // Whether the law was worked out for this block.
@@ -98,16 +99,18 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     // and what is per block too, the texture's law. (The law is read only once the tick
     // length matched: a fresh state's never does, so the law then holds the texture's.)
     TextureLaw this_tick;
-    TextureLaw& law = kKeepTextureLaw ? block.texture : this_tick;
     const bool new_tick_length = state.tick_dt != c.dt_s;
-    if (!kKeepTextureLaw || new_tick_length || !texture_law_is_for(law, t)) {
+    const bool renew = !kKeepTextureLaw || new_tick_length || !texture_law_is_for(block.texture, t);
+    if (renew) {
         if (new_tick_length) {
             state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
             state.inverse_fade_speed = 1.0f / (kBristleDampingFade * c.config->velocity_ref);
             state.tick_dt = c.dt_s;
         }
-        remember_texture_law(law, *c.config, c.dt_s, t);
+        this_tick = texture_law_for(*c.config, c.dt_s, t);
+        if (kKeepTextureLaw) block.texture = this_tick;  // (the block's union holds the texture's law from here on)
     }
+    const TextureLaw& law = renew ? this_tick : block.texture;
     const float pos = law.pos, neg = law.neg;
     const float roughness = law.roughness;
     const float presliding = law.presliding;
