@@ -95,9 +95,9 @@ float face_energy_change(const Face& before, float from, const Face& after, floa
 void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const BarrierBlock& barrier = c.params->barrier;
     const float* u = c.direction;  // across the surface (element_direction)
-    const float s = dot(c, u, c.position);
+    const float s = along(c, u, c.position);
     const float center = static_cast<float>(barrier.offset) +
-                         (barrier.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
+                         (barrier.offset_mode == OffsetMode::relative ? along(c, u, c.start_position) : 0.0f);
 
     ContactState& state = c.state->contact;
     if (state.side == 0) state.side = s >= center ? 1 : -1;
@@ -132,12 +132,12 @@ void barrier_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
         }
 
         pressure = press_port(state, s, ideal_energy_change, face.into * saturated_spring_force(face.k, face_depth(face, s)),
-                              face.k, dot(c, u, c.velocity), c.dt_s, c.config->sensor_step,
+                              face.k, along(c, u, c.velocity), c.dt_s, c.config->sensor_step,
                               c.config->passivity_control);
     }
     // The force along u to command, passive_port_force's or port_out_of_contact's zero.
     const float normal_force = state.force;
-    for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
+    add_force_along(c, u, normal_force, force);
 
     add_rubbing_force(c, pressure, barrier.surface_friction, barrier.surface_texture, force);
 }

@@ -67,6 +67,34 @@ struct ConditionContext {
     const AxisObservers* observers = nullptr;
 };
 
+// The axes a condition reads and pushes on: the device's c.axes (the engine reads no force
+// beyond them, and an effect names no axis beyond them, so its direction is 0 there). A
+// build for at most 2 axes (the board's, FEEL_MAX_AXES=2) runs both lanes whatever the
+// device, a count known when compiling, as the engine's own sums do (engine.cpp,
+// two_lanes): on a 1-axis device the second lane's direction is 0, so it adds ±0, which
+// changes no sum that starts from +0 (such a sum is never −0), and pushes on no axis the
+// engine reads.
+[[nodiscard]] inline int condition_lanes(const ConditionContext& c) noexcept { return kMaxAxes == 2 ? 2 : c.axes; }
+
+// u · v over the device's axes (condition_lanes).
+[[nodiscard]] inline float along(const ConditionContext& c, const float* u, const float* v) noexcept {
+    // The common device, unrolled: the loop's operations.
+    if (kMaxAxes == 2 || c.axes == 2) return (0.0f + u[0] * v[0]) + u[1] * v[1];
+    float sum = 0.0f;
+    for (int a = 0; a < c.axes; ++a) sum += u[a] * v[a];
+    return sum;
+}
+
+// force += value·u on the device's axes (condition_lanes).
+inline void add_force_along(const ConditionContext& c, const float* u, float value, float force[kMaxAxes]) noexcept {
+    if (kMaxAxes == 2 || c.axes == 2) {  // the common device, unrolled, as along
+        force[0] += value * u[0];
+        force[1] += value * u[1];
+        return;
+    }
+    for (int a = 0; a < c.axes; ++a) force[a] += value * u[a];
+}
+
 // The curve of a block: the single-precision constants condition_response needs.
 [[nodiscard]] ConditionCurve curve_of(const ConditionBlock& b) noexcept;
 

@@ -68,19 +68,15 @@ namespace feel::detail {
 inline void condition_line(const ConditionContext& c, double u[kMaxAxes]) noexcept {
     for (int a = 0; a < kMaxAxes; ++a) u[a] = -static_cast<double>(c.direction[a]);
 }
+// (The float line on the device's axes, condition_lanes: what along and add_force_along read.)
 inline void condition_line(const ConditionContext& c, float u[kMaxAxes]) noexcept {
-    for (int a = 0; a < kMaxAxes; ++a) u[a] = -c.direction[a];
+    for (int a = 0; a < condition_lanes(c); ++a) u[a] = -c.direction[a];
 }
 
 // v · u over the device axes.
 [[nodiscard]] inline double along(const double u[kMaxAxes], const float* v) noexcept {
     double s = 0.0;
     for (int a = 0; a < kMaxAxes; ++a) s += u[a] * static_cast<double>(v[a]);
-    return s;
-}
-[[nodiscard]] inline float along(const float u[kMaxAxes], const float* v) noexcept {
-    float s = 0.0f;
-    for (int a = 0; a < kMaxAxes; ++a) s += u[a] * v[a];
     return s;
 }
 

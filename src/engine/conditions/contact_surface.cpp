@@ -122,14 +122,10 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     const float* u = c.direction;
 
     // The velocity along the surface: v without its part across it.
-    const float across = dot(c, u, c.velocity);
-    float v_t[kMaxAxes] = {};
-    float speed_sq = 0;
-    for (int a = 0; a < c.axes; ++a) {
-        v_t[a] = c.velocity[a] - across * u[a];
-        speed_sq += v_t[a] * v_t[a];
-    }
-    const float speed = std::sqrt(speed_sq);
+    const float across = along(c, u, c.velocity);
+    float v_t[kMaxAxes];  // on the device's axes
+    for (int a = 0; a < condition_lanes(c); ++a) v_t[a] = c.velocity[a] - across * u[a];
+    const float speed = std::sqrt(along(c, v_t, v_t));
     if (!(speed > 0)) return;
 
     // The largest ridge under the handle, along each tangent direction.
@@ -151,7 +147,7 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     const float slip_speed = kSurfaceSlipSpeed * c.config->velocity_ref;
     const float magnitude = pressure * (mu + tau * bump) * float_tanh(speed / slip_speed);
     const float per_speed = magnitude / speed;
-    for (int a = 0; a < c.axes; ++a) force[a] -= per_speed * v_t[a];
+    add_force_along(c, v_t, -per_speed, force);  // (x + (−p)·v is x − p·v, bit for bit)
 }
 
 }  // namespace feel::detail

@@ -66,13 +66,6 @@ void element_direction(const SlotParams& params, float u[kMaxAxes]) noexcept;
 // EngineConfig::wall_stiffness, in force units per position unit.
 float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept;
 
-// u · v over the device's c.axes axes.
-[[nodiscard]] inline float dot(const ConditionContext& c, const float u[kMaxAxes], const float* v) noexcept {
-    float sum = 0;
-    for (int i = 0; i < c.axes; ++i) sum += u[i] * v[i];
-    return sum;
-}
-
 // The rubbing force of a surface across u (c.direction) pressed with normal force
 // `pressure` (>= 0, force units), added into force[]. friction and texture are the block's
 // 0..10000 parameters. The surface's tangent directions are the device axes other than an

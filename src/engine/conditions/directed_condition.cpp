@@ -36,14 +36,14 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
     float velocity[kMaxAxes] = {};
     float acceleration[kMaxAxes] = {};
     float start_position[kMaxAxes] = {};
-    position[line] = along(u, c.position);
-    velocity[line] = along(u, c.velocity);
-    acceleration[line] = along(u, c.acceleration);
-    start_position[line] = along(u, c.start_position);
+    position[line] = along(c, u, c.position);
+    velocity[line] = along(c, u, c.velocity);
+    acceleration[line] = along(c, u, c.acceleration);
+    start_position[line] = along(c, u, c.start_position);
     float applied[kMaxAxes] = {};
-    if (c.applied_force != nullptr) applied[line] = along(u, c.applied_force);
+    if (c.applied_force != nullptr) applied[line] = along(c, u, c.applied_force);
     float others[kMaxAxes] = {};
-    if (c.others_force != nullptr) others[line] = along(u, c.others_force);
+    if (c.others_force != nullptr) others[line] = along(c, u, c.others_force);
 
     ConditionContext on_line = c;
     on_line.position = position;
@@ -56,7 +56,7 @@ void directed_condition(const ConditionContext& c, ConditionLaw law, float force
 
     float per_axis[kMaxAxes] = {};
     law(on_line, per_axis);
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += per_axis[line] * u[a];
+    add_force_along(c, u, per_axis[line], force);
 }
 
 }  // namespace feel::detail

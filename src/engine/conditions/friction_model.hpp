@@ -58,9 +58,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "feel/engine.hpp"
 #include "float_exp.hpp"
+#include "float_round.hpp"
 
 namespace feel::detail {
 
@@ -257,8 +259,29 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
 // ends) to 0 at the bump's edges, so the force has no step entering or leaving a bump;
 // width = spacing (density 10000) makes the bumps touch: a sinusoidal washboard.
 // Single precision (issue 14): (1 + cos 2θ)/2 = cos²θ with θ = π·r/width in [-π/2, π/2],
-// where cos is its Taylor polynomial to θ¹² (friction_model.cpp): no library call, and the
+// where cos is its Taylor polynomial to θ¹² (cos_within_half_pi below): no library call, and the
 // same on every platform.
 [[nodiscard]] float texture_bump(float s, int32_t spacing, float width) noexcept;
+
+// cos θ for |θ| <= π/2 by its Taylor polynomial to θ¹² (the next term is below
+// (π/2)¹⁴/14! = 6.4e-9, a tenth of a float ulp of 1/2), in θ² by Horner's rule.
+[[nodiscard]] inline float cos_within_half_pi(float theta) noexcept {
+    const float t = theta * theta;
+    constexpr float c2 = -1.0f / 2, c4 = 1.0f / 24, c6 = -1.0f / 720, c8 = 1.0f / 40320;
+    constexpr float c10 = -1.0f / 3628800, c12 = 1.0f / 479001600;
+    return 1.0f + t * (c2 + t * (c4 + t * (c6 + t * (c8 + t * (c10 + t * c12)))));
+}
+
+// texture_bump for a spacing (> 0, a whole number of position units) and width (> 0) kept as
+// floats: the texture's tick, which keeps them (TextureLaw, friction_state.hpp). Inline: the
+// texture's tick is its one caller on the board, and on x86 a call spills the tick's floats.
+[[nodiscard]] inline float grating_bump(float s, float step, float width) noexcept {
+    // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
+    const float r = s - step * round_half_away(s / step);
+    const float half = width / 2.0f;
+    if (r > half || r < -half) return 0.0f;
+    const float c = cos_within_half_pi(std::numbers::pi_v<float> * r / width);
+    return c * c;  // (1 + cos 2θ)/2
+}
 
 }  // namespace feel::detail

@@ -33,6 +33,23 @@ struct FrictionBlockLaw {
     bool lean = false;
 };
 
+// What a texture's tick needs that changes only with its block or the tick period (issue 14,
+// twelfth pass), kept in its block 0 where a friction keeps its law: the same values the
+// tick used to work out every tick, so the same bits.
+struct TextureLaw {
+    // The texture's block it was worked out for: pos_roughness, neg_roughness, spacing,
+    // density. (Read only after the tick period matched, which a fresh state never does: so
+    // only once this member holds it.)
+    int32_t key[4];
+    float pos, neg;            // the roughnesses as floats
+    float roughness;           // the larger: the bristle's f
+    float presliding;          // its presliding distance Z at this tick period (friction_model.hpp)
+    float inverse_presliding;  // 1/Z, 0 when Z = 0
+    float spacing;             // the bumps' spacing, position units
+    float width;               // their width: spacing · density / 10000
+    bool bumps;                // spacing and width > 0 (texture_bump's test)
+};
+
 // One block's memory, kept together (issue 14: one stride through the blocks).
 struct FrictionBlock {
     // friction: the block's bristle; texture: block 0's runs along the texture's line.
@@ -43,9 +60,15 @@ struct FrictionBlock {
     // others_force), what its stiction held against, in this effect's units (before its gain
     // and the device's): friction_condition.cpp's release.
     float others = 0.0f;
-    // friction: the block's law at this tick period (reset when it changes).
-    FrictionBlockLaw law{};
+    union {
+        // friction: the block's law at this tick period (reset when it changes).
+        FrictionBlockLaw law{};
+        // texture, block 0: its law at this tick period (texture_condition.cpp), in the same
+        // bytes (no RAM).
+        TextureLaw texture;
+    };
 };
+static_assert(sizeof(TextureLaw) <= sizeof(FrictionBlockLaw), "the texture's law takes no RAM of its own");
 
 struct FrictionState {
     // friction: index i = the effect's i-th axis; texture: block 0.

@@ -63,20 +63,6 @@ float saturated_spring_force(float k, float depth) noexcept {
     return -std::clamp(k * depth, -kLimit, kLimit);
 }
 
-bool port_out_of_contact(ContactState& state, float coordinate, float into, float surface) noexcept {
-    const float depth = into * (coordinate - surface);
-    const float previous_depth = into * (state.coordinate - surface);
-    // The work the held force did is passive_port_force's `work`, exactly: zero when the
-    // force was zero over a finite move (or, after an update moved the surface, a force held
-    // over no move at all); any other value, a NaN of an infinite move among them, is left
-    // to passive_port_force.
-    if (!(depth <= 0 && previous_depth <= 0 && state.force * (coordinate - state.coordinate) == 0)) return false;
-    state.observing = true;
-    state.coordinate = coordinate;
-    state.force = into * 0.0f;
-    return true;
-}
-
 float generated_energy(const ContactState& state) noexcept {
     return float_of_int64(state.generated_energy) / kLedgerScale;
 }

@@ -128,7 +128,20 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
 // force, into · 0. If this tick is such a tick, records it as passive_port_force would
 // (state.force is then the force to command) and returns true, so the element need not
 // work out its stiffness, energy or rubbing; otherwise returns false and changes nothing.
-bool port_out_of_contact(ContactState& state, float coordinate, float into, float surface) noexcept;
+// (Inline: every tick of every wall and barrier calls it, most of them out of contact.)
+inline bool port_out_of_contact(ContactState& state, float coordinate, float into, float surface) noexcept {
+    const float depth = into * (coordinate - surface);
+    const float previous_depth = into * (state.coordinate - surface);
+    // The work the held force did is passive_port_force's `work`, exactly: zero when the
+    // force was zero over a finite move (or, after an update moved the surface, a force held
+    // over no move at all); any other value, a NaN of an infinite move among them, is left
+    // to passive_port_force.
+    if (!(depth <= 0 && previous_depth <= 0 && state.force * (coordinate - state.coordinate) == 0)) return false;
+    state.observing = true;
+    state.coordinate = coordinate;
+    state.force = into * 0.0f;
+    return true;
+}
 
 // A contact element's tick in contact: the port's reading at coordinate s with the ideal
 // element's energy change, force along u and stiffness k, the handle's velocity along u,

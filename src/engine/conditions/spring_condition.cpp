@@ -28,10 +28,10 @@ void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept
         float u[kMaxAxes];
         condition_line(c, u);
         const ConditionCurve& b = c.curves[0];
-        const float s = along(u, c.position);
-        const float center = spring_center(p.curved.offset_modes[0], b, along(u, c.start_position));
+        const float s = along(c, u, c.position);
+        const float center = spring_center(p.curved.offset_modes[0], b, along(c, u, c.start_position));
         const float f = condition_response(b, s - center);
-        for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
+        add_force_along(c, u, f, force);
         return;
     }
     for (int i = 0; i < p.axis_count; ++i) {

@@ -38,9 +38,49 @@
 //       |   /   \                         /   \          (s = 0 is a bump's top)
 //     0 +--'-----'-------------------------'-----'------- s
 //       -w/2  0  w/2                  spacing
+#include <cstring>
+
 #include "conditions/condition_math.hpp"
 
 namespace feel::detail {
+
+namespace {
+
+// Keeping the law costs about 130 bytes of Thumb code: a build for size (the Cortex-M4F
+// firmware, whose flash is at its goal) works it out every tick instead, as it leaves out
+// friction's lean way, which gives the same force.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kKeepTextureLaw = false;
+#else
+inline constexpr bool kKeepTextureLaw = true;
+#endif
+
+// The texture's law for its block at tick period dt_s: what its tick used to work out every
+// tick, once (issue 14, twelfth pass).
+TextureLaw texture_law_for(const EngineConfig& config, float dt_s, const TextureBlock& t) noexcept {
+    TextureLaw law;
+    law.key[0] = t.pos_roughness;
+    law.key[1] = t.neg_roughness;
+    law.key[2] = t.spacing;
+    law.key[3] = t.density;
+    law.pos = static_cast<float>(t.pos_roughness);
+    law.neg = static_cast<float>(t.neg_roughness);
+    law.roughness = law.pos > law.neg ? law.pos : law.neg;
+    law.presliding = presliding_distance(config, dt_s, law.roughness);
+    law.inverse_presliding = law.presliding > 0 ? 1.0f / law.presliding : 0.0f;
+    law.spacing = static_cast<float>(t.spacing);
+    law.width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
+    law.bumps = t.spacing > 0 && law.width > 0;
+    return law;
+}
+
+// Whether the law was worked out for this block.
+bool texture_law_is_for(const TextureLaw& law, const TextureBlock& t) noexcept {
+    static_assert(sizeof(TextureBlock) == sizeof(law.key));
+    return std::memcmp(law.key, &t, sizeof law.key) == 0;
+}
+
+}  // namespace
 
 void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const SlotParams& p = *c.params;
@@ -52,28 +92,39 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     } else {
         condition_line(c, u);
     }
-    const float s = along(u, c.position);
-    const float pos = static_cast<float>(t.pos_roughness), neg = static_cast<float>(t.neg_roughness);
-    const float roughness = pos > neg ? pos : neg;
-    // What is per tick length rather than per tick is kept with friction's, under its key:
-    // the stop guard's gains and the microdamping's 1/fade speed (friction_condition.cpp).
-    if (state.tick_dt != c.dt_s) {
-        state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
-        state.inverse_fade_speed = 1.0f / (kBristleDampingFade * c.config->velocity_ref);
-        state.tick_dt = c.dt_s;
-    }
-    const float presliding = presliding_distance(*c.config, c.dt_s, roughness);
+    const float s = along(c, u, c.position);
     FrictionBlock& block = state.block[0];
+    // What is per tick length rather than per tick is kept with friction's, under its key:
+    // the stop guard's gains and the microdamping's 1/fade speed (friction_condition.cpp);
+    // and what is per block too, the texture's law. (The law is read only once the tick
+    // length matched: a fresh state's never does, so the law then holds the texture's.)
+    TextureLaw this_tick;
+    const bool new_tick_length = state.tick_dt != c.dt_s;
+    const bool renew = !kKeepTextureLaw || new_tick_length || !texture_law_is_for(block.texture, t);
+    if (renew) {
+        if (new_tick_length) {
+            state.guard_tick = stop_guard_tick(*c.config, c.dt_s);
+            state.inverse_fade_speed = 1.0f / (kBristleDampingFade * c.config->velocity_ref);
+            state.tick_dt = c.dt_s;
+        }
+        this_tick = texture_law_for(*c.config, c.dt_s, t);
+        if (kKeepTextureLaw) block.texture = this_tick;  // (the block's union holds the texture's law from here on)
+    }
+    const TextureLaw& law = renew ? this_tick : block.texture;
+    const float pos = law.pos, neg = law.neg;
+    const float roughness = law.roughness;
+    const float presliding = law.presliding;
     Bristle& bristle = block.bristle;
     const bool first = !bristle.primed;  // nothing held yet: take the others' push from here
     const bool at_rest = first || s == bristle.anchor;
-    float z = advance(bristle, s, 0.0f, presliding > 0 ? 1.0f / presliding : 0.0f);
-    const float width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
-    const float bump = texture_bump(s, t.spacing, width);
+    float z = advance(bristle, s, 0.0f, law.inverse_presliding);
+    const float bump = law.bumps ? grating_bump(s, law.spacing, law.width) : 0.0f;
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
-    // The others' force in this texture's units, as for friction (friction_condition.cpp).
+    // The others' force along the line, and in this texture's units, as for friction
+    // (friction_condition.cpp).
+    const float others_along = c.others_force != nullptr ? along(c, u, c.others_force) : 0.0f;
     const bool others_known = c.others_force != nullptr && output_gain != 0;
-    const float pushed = others_known ? along(u, c.others_force) / output_gain : 0.0f;
+    const float pushed = others_known ? others_along / output_gain : 0.0f;
     if (others_known) {
         if (at_rest && (state.others_known || first)) {
             const float held = -(z >= 0 ? pos : neg) * bump * z;
@@ -88,21 +139,20 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
     if (presliding > 0 && c.dt_s > 0) {
-        f += bristle_damping(roughness * bump / presliding, z, along(u, c.velocity), state.inverse_fade_speed);
+        f += bristle_damping(roughness * bump / presliding, z, along(c, u, c.velocity), state.inverse_fade_speed);
     }
     const float limit = roughness * bump;
     if (c.applied_force != nullptr && limit > 0) {
         if (state.guard_tick.on) {
-            const float others = c.others_force != nullptr ? along(u, c.others_force)
-                                                            : along(u, c.applied_force) - block.guard.own;
+            const float applied = along(c, u, c.applied_force);
+            const float others = c.others_force != nullptr ? others_along : applied - block.guard.own;
             StopGuard& g = block.guard;
-            f = guard_stop_on_line(g, bristle, state.guard_tick, s, along(u, c.applied_force), others, f, limit,
-                                   pos * bump, neg * bump);
+            f = guard_stop_on_line(g, bristle, state.guard_tick, s, applied, others, f, limit, pos * bump, neg * bump);
             f = f > limit ? limit : (f < -limit ? -limit : f);
             remember_output(g, f, output_gain);
         }
     }
-    for (int a = 0; a < kMaxAxes; ++a) force[a] += f * u[a];
+    add_force_along(c, u, f, force);
 }
 
 }  // namespace feel::detail

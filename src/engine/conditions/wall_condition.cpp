@@ -52,9 +52,9 @@ namespace feel::detail {
 void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
     const WallBlock& wall = c.params->wall;
     const float* u = c.direction;  // across the surface (element_direction)
-    const float s = dot(c, u, c.position);
+    const float s = along(c, u, c.position);
     const float surface = static_cast<float>(wall.offset) +
-                          (wall.offset_mode == OffsetMode::relative ? dot(c, u, c.start_position) : 0.0f);
+                          (wall.offset_mode == OffsetMode::relative ? along(c, u, c.start_position) : 0.0f);
     const float into = wall.sense == WallSense::positive ? 1.0f : -1.0f;  // along u, into the solid
     ContactState& state = c.state->contact;
 
@@ -64,32 +64,32 @@ void wall_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
         const float k = element_stiffness(*c.config, wall.hardness);
         const float depth = into * (s - surface);
         const float energy_change = saturated_spring_energy_change(k, into * (state.coordinate - surface), depth);
-        pressure = press_port(state, s, energy_change, into * saturated_spring_force(k, depth), k, dot(c, u, c.velocity),
+        pressure = press_port(state, s, energy_change, into * saturated_spring_force(k, depth), k, along(c, u, c.velocity),
                               c.dt_s, c.config->sensor_step, c.config->passivity_control);
     }
     // The force along u to command: passive_port_force's, or port_out_of_contact's zero.
     const float normal_force = state.force;
-    for (int a = 0; a < c.axes; ++a) force[a] += normal_force * u[a];
+    add_force_along(c, u, normal_force, force);
 
     if (pressure > 0) add_rubbing_force(c, pressure, wall.surface_friction, wall.surface_texture, force);
 
     if (wall.clipping) {
-        const float reported_depth = into * (dot(c, u, c.reported_position) - surface);
+        const float reported_depth = into * (along(c, u, c.reported_position) - surface);
         if (reported_depth > 0) {
-            float clipped[kMaxAxes];
-            for (int a = 0; a < kMaxAxes; ++a) {
+            float clipped[kMaxAxes];  // (u is 0 beyond the device's axes: nothing to move there)
+            for (int a = 0; a < condition_lanes(c); ++a) {
                 clipped[a] = c.reported_position[a] - into * reported_depth * u[a];
             }
             // The projection is rounded: if it still reads inside, step the moved
             // coordinates an ulp toward the free side (once: each further step would only
             // chase the rounding of the test itself away from the surface).
-            if (into * (dot(c, u, clipped) - surface) > 0) {
-                for (int a = 0; a < kMaxAxes; ++a) {
+            if (into * (along(c, u, clipped) - surface) > 0) {
+                for (int a = 0; a < condition_lanes(c); ++a) {
                     if (u[a] == 0) continue;
                     clipped[a] = next_float(clipped[a], -into * u[a] > 0);
                 }
             }
-            for (int a = 0; a < kMaxAxes; ++a) {
+            for (int a = 0; a < condition_lanes(c); ++a) {
                 if (u[a] != 0) c.reported_position[a] = clipped[a];
             }
         }

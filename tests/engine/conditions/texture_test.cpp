@@ -70,6 +70,29 @@ TEST_F(Texture, FarFromTurningTheForceIsTheRoughnessOfTheDirectionTimesTheBump) 
     EXPECT_NEAR(tick_at(0, -8200).force[1], -3000 * bump(-8200, 1000, 8000) * z, 1e-2);
 }
 
+TEST_F(Texture, AnUpdateWhilePlayingTakesItsNewRoughnessAndGratingAtOnce) {
+    // Sliding toward +y over bumps 800 wide every 1000, then the roughness, spacing and
+    // density change in play (its state kept, §2.2 update without restart): the next ticks
+    // feel the new grating, bumps 200 wide every 500, with the new roughness toward + and
+    // the presliding distance of the larger one.
+    const EffectId id = play(texture({Axis::y}, 6000, 3000, 1000, 8000));
+    const double Z = presliding(6000);
+    for (int k = 0; k <= 400; ++k) tick_at(0, -9000 + 10.0 * k);  // 4000 units toward +, to -5000
+    double z = bristle(0, 4000, Z);
+    ASSERT_TRUE(engine_->update(id, texture({Axis::y}, 2000, 3000, 500, 4000), effect_field::kTypeSpecific, false).ok());
+    const double Z2 = presliding(3000);  // the bristle's f: the larger roughness
+    for (int k = 1; k <= 125; ++k) {
+        const double y = -5000 + 10.0 * k;
+        z = bristle(z, 10, Z2);
+        const TickOutput out = tick_at(0, y);
+        const double b = bump(y, 500, 4000);
+        ASSERT_NEAR(out.force[1], -2000 * b * z + microdamping(3000 * b / Z2, z, out.velocity[1]), 1e-2) << "y " << y;
+    }
+    // y = -3750 was on a bump of the old grating (0.35 of its top) and is in a gap of the new.
+    EXPECT_GT(bump(-3750, 1000, 8000), 0.3);
+    EXPECT_EQ(bump(-3750, 500, 4000), 0.0);
+}
+
 TEST_F(Texture, OnTwoAxesTheGratingRunsAlongItsDirection) {
     // polar 3000: the line u = (sin 30°, cos 30°). Motion across the line does not rub.
     EffectParams p = texture({Axis::x, Axis::y}, 5000, 5000, 600, 5000);
