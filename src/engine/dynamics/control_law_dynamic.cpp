@@ -158,6 +158,7 @@ bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, Tethe
 #endif
 }
 
+#if !defined(__OPTIMIZE_SIZE__)
 // One axis of a plain law (PreparedTether::plain: one region, nothing counted, the fixed
 // frame) on a tick that catches up: the general loop below with every branch it does not
 // take removed, the same operations in the same order, so the same bits. The handle's line
@@ -168,7 +169,7 @@ bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, Tethe
                                               float& last_velocity, float handle, float handle_velocity,
                                               float inverse_step, float hysteresis, float& pull) noexcept {
     const float u = (handle - last_position) * inverse_step;
-    const float weight = law.mass * law.gravity;
+    const float weight = law.weight;
     if (now.stretch == 0 && now.velocity == 0 && u == 0 && last_velocity == 0 && handle_velocity == 0 &&
         weight == 0) {
         // A mass at rest on a still handle with nothing pulling it: both propagators map
@@ -177,31 +178,31 @@ bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, Tethe
         pull = 0;
         return;
     }
-    // Catch up along the sensed line, the damper reading last tick's estimate.
+    // The forces on a mass moving with the handle, apart from the spring: the same line
+    // for both, the damper reading last tick's estimate, then this tick's.
+    const float moving_force = weight - law.drag * u;
+    // Catch up along the sensed line.
     float s = now.stretch;
     float rate = now.velocity - u;
-    propagate(law.above, weight - law.drag * u - law.b * (u - last_velocity), s, rate);
+    propagate(law.above, moving_force - law.b * (u - last_velocity), s, rate);
     now.stretch = s;
     now.velocity = rate + u;
     flush_subnormal(now);
     if (!finite(now)) now = initial_state(law, handle_velocity, hysteresis);  // never expected
-    // Predict along the same line, the damper reading this tick's estimate: only the
-    // impulse is kept, M·Δv − M·g·h + d·(Δs + u·h), and M·Δv + d·Δs is a linear form of
-    // the caught-up state (weighted_change): the predicted state itself is not needed.
-    const float s0 = now.stretch;
-    const float rate0 = now.velocity - u;
-    const float h = law.step_s;
-    const float change =
-        weighted_change(law.above, law.mass, law.drag, weight - law.drag * u - law.b * (u - handle_velocity), s0, rate0);
+    // Predict along the same line: only the impulse is kept, M·Δv − M·g·h + d·(Δs + u·h),
+    // and M·Δv + d·Δs is a linear form of the caught-up state whose coefficients were
+    // prepared with the propagator (weighted_change): the predicted state is not needed.
+    const float change = weighted_change(law.prediction_form, moving_force - law.b * (u - handle_velocity),
+                                         now.stretch, now.velocity - u);
     // predicted_impulse's sum, in its order (a build for size takes that path).
-    pull = -(change - weight * h + law.drag * (u * h)) * inverse_step;
+    pull = -(change - law.weight_impulse + law.drag * (u * law.step_s)) * inverse_step;
     last_position = handle;
     last_velocity = handle_velocity;
 }
 
 // A tick of an effect whose laws are all plain, once it catches up: its own loop, so that
 // none of the general loop's state is kept alive across it.
-[[gnu::noinline, maybe_unused]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
+[[gnu::noinline]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
                                   float force[kMaxAxes], DynamicResult& result) noexcept {
     const SlotParams& p = *c.params;
     for (int i = 0; i < p.axis_count; ++i) {
@@ -216,6 +217,7 @@ bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, Tethe
         result.mass_velocity[a] = st.now[i].velocity - handle_velocity;
     }
 }
+#endif
 
 }  // namespace
 

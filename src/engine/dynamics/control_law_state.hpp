@@ -42,6 +42,17 @@ struct PreparedTether {
     // the padding after the flags above.
     bool plain = false;
     TetherPropagator below{}, slack{}, above{};
+#if !defined(__OPTIMIZE_SIZE__)
+    // What a law with one region that counts nothing needs each tick and only the command
+    // and the tick length fix, worked out with the propagators (prepare_pieces) by the
+    // operations the tick did, so the same bits: the prediction's impulse as a linear form
+    // of the caught-up state (weighted_change_form of `above`), the weight M·g and its
+    // impulse over the step M·g·h. Not in a build for size (the Cortex-M4F image, whose RAM
+    // is the tighter budget), which works them out each tick (tether_tick.hpp).
+    WeightedChangeForm prediction_form{};
+    float weight = 0;          // force units
+    float weight_impulse = 0;  // force units·s
+#endif
 };
 
 struct ControlLawState {

@@ -81,18 +81,24 @@ inline void propagate(const TetherPropagator& p, float f, float& y, float& v) no
 
 // The change of (y, v) over the piece from (y, v) under f, as propagate would leave it,
 // weighted: mass·Δv + drag·Δy. The piece's map is affine, so this is a fixed linear form
-// of y, v and f, whose coefficients come from the propagator's own (a few products that
-// do not depend on the state, off its chain): what waits for (y, v) is three products
-// and their sum, where propagating and then differencing waited for the propagator's
-// five dependent operations and then the differences. The coefficients are formed so that
-// the near-identity map's 1 never appears: with E = 1 − c3, the sheared map's
-// Δv = E·c1·y + (E·c1·c2 − c3)·v and Δy = (E·c0·c1 − c3)·y + E·(c2 + c0·(1 + c1·c2))·v;
-// the plain matrix's Δv = c2·y + (c3 − 1)·v, Δy = (c0 − 1)·y + c1·v (an overdamped,
-// critical or free piece, whose c3 − 1 and c0 − 1 are exact differences of its rounded
-// entries: the same rounding propagate leaves in v and y). Rounding: a few ulps of each
-// term, as propagate's result differenced.
-[[gnu::always_inline]] inline float weighted_change(const TetherPropagator& p, float mass, float drag, float f, float y,
-                                                    float v) noexcept {
+// of y, v and f, on_y·y + on_v·v + on_f·f, whose coefficients depend only on the
+// propagator, the mass and the drag: they are worked out with the propagator
+// (weighted_change_form, prepare_pieces), and what a tick does is three products and two
+// sums, where propagating and then differencing waited for the propagator's five
+// dependent operations and then the differences.
+struct WeightedChangeForm {
+    float on_y = 0, on_v = 0, on_f = 0;
+};
+
+// The coefficients are formed so that the near-identity map's 1 never appears: with
+// E = 1 − c3, the sheared map's Δv = E·c1·y + (E·c1·c2 − c3)·v and
+// Δy = (E·c0·c1 − c3)·y + E·(c2 + c0·(1 + c1·c2))·v; the plain matrix's
+// Δv = c2·y + (c3 − 1)·v, Δy = (c0 − 1)·y + c1·v (an overdamped, critical or free piece,
+// whose c3 − 1 and c0 − 1 are exact differences of its rounded entries: the same rounding
+// propagate leaves in v and y). Rounding: a few ulps of each term, as propagate's result
+// differenced.
+[[gnu::always_inline]] inline WeightedChangeForm weighted_change_form(const TetherPropagator& p, float mass,
+                                                                      float drag) noexcept {
     float dv_y, dv_v, dy_y, dy_v;
     if (p.sheared) {
         const float e = 1.0f - p.c3;
@@ -107,10 +113,11 @@ inline void propagate(const TetherPropagator& p, float f, float& y, float& v) no
         dy_y = p.c0 - 1.0f;
         dy_v = p.c1;
     }
-    const float on_y = mass * dv_y + drag * dy_y;
-    const float on_v = mass * dv_v + drag * dy_v;
-    const float on_f = mass * p.force_v + drag * p.force_y;
-    return (on_y * y + on_v * v) + on_f * f;
+    return {mass * dv_y + drag * dy_y, mass * dv_v + drag * dy_v, mass * p.force_v + drag * p.force_y};
+}
+
+[[gnu::always_inline]] inline float weighted_change(const WeightedChangeForm& w, float f, float y, float v) noexcept {
+    return (w.on_y * y + w.on_v * v) + w.on_f * f;
 }
 
 }  // namespace feel::detail

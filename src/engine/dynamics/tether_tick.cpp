@@ -116,6 +116,11 @@ void prepare_pieces(PreparedTether& t, float step_s) noexcept {
     t.above = tether_propagator({m, t.k_pos, taut, 0.0f}, piece);
     t.slack = tether_propagator({m, 0.0f, drag, 0.0f}, piece);
     t.step_s = step_s;
+#if !defined(__OPTIMIZE_SIZE__)
+    t.prediction_form = weighted_change_form(t.above, m, drag);
+    t.weight = m * t.gravity;
+    t.weight_impulse = t.weight * step_s;
+#endif
 }
 
 float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
