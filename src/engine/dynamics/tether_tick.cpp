@@ -123,14 +123,71 @@ void prepare_pieces(PreparedTether& t, float step_s) noexcept {
 #endif
 }
 
-float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
-                             float hysteresis) noexcept {
+namespace {
+
+// How a piece of a piecewise law went (try_piece).
+enum class PieceOutcome : uint8_t {
+    at_rest,    // at rest in the play with nothing pushing it: no piece moves the mass
+    clear,      // the piece ended in its region and touched no edge
+    may_cross,  // an edge may lie within the piece: the exact piece must redo it
+};
+
+// One piece of a piecewise law from (s, rate): its region, the region's origin, and the
+// piece's end (y, v) about that origin by the region's propagator.
+struct WatchedPiece {
+    Region region = Region::slack;
+    float origin = 0;
+    float y = 0, v = 0;
+};
+
+[[gnu::always_inline]] inline PieceOutcome try_piece(const PreparedTether& t, float s, float rate, float slack_force,
+                                                     float taut_force, float piece, WatchedPiece& w) noexcept {
+    const Region r = tether_region(t.length, s, rate, taut_force);
+    // At rest in the play with nothing pushing it: the free propagator maps (y, 0) to (y, 0)
+    // exactly, so no piece moves the mass. The exact piece would be asked every time (a
+    // piece that starts at rest may have turned), which is most of what a still handle costs.
+    if (r == Region::slack && rate == 0 && slack_force == 0) return PieceOutcome::at_rest;
+    const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
+    const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
+    float y = s - origin;
+    float v = rate;
+    propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
+    w = {r, origin, y, v};
+    if (may_have_crossed(r, t.length, y + origin, rate, v) &&
+        !(r == Region::slack ? turns_within_play(t.length, s, rate, y, piece)
+                             : stays_clear(r == Region::above ? 1.0f : -1.0f, r == Region::above ? t.k_pos : t.k_neg,
+                                           t.mass, taut_force, s - origin, rate))) {
+        return PieceOutcome::may_cross;
+    }
+    return PieceOutcome::clear;
+}
+
+// The forces on a mass moving with the handle along `line`, apart from the spring
+// (tether_law.cpp's segment): taut, the tether damper reads against damper_velocity;
+// slack, no tether.
+struct LineForces {
+    float slack = 0, taut = 0;
+};
+
+[[gnu::always_inline]] inline LineForces line_forces(const PreparedTether& t, float gravity, HandleLine line) noexcept {
+    const float slack = t.mass * gravity - t.drag * line.velocity;
+    return {slack, slack - t.b * (line.velocity - line.damper_velocity)};
+}
+
+// The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement): the
+// tether's impulse over a step that went from (s0, rate0) to (s, rate).
+[[gnu::always_inline]] inline float tether_impulse(const PreparedTether& t, float gravity, float u, float s0,
+                                                   float rate0, float s, float rate) noexcept {
     const float h = t.step_s;
+    return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+}
+
+// advance_watched_tether's general case: any number of pieces, half cycles counted, edges
+// crossed by the exact piece.
+[[gnu::noinline]] float advance_pieces(const PreparedTether& t, float gravity, TetherAxisState& state, HandleLine line,
+                                       float hysteresis) noexcept {
     const float u = line.velocity;
-    // The forces on a mass moving with the handle, apart from the spring (tether_law.cpp's
-    // segment): taut, the tether damper reads against damper_velocity; slack, no tether.
-    const float slack_force = t.mass * gravity - t.drag * u;
-    const float taut_force = slack_force - t.b * (u - line.damper_velocity);
+    const LineForces forces = line_forces(t, gravity, line);
     // Half cycles are counted only for a law that ends after some (its count is what ends
     // it): the rest stretch they are counted about takes two divisions.
     const bool counting = t.half_cycles > 0;
@@ -146,50 +203,73 @@ float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisS
         // same propagator about the same origin (0). A law that counts no half cycles comes
         // here only in a build for size (advance_prepared_tether), in one piece.
         for (int32_t i = 0; i < t.pieces; ++i) {
-            propagate(t.above, taut_force, s, rate);
+            propagate(t.above, forces.taut, s, rate);
             if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
     } else {
         for (int32_t i = 0; i < t.pieces; ++i) {
-            const Region r = tether_region(t.length, s, rate, taut_force);
-            if (r == Region::slack && rate == 0 && slack_force == 0) {
-                // At rest in the play with nothing pushing it: no piece moves the mass (the
-                // free propagator maps (y, 0) to (y, 0) exactly), so neither do the rest. The
-                // exact piece would be asked every time (a piece that starts at rest may have
-                // turned), which is most of what a still handle costs.
+            WatchedPiece w;
+            const PieceOutcome outcome = try_piece(t, s, rate, forces.slack, forces.taut, piece, w);
+            if (outcome == PieceOutcome::at_rest) {
+                // Neither does any later piece move it.
                 if (counting) count_half_cycle(state, s, rest, hysteresis);
                 break;
             }
-            const float origin = r == Region::above ? t.length : (r == Region::below ? -t.length : 0.0f);
-            const TetherPropagator& p = r == Region::above ? t.above : (r == Region::below ? t.below : t.slack);
-            float y = s - origin;
-            float v = rate;
-            propagate(p, r == Region::slack ? slack_force : taut_force, y, v);
-            if (may_have_crossed(r, t.length, y + origin, rate, v) &&
-                !(r == Region::slack ? turns_within_play(t.length, s, rate, y, piece)
-                                     : stays_clear(r == Region::above ? 1.0f : -1.0f,
-                                                   r == Region::above ? t.k_pos : t.k_neg, t.mass, taut_force,
-                                                   s - origin, rate))) {
-                // An edge may lie within the piece: the exact piece finds it (rare).
+            if (outcome == PieceOutcome::may_cross) {
+                // The exact piece finds the edge (rare).
                 const TetherLaw law = exact_law(t, gravity);
                 const HandlePath path{0.0f, u, line.damper_velocity};
-                taut = advance_tether_piece(law, state, s, rate, path, piece, hysteresis, {y, v}) ||
-                       taut;
+                taut = advance_tether_piece(law, state, s, rate, path, piece, hysteresis, {w.y, w.v}) || taut;
                 continue;
             }
-            s = y + origin;
-            rate = v;
-            taut = taut || r != Region::slack;
+            s = w.y + w.origin;
+            rate = w.v;
+            taut = taut || w.region != Region::slack;
             if (counting) count_half_cycle(state, s, rest, hysteresis);
         }
     }
     state.stretch = s;
     state.velocity = rate + u;
     // A step spent wholly in the play gave the mass no tether impulse: exactly 0, not the
-    // rounding the balance below leaves when gravity (or the handle's frame) moves it.
+    // rounding the balance leaves when gravity (or the handle's frame) moves it.
     if (!taut) return 0.0f;
-    // The momentum balance M·Δv = J + M·g·h − d·Δx (Δx the mass's own displacement).
-    return t.mass * (rate - rate0) - t.mass * gravity * h + t.drag * ((s - s0) + u * h);
+    return tether_impulse(t, gravity, u, s0, rate0, s, rate);
+}
+
+}  // namespace
+
+// Flattened: the piece's tests (tether_region, may_have_crossed, ...) inline, which GCC
+// otherwise called out of line here, spilling around each call.
+[[gnu::flatten]] float advance_watched_tether(const PreparedTether& t, float gravity, TetherAxisState& state,
+                                              HandleLine line, float hysteresis) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+    // The common case, a law with regions in one piece that counts nothing (the busy mix's
+    // control laws and inertias with play): its piece with no call on its way, so that
+    // nothing is spilled around calls it almost never makes. A piece that may have crossed
+    // is redone by the general case from the start (the same operations, so the same bits);
+    // not in a build for size (the Cortex-M4F image, whose flash is the tighter budget).
+    if (t.piecewise && t.pieces == 1 && t.half_cycles == 0) {
+        const float u = line.velocity;
+        const LineForces forces = line_forces(t, gravity, line);
+        const float s0 = state.stretch;
+        const float rate0 = state.velocity - u;
+        WatchedPiece w;
+        // One piece: its length is the step's (step_s / 1 exactly).
+        const PieceOutcome outcome = try_piece(t, s0, rate0, forces.slack, forces.taut, t.step_s, w);
+        if (outcome == PieceOutcome::at_rest) {
+            state.velocity = rate0 + u;
+            return 0.0f;
+        }
+        if (outcome == PieceOutcome::clear) {
+            const float s = w.y + w.origin;
+            state.stretch = s;
+            state.velocity = w.v + u;
+            if (w.region == Region::slack) return 0.0f;
+            return tether_impulse(t, gravity, u, s0, rate0, s, w.v);
+        }
+    }
+#endif
+    return advance_pieces(t, gravity, state, line, hysteresis);
 }
 
 }  // namespace feel::detail
