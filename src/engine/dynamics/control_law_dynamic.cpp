@@ -242,14 +242,15 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     // The catch-up's, and the prediction's: the next tick as long. The laws are float (their
     // time too: a tick of at most seconds, to 6e-8 of itself; the engine's clock is integer µs).
     const float step = c.dt_s;
-    if (step > 0) {
+    // The axes' pieces are prepared together, here, and unprepared together (prepare_tether,
+    // above), so the first axis's step is every axis's: one test a tick, not one an axis
+    // (without axes the first law is never read).
+    if (step > 0 && st.laws[0].step_s != step) {
         for (int i = 0; i < n; ++i) {
-            if (st.laws[i].step_s != step) {
-                prepare_pieces(st.laws[i], step);
-                if (kKeepAhead) c.state->kept_ahead &= static_cast<uint8_t>(~(1u << i));  // predicted over another step
-                c.state->inverse_step = 1.0f / step;
-            }
+            prepare_pieces(st.laws[i], step);
+            if (kKeepAhead) c.state->kept_ahead &= static_cast<uint8_t>(~(1u << i));  // predicted over another step
         }
+        c.state->inverse_step = 1.0f / step;
     }
 
     const bool fresh = !c.state->initialized || !(step > 0);
