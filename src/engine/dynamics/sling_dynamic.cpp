@@ -149,12 +149,17 @@ void work_out_steps(SlingSteps& k, const SlingForm& law, int steps, float h_tota
 // operations on the same numbers, so the same bits.
 // Nor does it take the pull the catch-up ended with for the prediction's start
 // (Sling::end_pull), which it works out again.
+// Nor does a step hand the squared distance it ends at to the next (Sling::take_step): on
+// the in-order core nothing waits on the run's store and load, and summing at the next
+// step's start is smaller (12 bytes, 24 instructions a tick).
 #if defined(__OPTIMIZE_SIZE__)
 constexpr bool kSlotKeepsForm = false;
 constexpr bool kReusesEndPull = false;
+constexpr bool kStepHandsOnDistance = false;
 #else
 constexpr bool kSlotKeepsForm = true;
 constexpr bool kReusesEndPull = true;
+constexpr bool kStepHandsOnDistance = true;
 #endif
 
 struct Sling {
@@ -247,9 +252,9 @@ struct Sling {
     void advance_axes(Count n, const BallMotion& from, BallMotion* to, const BallHandlePath& handle,
                       float h_total, float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
-        begin(run, from, handle, h_total);
-        for (int step = 1; step < run.steps; ++step) take_step(run);
-        finish(run, to, impulse);
+        float r2 = begin(run, from, handle, h_total);
+        for (int step = 1; step < run.steps; ++step) r2 = take_step(run, r2);
+        finish(run, r2, to, impulse);
     }
 
     // Two slings' balls advanced together (advance_pair in ball_tick.hpp): each takes
@@ -268,18 +273,18 @@ struct Sling {
             using Two = std::integral_constant<int, 2>;
             VerletRun<Two> run_a(Two{});
             VerletRun<Two> run_b(Two{});
-            a.begin(run_a, from_a, handle_a, h_a);
-            b.begin(run_b, from_b, handle_b, h_b);
+            float r2_a = a.begin(run_a, from_a, handle_a, h_a);
+            float r2_b = b.begin(run_b, from_b, handle_b, h_b);
             const int together = std::min(run_a.steps, run_b.steps);
             int step = 1;
             for (; step < together; ++step) {
-                a.take_step(run_a);
-                b.take_step(run_b);
+                r2_a = a.take_step(run_a, r2_a);
+                r2_b = b.take_step(run_b, r2_b);
             }
-            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a);
-            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b);
-            a.finish(run_a, to_a, impulse_a);
-            b.finish(run_b, to_b, impulse_b);
+            for (int s = step; s < run_a.steps; ++s) r2_a = a.take_step(run_a, r2_a);
+            for (int s = step; s < run_b.steps; ++s) r2_b = b.take_step(run_b, r2_b);
+            a.finish(run_a, r2_a, to_a, impulse_a);
+            b.finish(run_b, r2_b, to_b, impulse_b);
             return;
         }
 #endif
@@ -336,9 +341,10 @@ struct Sling {
         move = taut ? run.form->steps.move_pull / distance - run.form->steps.move_rate : 0.0f;
     }
 
+    // Returns the squared distance the first step ended at (the next step's, or finish's).
     template <typename Count>
-    [[gnu::always_inline]] inline void begin(VerletRun<Count>& run, const BallMotion& ball, const BallHandlePath& handle,
-               float h_total) const noexcept {
+    [[gnu::always_inline]] inline float begin(VerletRun<Count>& run, const BallMotion& ball,
+                                              const BallHandlePath& handle, float h_total) const noexcept {
         const Count n = run.n;
         float relative[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
@@ -374,7 +380,7 @@ struct Sling {
         }
         if (bits << 1 == 0) {
             for (int i = 0; i < n; ++i) run.kicks[i] = 0;
-            return;
+            return r2;  // not read: no steps
         }
         // The steps the string's own rate asks for depend on the advance's length alone;
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
@@ -403,13 +409,18 @@ struct Sling {
             run.r[i] = moved;
             run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
+        return kStepHandsOnDistance ? squared_norm(n, run.r) : 0.0f;
     }
 
-    // The kicks between a step and the next, and the next step's drift.
+    // The kicks between a step and the next (at the squared distance r2 the last ended at),
+    // and the next step's drift; returns the squared distance this step ends at. Summed
+    // here, right after the move, the compiler takes the positions from the registers that
+    // computed them; summed at the next step's start, it loaded them back from the run on
+    // the stack, a store and a load on every step's chain.
     template <typename Count>
-    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run) const noexcept {
+    [[gnu::always_inline]] inline float take_step(VerletRun<Count>& run, float r2) const noexcept {
         const Count n = run.n;
-        const float r2 = squared_norm(n, run.r);
+        if (!kStepHandsOnDistance) r2 = squared_norm(n, run.r);
         float pull;
         float move_pull;
         step_pulls(run, r2, pull, move_pull);
@@ -424,16 +435,18 @@ struct Sling {
             run.r[i] = moved;
             run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
+        return kStepHandsOnDistance ? squared_norm(n, run.r) : 0.0f;
     }
 
-    // The last step's second half kick and air; the ball to *ball (none: a prediction,
-    // whose end no advance starts from, so its pull is not kept either).
+    // The last step's second half kick and air, at the squared distance r2 it ended at; the
+    // ball to *ball (none: a prediction, whose end no advance starts from, so its pull is not
+    // kept either).
     template <typename Count>
-    [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion* ball,
+    [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, float r2, BallMotion* ball,
                                               float impulse[kMaxAxes]) const noexcept {
         if (run.steps > 0) {
             const SlingSteps& k = run.form->steps;
-            const float r2 = squared_norm(run.n, run.r);
+            if (!kStepHandsOnDistance) r2 = squared_norm(run.n, run.r);
             const float pull = pull_at(*run.form, r2);
             if (kReusesEndPull && ball != nullptr) {
                 form.end_r2 = r2;
