@@ -148,7 +148,7 @@ void work_out_steps(SlingSteps& k, const SlingForm& law, int steps, float h_tota
 // law out each tick and keeps the steps for the tick only, in a form of its own; the same
 // operations on the same numbers, so the same bits.
 // Nor does it take the pull the catch-up ended with for the prediction's start
-// (Sling::end_pull), which it works out again.
+// (SlingForm::end_pull), which it works out again.
 // Nor does a step hand the squared distance it ends at to the next (Sling::take_step): on
 // the in-order core nothing waits on the run's store and load, and summing at the next
 // step's start is smaller (12 bytes, 24 instructions a tick).
