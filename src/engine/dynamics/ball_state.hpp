@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "feel/axis.hpp"
 
@@ -58,6 +59,11 @@ struct SlingForm {
     float rate_length = 0;   // ω²·L
     float rate = 0;          // ω
     SlingSteps steps{};
+    // The string's pull (per unit mass and of r) at the squared distance end_r2, as the
+    // last advance ended: the next advance starting there (this tick's prediction, the next
+    // tick's catch-up) starts at the same pull. NaN: none (a new law, work_out_law).
+    float end_r2 = std::numeric_limits<float>::quiet_NaN();
+    float end_pull = 0;
 };
 
 struct BallState {

@@ -142,6 +142,19 @@ inline void ball_add_reaction(const int* axes, int count, const float impulse[kM
     }
 }
 
+// The impulse of an advance from `now`, which stays as it is: Model::predict where the
+// model has it (the sling: it reads the ball where it lies), else an advance of a copy.
+template <typename Model>
+void ball_predict(const Model& model, const BallMotion& now, const BallHandlePath& expected, float step,
+                  float impulse[kMaxAxes]) noexcept {
+    if constexpr (requires { model.predict(now, expected, step, impulse); }) {
+        model.predict(now, expected, step, impulse);
+    } else {
+        BallMotion ahead = now;
+        model.advance(ahead, expected, step, impulse);
+    }
+}
+
 template <typename Model>
 void ball_tick(const Model& model, const int* axes, int count, const DynamicContext& c, float force[kMaxAxes]) noexcept {
     BallState& ball = c.state->ball;
@@ -155,9 +168,8 @@ void ball_tick(const Model& model, const int* axes, int count, const DynamicCont
     BallHandlePath expected;
     ball_expected_path(axes, count, c, fresh, expected);
     if (step > 0) {
-        BallMotion ahead = ball.now;
         float impulse[kMaxAxes] = {};
-        model.advance(ahead, expected, step, impulse);
+        ball_predict(model, ball.now, expected, step, impulse);
         ball_add_reaction(axes, count, impulse, step, force);
     } else {
         model.reaction(ball.now, c, force);
@@ -165,7 +177,7 @@ void ball_tick(const Model& model, const int* axes, int count, const DynamicCont
 }
 
 // Two balls' ticks, each exactly as ball_tick's, with their advances run side by side by
-// Model::advance_pair(model_a, ball, path, h, impulse, model_b, ...) (sling_dynamic.cpp
+// Model::advance_pair(model_a, from, to, path, h, impulse, model_b, ...) (sling_dynamic.cpp
 // says why). The balls' states are separate, so the parts' order between them is free.
 template <typename Model>
 void ball_tick_pair(const Model& model_a, const DynamicContext& a, float force_a[kMaxAxes], const Model& model_b,
@@ -183,8 +195,8 @@ void ball_tick_pair(const Model& model_a, const DynamicContext& a, float force_a
     float ignored_a[kMaxAxes] = {};
     float ignored_b[kMaxAxes] = {};
     if (catch_up_a && catch_up_b) {
-        Model::advance_pair(model_a, ball_a.now, seen_a, step_a, ignored_a, model_b, ball_b.now, seen_b, step_b,
-                            ignored_b);
+        Model::advance_pair(model_a, ball_a.now, &ball_a.now, seen_a, step_a, ignored_a, model_b, ball_b.now,
+                            &ball_b.now, seen_b, step_b, ignored_b);
     } else if (catch_up_a) {
         model_a.advance(ball_a.now, seen_a, step_a, ignored_a);
     } else if (catch_up_b) {
@@ -194,17 +206,15 @@ void ball_tick_pair(const Model& model_a, const DynamicContext& a, float force_a
     BallHandlePath expected_b;
     ball_expected_path(model_a.axes, model_a.count, a, fresh_a, expected_a);
     ball_expected_path(model_b.axes, model_b.count, b, fresh_b, expected_b);
-    BallMotion ahead_a = ball_a.now;
-    BallMotion ahead_b = ball_b.now;
     float impulse_a[kMaxAxes] = {};
     float impulse_b[kMaxAxes] = {};
     if (step_a > 0 && step_b > 0) {
-        Model::advance_pair(model_a, ahead_a, expected_a, step_a, impulse_a, model_b, ahead_b, expected_b, step_b,
-                            impulse_b);
+        Model::advance_pair(model_a, ball_a.now, nullptr, expected_a, step_a, impulse_a, model_b, ball_b.now, nullptr,
+                            expected_b, step_b, impulse_b);
     } else if (step_a > 0) {
-        model_a.advance(ahead_a, expected_a, step_a, impulse_a);
+        ball_predict(model_a, ball_a.now, expected_a, step_a, impulse_a);
     } else if (step_b > 0) {
-        model_b.advance(ahead_b, expected_b, step_b, impulse_b);
+        ball_predict(model_b, ball_b.now, expected_b, step_b, impulse_b);
     }
     if (step_a > 0) {
         ball_add_reaction(model_a.axes, model_a.count, impulse_a, step_a, force_a);

@@ -96,6 +96,7 @@ void work_out_law(SlingForm& law, const SlotParams& p, const EngineConfig& confi
     law.rate_squared = stiffness / law.mass;
     law.rate_length = law.rate_squared * law.length;
     law.rate = std::sqrt(law.rate_squared);
+    law.end_r2 = std::numeric_limits<float>::quiet_NaN();  // the old law's pull
 }
 
 // −k·(|r| − L)/|r| = k·L/|r| − k per unit of r and mass when taut, for |r|² = r2: the
@@ -108,10 +109,13 @@ float pull_at(const SlingForm& law, float r2) noexcept {
     return distance > law.length ? law.rate_length / distance - law.rate_squared : 0.0f;
 }
 
+// Summed from the first square, not from +0: 0 + x is x for every square (never −0) and
+// NaN, and the addition would lengthen the step's chain (sqrt, division, ...) by its latency.
 template <typename Count>
 float squared_norm(Count n, const float* r) noexcept {
-    float r2 = 0;
-    for (int i = 0; i < n; ++i) r2 += r[i] * r[i];
+    if (n <= 0) return 0;
+    float r2 = r[0] * r[0];
+    for (int i = 1; i < n; ++i) r2 += r[i] * r[i];
     return r2;
 }
 
@@ -144,13 +148,18 @@ void work_out_steps(SlingSteps& k, const SlingForm& law, int steps, float h_tota
 // law out each tick and keeps the steps for the tick only, in a form of its own; the same
 // operations on the same numbers, so the same bits.
 // Nor does it take the pull the catch-up ended with for the prediction's start
-// (Sling::end_pull), which it works out again.
+// (SlingForm::end_pull), which it works out again.
+// Nor does a step hand the squared distance it ends at to the next (Sling::take_step): on
+// the in-order core nothing waits on the run's store and load, and summing at the next
+// step's start is smaller (12 bytes, 24 instructions a tick).
 #if defined(__OPTIMIZE_SIZE__)
 constexpr bool kSlotKeepsForm = false;
 constexpr bool kReusesEndPull = false;
+constexpr bool kStepHandsOnDistance = false;
 #else
 constexpr bool kSlotKeepsForm = true;
 constexpr bool kReusesEndPull = true;
+constexpr bool kStepHandsOnDistance = true;
 #endif
 
 struct Sling {
@@ -159,10 +168,6 @@ struct Sling {
     DynamicState& state;      // the slot's: the ball, and the form (BallState::sling) once the ball is live
     int axes[kMaxAxes] = {};  // the device axis of each of the effect's axes
     int count = 0;            // the effect's axes
-    // The string's pull at the end of the last advance and the squared distance it is for:
-    // the prediction starts where the catch-up ended (ball_tick), at the same pull.
-    mutable float end_r2 = std::numeric_limits<float>::quiet_NaN();
-    mutable float end_pull = 0;
 #if defined(__OPTIMIZE_SIZE__)
     mutable SlingForm own_form;  // the form, as the slot keeps none (kSlotKeepsForm)
     SlingForm& form = own_form;
@@ -220,22 +225,36 @@ struct Sling {
     // image), where a second copy of the steps costs flash the board is short of.
     void advance(BallMotion& ball, const BallHandlePath& handle, float h_total,
                  float impulse[kMaxAxes]) const noexcept {
+        advance_from(ball, &ball, handle, h_total, impulse);
+    }
+
+    // The impulse of an advance from `ball`, which stays as it is (ball_tick's prediction):
+    // read where it lies, not copied (a copy's wide loads of what the catch-up has just
+    // stored one float at a time would wait for the stores to reach the cache).
+    void predict(const BallMotion& ball, const BallHandlePath& handle, float h_total,
+                 float impulse[kMaxAxes]) const noexcept {
+        advance_from(ball, nullptr, handle, h_total, impulse);
+    }
+
+    // An advance from `from`, its end written to *to (none: a prediction).
+    void advance_from(const BallMotion& from, BallMotion* to, const BallHandlePath& handle, float h_total,
+                      float impulse[kMaxAxes]) const noexcept {
 #if !defined(__OPTIMIZE_SIZE__)
         if (count == 2) {
-            advance_axes(std::integral_constant<int, 2>{}, ball, handle, h_total, impulse);
+            advance_axes(std::integral_constant<int, 2>{}, from, to, handle, h_total, impulse);
             return;
         }
 #endif
-        advance_axes(count, ball, handle, h_total, impulse);
+        advance_axes(count, from, to, handle, h_total, impulse);
     }
 
     template <typename Count>
-    void advance_axes(Count n, BallMotion& ball, const BallHandlePath& handle, float h_total,
-                      float impulse[kMaxAxes]) const noexcept {
+    void advance_axes(Count n, const BallMotion& from, BallMotion* to, const BallHandlePath& handle,
+                      float h_total, float impulse[kMaxAxes]) const noexcept {
         VerletRun<Count> run(n);
-        begin(run, ball, handle, h_total);
-        for (int step = 1; step < run.steps; ++step) take_step(run);
-        finish(run, ball, impulse);
+        float r2 = begin(run, from, handle, h_total);
+        for (int step = 1; step < run.steps; ++step) r2 = take_step(run, r2);
+        finish(run, r2, to, impulse);
     }
 
     // Two slings' balls advanced together (advance_pair in ball_tick.hpp): each takes
@@ -244,31 +263,33 @@ struct Sling {
     // move the next position needs); two independent chains side by side overlap in the
     // processor, so the pair costs about what one ball costs. The same operations on each
     // ball, so the same bits.
-    static void advance_pair(const Sling& a, BallMotion& ball_a, const BallHandlePath& handle_a, float h_a,
-                             float impulse_a[kMaxAxes], const Sling& b, BallMotion& ball_b,
-                             const BallHandlePath& handle_b, float h_b, float impulse_b[kMaxAxes]) noexcept {
+    // From `from_a` and `from_b`, their ends written to *to_a and *to_b (none: predictions).
+    static void advance_pair(const Sling& a, const BallMotion& from_a, BallMotion* to_a, const BallHandlePath& handle_a,
+                             float h_a, float impulse_a[kMaxAxes], const Sling& b, const BallMotion& from_b,
+                             BallMotion* to_b, const BallHandlePath& handle_b, float h_b,
+                             float impulse_b[kMaxAxes]) noexcept {
 #if !defined(__OPTIMIZE_SIZE__)
         if (a.count == 2 && b.count == 2) {
             using Two = std::integral_constant<int, 2>;
             VerletRun<Two> run_a(Two{});
             VerletRun<Two> run_b(Two{});
-            a.begin(run_a, ball_a, handle_a, h_a);
-            b.begin(run_b, ball_b, handle_b, h_b);
+            float r2_a = a.begin(run_a, from_a, handle_a, h_a);
+            float r2_b = b.begin(run_b, from_b, handle_b, h_b);
             const int together = std::min(run_a.steps, run_b.steps);
             int step = 1;
             for (; step < together; ++step) {
-                a.take_step(run_a);
-                b.take_step(run_b);
+                r2_a = a.take_step(run_a, r2_a);
+                r2_b = b.take_step(run_b, r2_b);
             }
-            for (int s = step; s < run_a.steps; ++s) a.take_step(run_a);
-            for (int s = step; s < run_b.steps; ++s) b.take_step(run_b);
-            a.finish(run_a, ball_a, impulse_a);
-            b.finish(run_b, ball_b, impulse_b);
+            for (int s = step; s < run_a.steps; ++s) r2_a = a.take_step(run_a, r2_a);
+            for (int s = step; s < run_b.steps; ++s) r2_b = b.take_step(run_b, r2_b);
+            a.finish(run_a, r2_a, to_a, impulse_a);
+            b.finish(run_b, r2_b, to_b, impulse_b);
             return;
         }
 #endif
-        a.advance(ball_a, handle_a, h_a, impulse_a);
-        b.advance(ball_b, handle_b, h_b, impulse_b);
+        a.advance_from(from_a, to_a, handle_a, h_a, impulse_a);
+        b.advance_from(from_b, to_b, handle_b, h_b, impulse_b);
     }
 
     // A ball between begin and finish: its state per effect axis, and the steps it takes.
@@ -320,9 +341,10 @@ struct Sling {
         move = taut ? run.form->steps.move_pull / distance - run.form->steps.move_rate : 0.0f;
     }
 
+    // Returns the squared distance the first step ended at (the next step's, or finish's).
     template <typename Count>
-    [[gnu::always_inline]] inline void begin(VerletRun<Count>& run, const BallMotion& ball, const BallHandlePath& handle,
-               float h_total) const noexcept {
+    [[gnu::always_inline]] inline float begin(VerletRun<Count>& run, const BallMotion& ball,
+                                              const BallHandlePath& handle, float h_total) const noexcept {
         const Count n = run.n;
         float relative[VerletRun<Count>::kCapacity];
         for (int i = 0; i < n; ++i) {
@@ -335,11 +357,13 @@ struct Sling {
         }
         const SlingForm& law = this->law();
         run.form = &law;
-        // The prediction starts where the catch-up ended: the pull finish worked out there.
+        // The prediction starts where the catch-up ended, and the next tick's catch-up where
+        // this one ended (its offset is to the handle sensed then): the pull finish worked
+        // out there, kept in the form (a square root and a division off the head of the chain).
         const float r2 = squared_norm(n, run.r);
         float pull;
-        if (kReusesEndPull && r2 == end_r2) {
-            pull = end_pull;
+        if (kReusesEndPull && r2 == law.end_r2) {
+            pull = law.end_pull;
         } else {
             pull = pull_at(law, r2);
         }
@@ -356,7 +380,7 @@ struct Sling {
         }
         if (bits << 1 == 0) {
             for (int i = 0; i < n; ++i) run.kicks[i] = 0;
-            return;
+            return r2;  // not read: no steps
         }
         // The steps the string's own rate asks for depend on the advance's length alone;
         // when the ball turns no faster (most ticks), they are the steps. Taken by a branch,
@@ -385,14 +409,18 @@ struct Sling {
             run.r[i] = moved;
             run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
+        return kStepHandsOnDistance ? squared_norm(n, run.r) : 0.0f;
     }
 
-    // The kicks between a step and the next, and the next step's drift.
+    // The kicks between a step and the next (at the squared distance r2 the last ended at),
+    // and the next step's drift; returns the squared distance this step ends at. Summed
+    // here, right after the move, the compiler takes the positions from the registers that
+    // computed them; summed at the next step's start, it loaded them back from the run on
+    // the stack, a store and a load on every step's chain.
     template <typename Count>
-    [[gnu::always_inline]] inline void take_step(VerletRun<Count>& run) const noexcept {
+    [[gnu::always_inline]] inline float take_step(VerletRun<Count>& run, float r2) const noexcept {
         const Count n = run.n;
-        float r2 = 0;
-        for (int i = 0; i < n; ++i) r2 += run.r[i] * run.r[i];
+        if (!kStepHandsOnDistance) r2 = squared_norm(n, run.r);
         float pull;
         float move_pull;
         step_pulls(run, r2, pull, move_pull);
@@ -407,18 +435,22 @@ struct Sling {
             run.r[i] = moved;
             run.drift[i] = k.h * (run.v[i] * k.drag_squared - run.path_velocity[i]) - run.r_low[i];
         }
+        return kStepHandsOnDistance ? squared_norm(n, run.r) : 0.0f;
     }
 
-    // The last step's second half kick and air.
+    // The last step's second half kick and air, at the squared distance r2 it ended at; the
+    // ball to *ball (none: a prediction, whose end no advance starts from, so its pull is not
+    // kept either).
     template <typename Count>
-    [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, BallMotion& ball, float impulse[kMaxAxes]) const noexcept {
+    [[gnu::always_inline]] inline void finish(VerletRun<Count>& run, float r2, BallMotion* ball,
+                                              float impulse[kMaxAxes]) const noexcept {
         if (run.steps > 0) {
             const SlingSteps& k = run.form->steps;
-            const float r2 = squared_norm(run.n, run.r);
+            if (!kStepHandsOnDistance) r2 = squared_norm(run.n, run.r);
             const float pull = pull_at(*run.form, r2);
-            if (kReusesEndPull) {
-                end_r2 = r2;
-                end_pull = pull;
+            if (kReusesEndPull && ball != nullptr) {
+                form.end_r2 = r2;
+                form.end_pull = pull;
             }
             for (int i = 0; i < run.n; ++i) {
                 const float kick = k.half_h * (pull * run.r[i]);
@@ -427,8 +459,10 @@ struct Sling {
             }
         }
         for (int i = 0; i < run.n; ++i) {
-            ball.offset[axes[i]] = run.r[i];
-            ball.velocity[axes[i]] = run.v[i];
+            if (ball != nullptr) {
+                ball->offset[axes[i]] = run.r[i];
+                ball->velocity[axes[i]] = run.v[i];
+            }
             impulse[axes[i]] = run.form->mass * run.kicks[i];
         }
     }
