@@ -22,7 +22,7 @@ namespace feel::detail {
     // a − whole: exact (a's fraction). Adding 0 or 1 rather than jumping over the addition
     // (whole + 0 is whole, whole being >= +0): the conditions' bumps round a coordinate
     // that moves a good part of the spacing a tick, so their fraction is above or below ½
-    // at random, and a jump on it was mispredicted about one tick in four (issue 14, twelfth
+    // at random, and a jump on it was mispredicted about one call in four (issue 14, twelfth
     // pass, "The conditions' branches"). The Cortex-M4F predicts no branch: the build for
     // size keeps the jump, shorter there.
 #if defined(__OPTIMIZE_SIZE__)

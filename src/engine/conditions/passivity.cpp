@@ -87,7 +87,7 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
         // forgiven in exact arithmetic must not leave its rounding residue in the ledger,
         // tick after tick. (Worked out whatever the booking's sign and then selected, without
         // a jump: on a wall in contact the booking is positive or not about every other tick,
-        // at random, and a jump on it was mispredicted about one tick in three: issue 14,
+        // at random, and a jump on it was mispredicted about one call in three: issue 14,
         // twelfth pass, "The conditions' branches".)
         const float rounding = (std::fabs(tick.ideal_energy_change) + std::fabs(work)) * kRoundingSlack;
         const float forgiven = generated - doubt;
