@@ -19,7 +19,17 @@ namespace feel::detail {
     const float a = std::fabs(x);
     if (!(a < 0x1p23f)) return x;  // whole already (from 2^23 on), ±inf or NaN
     float whole = static_cast<float>(static_cast<int32_t>(a));  // truncation, exact
-    if (a - whole >= 0.5f) whole += 1.0f;                         // a − whole: exact (a's fraction)
+    // a − whole: exact (a's fraction). Adding 0 or 1 rather than jumping over the addition
+    // (whole + 0 is whole, whole being >= +0): the conditions' bumps round a coordinate
+    // that moves a good part of the spacing a tick, so their fraction is above or below ½
+    // at random, and a jump on it was mispredicted about one call in four (issue 14, twelfth
+    // pass, "The conditions' branches"). The Cortex-M4F predicts no branch: the build for
+    // size keeps the jump, shorter there.
+#if defined(__OPTIMIZE_SIZE__)
+    if (a - whole >= 0.5f) whole += 1.0f;
+#else
+    whole += a - whole >= 0.5f ? 1.0f : 0.0f;
+#endif
     return std::copysign(whole, x);
 }
 

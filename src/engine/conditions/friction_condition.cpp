@@ -39,7 +39,11 @@ namespace {
 float deadband_gate(float relative_speed, float deadband) noexcept {
     if (!(deadband > 0)) return 1.0f;
     if (std::fabs(relative_speed) <= deadband) return 0.0f;  // t <= 0 below, without its division
-    const float t = (std::fabs(relative_speed) - deadband) / deadband;
+    const float beyond = std::fabs(relative_speed) - deadband;
+    // t >= 1 below, without its division: a quotient of beyond >= deadband > 0 rounds to 1 or
+    // more (a moving handle is mostly past twice the band).
+    if (beyond >= deadband) return 1.0f;
+    const float t = beyond / deadband;
     if (t <= 0) return 0.0f;
     if (t >= 1) return 1.0f;
     return t * t * (3.0f - 2.0f * t);

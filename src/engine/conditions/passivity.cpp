@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "feel/units.hpp"
+#include "float_select.hpp"
 #include "int64_to_float.hpp"
 
 namespace feel::detail {
@@ -81,14 +82,22 @@ float passive_port_force(ContactState& state, const PortTick& tick, bool control
         // books nothing; a move of n counts keeps (n² − 1)/n² of its k·Δs²/2.
         const float doubt =
             0.5f * std::fabs(tick.stiffness) * std::min(std::fabs(ds), tick.resolution) * tick.resolution;
-        if (generated > 0) {
-            // What is left within float's rounding of the two terms (a few ulps of each) is
-            // not energy anyone can tell from zero: a flicker forgiven in exact arithmetic
-            // must not leave its rounding residue in the ledger, tick after tick.
-            const float rounding = (std::fabs(tick.ideal_energy_change) + std::fabs(work)) * kRoundingSlack;
-            generated -= doubt;
-            if (generated <= rounding) generated = 0;
-        }
+        // Only a positive booking is forgiven. What is left within float's rounding of the
+        // two terms (a few ulps of each) is not energy anyone can tell from zero: a flicker
+        // forgiven in exact arithmetic must not leave its rounding residue in the ledger,
+        // tick after tick. (Worked out whatever the booking's sign and then selected, without
+        // a jump: on a wall in contact the booking is positive or not about every other tick,
+        // at random, and a jump on it was mispredicted about one call in three: issue 14,
+        // twelfth pass, "The conditions' branches".)
+        const float rounding = (std::fabs(tick.ideal_energy_change) + std::fabs(work)) * kRoundingSlack;
+        const float forgiven = generated - doubt;
+#if defined(__OPTIMIZE_SIZE__)
+        // (The Cortex-M4F predicts no branch: the build for size jumps, which is shorter.)
+        if (generated > 0) generated = forgiven <= rounding ? 0.0f : forgiven;
+#else
+        const float kept = select_float(forgiven <= rounding, 0.0f, forgiven);
+        generated = select_float(generated > 0, kept, generated);
+#endif
         if (std::isfinite(generated)) {
             // Exact from here on: an integer sum (passivity.hpp, "single precision").
             const float booked = std::clamp(generated, -kLargestBooking, kLargestBooking) * kLedgerScale;
