@@ -1,17 +1,23 @@
-// A selection between two floats that x86 makes without a branch (issue 14).
+// Selections between two floats that x86 makes without a branch (issue 14).
 //
 // The tick's waves choose between two worked-out values on data that changes every tick
-// (which eighth of a turn the sine is in, which half of a square's cycle). GCC compiles a
-// plain `c ? a : b` on floats into a conditional jump, which the busy mix's periods (5 to
-// 15 ticks a cycle) make unpredictable, and which resolves only at the end of the chain
-// that computes its condition. Masking the bits leaves a compare and three logical
-// operations, with the same float as the `?:` to the bit. The board's build for size (a
-// Cortex-M4F, whose branches cost a cycle or two and have nothing to mispredict) keeps the
-// `?:`: the same result in fewer bytes.
+// (which eighth of a turn the sine is in, which part of the cycle a wave is in). GCC
+// compiles a plain `c ? a : b` on floats into a conditional jump, which the busy mix's
+// periods (5 to 15 ticks a cycle) make unpredictable, and which resolves only at the end of
+// the chain that computes its condition. On x86 these are a compare that makes a mask and
+// three logical operations in the SSE registers; on another host the bits are masked in
+// integers; either way the same float as the `?:` to the bit (a compare with a NaN is false
+// in both). The board's build for size (a Cortex-M4F, whose branches cost a cycle or two
+// and have nothing to mispredict) keeps the `?:`: the same result in fewer bytes.
 #pragma once
 
 #include <bit>
 #include <cstdint>
+
+#if !defined(__OPTIMIZE_SIZE__) && defined(__SSE2__)
+#include <emmintrin.h>
+#define FEEL_SELECT_SSE 1
+#endif
 
 namespace feel::detail {
 
@@ -23,6 +29,26 @@ namespace feel::detail {
     const uint32_t mask = 0u - static_cast<uint32_t>(take);
     return std::bit_cast<float>((std::bit_cast<uint32_t>(if_true) & mask) |
                                 (std::bit_cast<uint32_t>(if_false) & ~mask));
+#endif
+}
+
+// x > y ? if_true : if_false.
+[[nodiscard]] inline float select_if_greater(float x, float y, float if_true, float if_false) noexcept {
+#if defined(FEEL_SELECT_SSE)
+    const __m128 mask = _mm_cmpgt_ps(_mm_set1_ps(x), _mm_set1_ps(y));
+    return _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set1_ps(if_true)), _mm_andnot_ps(mask, _mm_set1_ps(if_false))));
+#else
+    return select_float(x > y, if_true, if_false);
+#endif
+}
+
+// x >= y ? if_true : if_false.
+[[nodiscard]] inline float select_if_at_least(float x, float y, float if_true, float if_false) noexcept {
+#if defined(FEEL_SELECT_SSE)
+    const __m128 mask = _mm_cmpge_ps(_mm_set1_ps(x), _mm_set1_ps(y));
+    return _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set1_ps(if_true)), _mm_andnot_ps(mask, _mm_set1_ps(if_false))));
+#else
+    return select_float(x >= y, if_true, if_false);
 #endif
 }
 

@@ -53,7 +53,7 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 }  // namespace turn_trig_series
 
 // sin(2π·p), p in turns, |p| < 2^22 (the tick's arguments are within a few turns).
-// kWithoutJumps: each step's choice a select_float on x86, and the series of both eighths
+// kWithoutJumps: each step's choice a select_if_greater on x86, and the series of both eighths
 // worked out, for an argument whose place in the turn changes from tick to tick (a
 // periodic wave's sine: a mispredicted jump at the end of its chain costs more than the
 // work it skips). Otherwise jumps, for arguments that move slowly (a direction, a sweep):
@@ -61,28 +61,28 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 template <bool kWithoutJumps>
 [[nodiscard]] inline float sin_turns_by(float p) noexcept {
     using namespace turn_trig_series;
-    const auto choose = [](bool take, float if_true, float if_false) {
-        return kWithoutJumps ? select_float(take, if_true, if_false) : (take ? if_true : if_false);
+    // Each choice: x > y ? if_true : if_false.
+    const auto choose = [](float x, float y, float if_true, float if_false) {
+        return kWithoutJumps ? select_if_greater(x, y, if_true, if_false) : (x > y ? if_true : if_false);
     };
     // The nearest whole turn, by a conversion rather than floorf (a library call on both
     // targets): truncation toward zero, corrected below zero.
     const float shifted = p + 0.5f;
     const float truncated = static_cast<float>(static_cast<int32_t>(shifted));
-    const float whole = choose(truncated > shifted, truncated - 1.0f, truncated);
+    const float whole = choose(truncated, shifted, truncated - 1.0f, truncated);
     const float x = p - whole;  // [-0.5, 0.5]
-    const bool below_zero = x < 0.0f;
-    const float magnitude = choose(below_zero, -x, x);
-    const float a = choose(magnitude > 0.25f, 0.5f - magnitude, magnitude);  // [0, 0.25]: sin(π - θ) = sin θ
+    const float magnitude = choose(0.0f, x, -x, x);
+    const float a = choose(magnitude, 0.25f, 0.5f - magnitude, magnitude);  // [0, 0.25]: sin(π - θ) = sin θ
     float v;
 #if !defined(__OPTIMIZE_SIZE__)
     if constexpr (kWithoutJumps) {
-        v = select_float(a > 0.125f, sine_near_crest(a), sine_near_zero(a));
+        v = select_if_greater(a, 0.125f, sine_near_crest(a), sine_near_zero(a));
     } else
 #endif
     {
         v = a > 0.125f ? sine_near_crest(a) : sine_near_zero(a);
     }
-    return choose(below_zero, -v, v);
+    return choose(0.0f, x, -v, v);
 }
 
 [[nodiscard]] inline float sin_turns(float p) noexcept { return sin_turns_by<false>(p); }

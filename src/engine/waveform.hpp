@@ -71,8 +71,8 @@ inline constexpr LinearPiece kWaveformPieces[5][4] = {
                                                    : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
     float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) + phase_turns;
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.
-    p = select_float(p >= 1.0f, p - 1.0f, p);
-    return select_float(p >= 1.0f, 0.0f, p);
+    p = select_if_at_least(p, 1.0f, p - 1.0f, p);
+    return select_if_at_least(p, 1.0f, 0.0f, p);
 }
 
 }  // namespace feel::detail

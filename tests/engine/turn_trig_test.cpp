@@ -45,5 +45,25 @@ TEST(TurnTrig, NeverBeyondOne) {
     }
 }
 
+// The periodic waves' form, without jumps on x86: the same bounds against the same truth.
+TEST(TurnTrig, SineWithoutJumpsWithinTwoTenMillionthsOfDoubleSinOverSeveralTurns) {
+    double worst = 0;
+    for (int i = -3'000'000; i <= 3'000'000; ++i) {
+        const float p = static_cast<float>(i) * 1e-6f;
+        const double truth = std::sin(2.0 * std::numbers::pi * static_cast<double>(p));
+        worst = std::max(worst, std::fabs(static_cast<double>(sin_turns_without_jumps(p)) - truth));
+    }
+    EXPECT_LT(worst, 2e-7);
+}
+
+TEST(TurnTrig, SineWithoutJumpsExactAtTheCrestsAndZeros) {
+    for (float whole : {-2.0f, -1.0f, 0.0f, 1.0f, 3.0f}) {
+        EXPECT_EQ(sin_turns_without_jumps(whole), 0.0f);
+        EXPECT_EQ(sin_turns_without_jumps(whole + 0.5f), 0.0f);
+        EXPECT_EQ(sin_turns_without_jumps(whole + 0.25f), 1.0f);
+        EXPECT_EQ(sin_turns_without_jumps(whole + 0.75f), -1.0f);
+    }
+}
+
 }  // namespace
 }  // namespace feel::detail
