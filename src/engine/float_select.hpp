@@ -32,11 +32,18 @@ namespace feel::detail {
 #endif
 }
 
+#if defined(FEEL_SELECT_SSE)
+// Lane 0 of mask all ones ? if_true : if_false. The operands are broadcast (one shuffle
+// each): _mm_set_ss's zeroed upper lanes cost GCC a round trip through an integer register.
+[[nodiscard]] inline float select_by_mask(__m128 mask, float if_true, float if_false) noexcept {
+    return _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set1_ps(if_true)), _mm_andnot_ps(mask, _mm_set1_ps(if_false))));
+}
+#endif
+
 // x > y ? if_true : if_false.
 [[nodiscard]] inline float select_if_greater(float x, float y, float if_true, float if_false) noexcept {
 #if defined(FEEL_SELECT_SSE)
-    const __m128 mask = _mm_cmpgt_ps(_mm_set1_ps(x), _mm_set1_ps(y));
-    return _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set1_ps(if_true)), _mm_andnot_ps(mask, _mm_set1_ps(if_false))));
+    return select_by_mask(_mm_cmpgt_ps(_mm_set1_ps(x), _mm_set1_ps(y)), if_true, if_false);
 #else
     return select_float(x > y, if_true, if_false);
 #endif
@@ -45,8 +52,7 @@ namespace feel::detail {
 // x >= y ? if_true : if_false.
 [[nodiscard]] inline float select_if_at_least(float x, float y, float if_true, float if_false) noexcept {
 #if defined(FEEL_SELECT_SSE)
-    const __m128 mask = _mm_cmpge_ps(_mm_set1_ps(x), _mm_set1_ps(y));
-    return _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set1_ps(if_true)), _mm_andnot_ps(mask, _mm_set1_ps(if_false))));
+    return select_by_mask(_mm_cmpge_ps(_mm_set1_ps(x), _mm_set1_ps(y)), if_true, if_false);
 #else
     return select_float(x >= y, if_true, if_false);
 #endif
