@@ -14,13 +14,33 @@
 
 #include "feel/effect_type.hpp"
 #include "time_division.hpp"
+#include "float_select.hpp"
 #include "turn_trig.hpp"
 
 namespace feel::detail {
 
+// The square, the triangle and the saws are straight pieces over the quarters of the cycle:
+// at_zero + slope·p, the same float as the switch's expressions (a + (−b) is a − b to the
+// bit, and 0 + 4p is 4p for p ≥ 0).
+struct LinearPiece {
+    float at_zero;
+    float slope;
+};
+// By waveform (sine's row unused) and quarter of the cycle.
+inline constexpr LinearPiece kWaveformPieces[5][4] = {
+    {{0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}},        // sine: sin_turns
+    {{1.0f, 0.0f}, {1.0f, 0.0f}, {-1.0f, 0.0f}, {-1.0f, 0.0f}},      // square
+    {{0.0f, 4.0f}, {2.0f, -4.0f}, {2.0f, -4.0f}, {-4.0f, 4.0f}},     // triangle
+    {{-1.0f, 2.0f}, {-1.0f, 2.0f}, {-1.0f, 2.0f}, {-1.0f, 2.0f}},    // saw_up
+    {{1.0f, -2.0f}, {1.0f, -2.0f}, {1.0f, -2.0f}, {1.0f, -2.0f}},    // saw_down
+};
+
 // Single precision (issue 14); the sine is turn_trig.hpp's, the same bits on every platform.
 // Inline, as the rest of this header: every periodic wave calls them every tick.
+// On x86 without a branch on p (which changes every tick) nor on the waveform: the piece
+// is a table's row, and the sine is worked out for every waveform and selected.
 [[nodiscard]] inline float waveform_value(Waveform w, float p) noexcept {
+#if defined(__OPTIMIZE_SIZE__)
     switch (w) {
         case Waveform::sine: return sin_turns(p);
         case Waveform::square: return p < 0.5f ? 1.0f : -1.0f;
@@ -32,6 +52,12 @@ namespace feel::detail {
         case Waveform::saw_down: return 1.0f - 2.0f * p;
     }
     return 0.0f;
+#else
+    if (w == Waveform::sine) return sin_turns_without_jumps(p);
+    const int quarter = static_cast<int>(p >= 0.25f) + static_cast<int>(p >= 0.5f) + static_cast<int>(p >= 0.75f);
+    const LinearPiece& piece = kWaveformPieces[static_cast<int>(w)][quarter];
+    return piece.at_zero + piece.slope * p;
+#endif
 }
 
 // The cycle fraction at wave time tau_us (≥ 0), in [0, 1): the time into the cycle is
@@ -45,9 +71,8 @@ namespace feel::detail {
                                                    : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
     float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) + phase_turns;
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.
-    if (p >= 1.0f) p -= 1.0f;
-    if (p >= 1.0f) p = 0.0f;
-    return p;
+    p = select_if_at_least(p, 1.0f, p - 1.0f, p);
+    return select_if_at_least(p, 1.0f, 0.0f, p);
 }
 
 }  // namespace feel::detail
