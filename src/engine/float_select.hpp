@@ -1,15 +1,15 @@
 // Selections between two floats that x86 makes without a branch (issue 14).
 //
-// The tick chooses between two worked-out values on data that changes every tick (which
-// eighth of a turn a wave's sine is in, which part of the cycle a wave is in, the sign of a
-// wall's passivity booking as the handle wiggles across it). GCC
-// often compiles a plain `c ? a : b` on floats into a conditional jump, which such data
-// (the busy mix's periods: 5 to 15 ticks a cycle) makes unpredictable, and which resolves only at the end of
-// the chain that computes its condition. On x86 these are a compare that makes a mask and
-// three logical operations in the SSE registers; on another host the bits are masked in
-// integers; either way the same float as the `?:` to the bit (a compare with a NaN is false
-// in both). The board's build for size (a Cortex-M4F, whose branches cost a cycle or two
-// and have nothing to mispredict) keeps the `?:`: the same result in fewer bytes.
+// The tick chooses between two worked-out values on data that changes every tick (which eighth
+// of a turn a wave's sine is in, which part of the cycle a wave is in, the sign of a wall's
+// passivity booking as the handle wiggles across it). GCC often compiles a plain `c ? a : b` on
+// floats into a conditional jump, which such data (the busy mix's periods: 5 to 15 ticks a
+// cycle) makes unpredictable, and which resolves only at the end of the chain that computes its
+// condition. On x86 these are a compare that makes a mask and three logical operations in the
+// SSE registers; on another host the bits are masked in integers; either way the same float as
+// the `?:` to the bit (a compare with a NaN is false in both). The board's build for size (a
+// Cortex-M4F, whose branches cost a cycle or two and have nothing to mispredict) keeps the
+// `?:`: the same result in fewer bytes.
 #pragma once
 
 #include <bit>
