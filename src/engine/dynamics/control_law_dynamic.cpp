@@ -352,12 +352,19 @@ struct PlainLine {
         const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         const TetherAxisState& now = st.now[i];
+        // The handle is expected to go on along the line through its last two sensed
+        // positions; before there are two, at its estimated velocity.
+        const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
+        // The handle kept for the next tick and the mass reported before the prediction's
+        // call, which reads neither: none of their values is then held across it.
+        st.handle_position[i] = handle;
+        st.handle_velocity[i] = handle_velocity;
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
+        result.mass_position[a] = now.stretch;
+        result.mass_velocity[a] = now.velocity - frame_velocity;
         float pull = 0;
         bool keep = false;
         if (step > 0) {
-            // The handle is expected to go on along the line through its last two sensed
-            // positions; before there are two, at its estimated velocity.
-            const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
             const float gravity = gravity_in_frame(law, handle_acceleration);
             keep = keeps_ahead(law, handle_acceleration);
@@ -372,11 +379,6 @@ struct PlainLine {
             const auto bit = static_cast<uint8_t>(1u << i);
             c.state->kept_ahead = keep ? (c.state->kept_ahead | bit) : (c.state->kept_ahead & static_cast<uint8_t>(~bit));
         }
-        st.handle_position[i] = handle;
-        st.handle_velocity[i] = handle_velocity;
-        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
-        result.mass_position[a] = now.stretch;
-        result.mass_velocity[a] = now.velocity - frame_velocity;
     };
 #if defined(__OPTIMIZE_SIZE__)
     for (int i = 0; i < n; ++i) {
