@@ -165,63 +165,114 @@ bool take_kept_ahead(const DynamicState& d, int axis, float line_velocity, Tethe
 // since the last tick serves the catch-up and the prediction alike; most laws are plain
 // (recoil, impact, liquid, center drift), and the general loop's bookkeeping cost them
 // twice what their two propagators do.
-[[gnu::always_inline]] inline void plain_axis(const PreparedTether& law, TetherAxisState& now, float& last_position,
-                                              float& last_velocity, float handle, float handle_velocity,
-                                              float inverse_step, float hysteresis, float& pull) noexcept {
+//
+// The handle's line since the last tick, which the catch-up and the prediction share: its
+// velocity u, and the forces on a mass moving with it apart from the spring's and the
+// damper's (the weight less the drag's share).
+struct PlainLine {
+    float u;
+    float moving_force;
+};
+[[gnu::always_inline]] inline PlainLine plain_line(const PreparedTether& law, float last_position, float handle,
+                                                   float inverse_step) noexcept {
     const float u = (handle - last_position) * inverse_step;
-    const float weight = law.weight;
-    if (now.stretch == 0 && now.velocity == 0 && u == 0 && last_velocity == 0 && handle_velocity == 0 &&
-        weight == 0) {
-        // A mass at rest on a still handle with nothing pulling it: both propagators map
-        // (0, 0) to (0, 0) exactly and the impulse is 0 (a settled recoil, liquid or drift at
-        // rest: flush_subnormal brings a settling mass to exactly 0). The handle is where it was.
-        pull = 0;
-        return;
-    }
-    // The forces on a mass moving with the handle, apart from the spring: the same line
-    // for both, the damper reading last tick's estimate, then this tick's.
-    const float moving_force = weight - law.drag * u;
-    // Catch up along the sensed line.
-    float s = now.stretch;
-    float rate = now.velocity - u;
-    propagate(law.above, moving_force - law.b * (u - last_velocity), s, rate);
-    now.stretch = s;
-    now.velocity = rate + u;
-    flush_subnormal(now);
-    if (!finite(now)) now = initial_state(law, handle_velocity, hysteresis);  // never expected
-    // Predict along the same line: only the impulse is kept, M·Δv − M·g·h + d·(Δs + u·h),
-    // and M·Δv + d·Δs is a linear form of the caught-up state whose coefficients were
-    // prepared with the propagator (weighted_change): the predicted state is not needed.
-    const float change = weighted_change(law.prediction_form, moving_force - law.b * (u - handle_velocity),
-                                         now.stretch, now.velocity - u);
-    // predicted_impulse's sum, in its order (a build for size takes that path).
-    pull = -(change - law.weight_impulse + law.drag * (u * law.step_s)) * inverse_step;
-    last_position = handle;
-    last_velocity = handle_velocity;
+    return {u, law.weight - law.drag * u};
 }
 
-// A tick of an effect whose laws are all plain, once it catches up: its own loop, so that
-// none of the general loop's state is kept alive across it.
-[[gnu::noinline]] void plain_tick(const DynamicContext& c, ControlLawState& st, float inverse_step, float hysteresis,
-                                  float force[kMaxAxes], DynamicResult& result) noexcept {
+// A mass at rest on a still handle with nothing pulling it: both propagators map (0, 0) to
+// (0, 0) exactly and the impulse is 0 (a settled recoil, liquid or drift at rest:
+// flush_subnormal brings a settling mass to exactly 0). The handle is where it was.
+[[gnu::always_inline]] inline bool plain_at_rest(const PreparedTether& law, const TetherAxisState& now, float u,
+                                                 float last_velocity, float handle_velocity) noexcept {
+    return now.stretch == 0 && now.velocity == 0 && u == 0 && last_velocity == 0 && handle_velocity == 0 &&
+           law.weight == 0;
+}
+
+// The catch-up along the sensed line, its damper reading last tick's estimate: false, with
+// `now` untouched, when the caught-up state is not finite (never expected: the caller then
+// starts the mass afresh, plain_tick_afresh).
+[[gnu::always_inline]] inline bool plain_catch_up(const PreparedTether& law, TetherAxisState& now, PlainLine line,
+                                                  float last_velocity) noexcept {
+    TetherAxisState caught = now;
+    float rate = now.velocity - line.u;
+    propagate(law.above, line.moving_force - law.b * (line.u - last_velocity), caught.stretch, rate);
+    caught.velocity = rate + line.u;
+    flush_subnormal(caught);
+    if (!finite(caught)) return false;
+    now.stretch = caught.stretch;
+    now.velocity = caught.velocity;
+    return true;
+}
+
+// The prediction from the caught-up `now` along the same line, its damper reading this
+// tick's estimate: only the impulse is kept, M·Δv − M·g·h + d·(Δs + u·h), and M·Δv + d·Δs
+// is a linear form of the caught-up state whose coefficients were prepared with the
+// propagator (weighted_change): the predicted state is not needed. Returns the pull on the
+// handle, predicted_impulse's sum in its order (a build for size takes that path).
+[[gnu::always_inline]] inline float plain_predict(const PreparedTether& law, const TetherAxisState& now, PlainLine line,
+                                                  float handle_velocity, float inverse_step) noexcept {
+    const float change = weighted_change(law.prediction_form, line.moving_force - law.b * (line.u - handle_velocity),
+                                         now.stretch, now.velocity - line.u);
+    return -(change - law.weight_impulse + law.drag * (line.u * law.step_s)) * inverse_step;
+}
+
+// Axes i.. of a plain effect on a tick that catches up, the first of them started afresh
+// when `afresh`; returns the axis whose caught-up state was not finite (left for
+// plain_tick_afresh), or the axis count.
+[[gnu::always_inline]] inline int plain_axes(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result,
+                                             int i, bool afresh) noexcept {
     const SlotParams& p = *c.params;
-    for (int i = 0; i < p.axis_count; ++i) {
+    ControlLawState& st = c.state->law;
+    const float inverse_step = c.state->inverse_step;
+    for (; i < p.axis_count; ++i) {
         const int a = axis_index(p.axes[i]);
+        const PreparedTether& law = st.laws[i];
+        TetherAxisState& now = st.now[i];
+        const float handle = c.position[a];
         const float handle_velocity = c.velocity[a];
-        float pull;
-        plain_axis(st.laws[i], st.now[i], st.handle_position[i], st.handle_velocity[i], c.position[a], handle_velocity,
-                   inverse_step, hysteresis, pull);
+        const PlainLine line = plain_line(law, st.handle_position[i], handle, inverse_step);
+        float pull = 0;
+        if (afresh || !plain_at_rest(law, now, line.u, st.handle_velocity[i], handle_velocity)) {
+            if (afresh) {
+                now = initial_state(law, handle_velocity, c.config->sensor_step);
+                afresh = false;
+            } else if (!plain_catch_up(law, now, line, st.handle_velocity[i])) {
+                return i;
+            }
+            pull = plain_predict(law, now, line, handle_velocity, inverse_step);
+            st.handle_position[i] = handle;
+            st.handle_velocity[i] = handle_velocity;
+        }
         force[a] += std::isfinite(pull) ? pull : 0.0f;
         // The acceleration is read only in the handle's frame: a plain law keeps none.
-        result.mass_position[a] = st.now[i].stretch;
-        result.mass_velocity[a] = st.now[i].velocity - handle_velocity;
+        result.mass_position[a] = now.stretch;
+        result.mass_velocity[a] = now.velocity - handle_velocity;
     }
+    return i;
+}
+
+// The rest of plain_tick from axis i on, whose caught-up state was not finite: it starts
+// afresh (initial_state). Never expected; out of the loop's way, whose registers it would
+// otherwise have the loop save on every call.
+[[gnu::noinline, gnu::cold]] void plain_tick_afresh(const DynamicContext& c, float force[kMaxAxes],
+                                                    DynamicResult& result, int i) noexcept {
+    while (i < c.params->axis_count) i = plain_axes(c, force, result, i, true);
+}
+
+// A tick of an effect whose laws are all plain, once it catches up at the step they are
+// prepared for: its own loop, so that none of the general tick's state is kept alive
+// across it, and with no call on its way (no registers to save).
+[[gnu::noinline]] void plain_tick(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
+    const int i = plain_axes(c, force, result, 0, false);
+    if (i < c.params->axis_count) [[unlikely]] plain_tick_afresh(c, force, result, i);
 }
 #endif
 
-}  // namespace
-
-void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
+// Every tick of a control-law dynamic but a plain one's ordinary tick (control_law_dynamic):
+// the laws prepared when a command or the tick length asks, the first tick, and every tick
+// of a law with regions to track.
+[[gnu::noinline]] void control_law_tick(const DynamicContext& c, float force[kMaxAxes],
+                                        DynamicResult& result) noexcept {
     const SlotParams& p = *c.params;
     ControlLawState& st = c.state->law;
     const int32_t n = p.axis_count;
@@ -260,7 +311,7 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     // Not in a build for size (the Cortex-M4F image, whose flash is the tighter budget): the
     // general loop below does the same operations.
     if (catch_up && c.state->plain) {
-        plain_tick(c, st, inverse_step, hysteresis, force, result);
+        plain_tick(c, force, result);
         return;
     }
 #endif
@@ -301,12 +352,19 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
         const float handle_acceleration = c.acceleration != nullptr ? c.acceleration[a] : 0.0f;
         const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
         const TetherAxisState& now = st.now[i];
+        // The handle is expected to go on along the line through its last two sensed
+        // positions; before there are two, at its estimated velocity.
+        const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
+        // The handle kept for the next tick and the mass reported before the prediction's
+        // call, which reads neither: none of their values is then held across it.
+        st.handle_position[i] = handle;
+        st.handle_velocity[i] = handle_velocity;
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
+        result.mass_position[a] = now.stretch;
+        result.mass_velocity[a] = now.velocity - frame_velocity;
         float pull = 0;
         bool keep = false;
         if (step > 0) {
-            // The handle is expected to go on along the line through its last two sensed
-            // positions; before there are two, at its estimated velocity.
-            const float heading = fresh ? handle_velocity : (handle - st.handle_position[i]) * inverse_step;
             const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{heading, handle_velocity};
             const float gravity = gravity_in_frame(law, handle_acceleration);
             keep = keeps_ahead(law, handle_acceleration);
@@ -321,11 +379,6 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
             const auto bit = static_cast<uint8_t>(1u << i);
             c.state->kept_ahead = keep ? (c.state->kept_ahead | bit) : (c.state->kept_ahead & static_cast<uint8_t>(~bit));
         }
-        st.handle_position[i] = handle;
-        st.handle_velocity[i] = handle_velocity;
-        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
-        result.mass_position[a] = now.stretch;
-        result.mass_velocity[a] = now.velocity - frame_velocity;
     };
 #if defined(__OPTIMIZE_SIZE__)
     for (int i = 0; i < n; ++i) {
@@ -337,6 +390,22 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     for (int i = 0; i < n; ++i) predict_axis(i);
 #endif
     c.state->initialized = true;
+}
+
+}  // namespace
+
+void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+    // Most ticks of most effects are a plain law's (recoil, impact, liquid, center drift)
+    // that catches up at the step its laws are prepared for: straight to its loop, before
+    // the general tick saves a register or reads its state.
+    const DynamicState& d = *c.state;
+    if (d.plain && d.prepared && d.initialized && c.dt_s > 0 && d.law.laws[0].step_s == c.dt_s) {
+        plain_tick(c, force, result);
+        return;
+    }
+#endif
+    control_law_tick(c, force, result);
 }
 
 }  // namespace feel::detail
