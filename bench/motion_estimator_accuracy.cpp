@@ -1,4 +1,4 @@
-// The velocity estimator's accuracy figures (docs/stability.md, "The velocity estimator"):
+// The velocity estimator's accuracy figures (docs/tick-cost.md, "The velocity estimator"):
 // the quantities the accuracy tests bound, measured on quantized motions whose true speed
 // is known in closed form, printed as markdown rows. Run it before and after a change to
 // the estimator to compare them side by side.

@@ -464,7 +464,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         const EffectClass cls = s.cls;
         if (cls == EffectClass::dynamic) {
             // A dynamic adds its force in float (the paddle's contact, which steps in double,
-            // rounds its push once: docs/stability.md, "Where double remains").
+            // rounds its push once: docs/tick-cost.md, "Where double remains").
             const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
                                                  s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
             detail::DynamicResult result;

@@ -81,7 +81,7 @@
 // time pattern, the newest samples gathered once a tick and checked as vectors; the board
 // (-Os) keeps one path for each (flash, RAM). Both give the same bits.
 // On bench/motion_estimator_accuracy.cpp's motions it gives the general path's figures
-// (docs/stability.md has both side by side).
+// (docs/tick-cost.md has both side by side).
 // Times are fitted as u = -age / kMaxWindowUs, in [-1, 0]. Each term of Cramer's rule for a
 // window of span σ scales as the same power of σ, so fitting in these fixed units has the
 // rounding of fitting in [-1, 0] per window: single precision is enough (the normal

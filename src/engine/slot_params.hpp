@@ -81,7 +81,7 @@ struct SlotPeriodicBlock {
 
     // Worked out once per command from the fields above (prepare_periodic_block), so that the
     // tick does not: each is the value the tick's expression gave, with the same operations,
-    // so the forces are the same bits (docs/stability.md, "The waves' tick, eleventh pass").
+    // so the forces are the same bits (docs/tick-cost.md, "The waves' tick, eleventh pass").
     // They lie in the union's room (its largest member is a spring's curves, 52 bytes on 2
     // axes; this block is 48): the slot does not grow.
     float phase_turns = 0.0f;          // phase / 36000: where in the cycle τ = 0 lies

@@ -51,7 +51,7 @@ TEST(FloatRound, EqualsLibmOnTheBinadesWhereItMatters) {
 }
 
 // Every 1021st float of the whole range, both signs and every binade (the check over all
-// 2^32 was run once, docs/stability.md); with the halves k + ½ below 4096 and their
+// 2^32 was run once, docs/tick-cost.md); with the halves k + ½ below 4096 and their
 // neighbours.
 TEST(FloatRound, RoundsAsLibmAcrossEveryBinade) {
     int64_t differ = 0;

@@ -53,7 +53,7 @@ namespace {
 // The out-of-contact way below costs about 100 bytes of Thumb code in the barrier: a build
 // for size (the Cortex-M4F firmware, whose flash is at its goal) leaves it out, as friction's
 // lean way, and every tick takes the general way, which gives the same force (the wall keeps
-// its way everywhere: docs/stability.md, "Walls and barriers out of contact").
+// its way everywhere: docs/tick-cost.md, "Walls and barriers out of contact").
 #if defined(__OPTIMIZE_SIZE__)
 inline constexpr bool kBarrierOutOfContactWay = false;
 #else

@@ -98,7 +98,7 @@ inline void add_force_along(const ConditionContext& c, const float* u, float val
 // The curve of a block: the single-precision constants condition_response needs.
 [[nodiscard]] ConditionCurve curve_of(const ConditionBlock& b) noexcept;
 
-// The families, one file each, all single precision (issue 14; docs/stability.md, "Where
+// The families, one file each, all single precision (issue 14; docs/tick-cost.md, "Where
 // double remains", for the few double constants left).
 void spring_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;   // spring, angle_spring
 void damper_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept;
