@@ -47,16 +47,15 @@ constexpr bool oscillates(EffectType t) noexcept {
 static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_sine) &&
               !oscillates(EffectType::force_profile) && !oscillates(EffectType::smart_pop));
 
-// The first slot in [from, end) holding a Dynamic Sling that plays this tick, or -1, with
-// its clock: the tick loop's own test (its state, its clock after this tick's dt_us), made
-// ahead of the loop reaching it so that two slings can render together
-// (detail::render_sling_pair).
-int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t dt_us,
-                           detail::ClockReading& clock) noexcept {
-    for (int32_t j = from; j < end; ++j) {
+// The first slot above slot i (a sling) holding a Dynamic Sling that plays this tick, or -1,
+// with its clock: the tick loop's own test (its state, its clock after this tick's dt_us),
+// made ahead of the loop reaching it so that two slings can render together
+// (detail::render_sling_pair). It visits the slings only, along their chain
+// (DynamicRecord::next_sling: every created sling above i, in slot order).
+int32_t next_playing_sling(const Slot* slots, int32_t i, int64_t dt_us, detail::ClockReading& clock) noexcept {
+    for (int32_t j = slots[i].dynamic_memory->next_sling; j >= 0; j = slots[j].dynamic_memory->next_sling) {
         const Slot& t = slots[j];
-        if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
-        if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
+        if (t.state == EffectState::stopped) continue;  // a sling in the chain is never free
         const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
         clock = t.clock(elapsed_us);
         if (clock.phase == ClockPhase::playing) return j;
@@ -76,7 +75,7 @@ struct SlingPairing {
 // The sling in slot i (context c) into force and result: what waits for it, or it and the
 // next playing sling together, or it alone. Out of line, so that the tick's loop over every
 // slot keeps its registers (inline, this cost the loop about 10 instructions a slot).
-[[gnu::noinline]] void render_sling(SlingPairing& pairing, Slot* slots, int32_t i, int32_t end, int64_t dt_us,
+[[gnu::noinline]] void render_sling(SlingPairing& pairing, Slot* slots, int32_t i, int64_t dt_us,
                                     const detail::DynamicContext& c, float force[kMaxAxes],
                                     detail::DynamicResult& result) noexcept {
     if (i == pairing.waiting) {
@@ -85,7 +84,7 @@ struct SlingPairing {
         return;
     }
     detail::ClockReading clock;
-    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i + 1, end, dt_us, clock);
+    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i, dt_us, clock);
     if (other < 0) {
         detail::render_dynamic(c, force, result);
         return;
@@ -295,6 +294,7 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     m.prepare_new(s);
     m.reset_memory(s);
     if (index >= m.slot_end) m.slot_end = index + 1;
+    if (params.type == EffectType::dynamic_sling) m.link_slings();
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
 
@@ -396,6 +396,13 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.acceleration_scale = static_cast<float>(kFullScale) / m.config.acceleration_ref;
     condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
+    // What every dynamic sees alike this tick, likewise.
+    detail::DynamicContext dynamic;
+    dynamic.config = &m.config;
+    dynamic.position = in.position;
+    dynamic.velocity = velocity;
+    dynamic.acceleration = acceleration;
+    dynamic.dt_s = dt_s;
     int32_t last_count = 0;
     SlingPairing pairing;
     Slot* const slots = m.slots.get();  // once: the loop's stores could alias the member
@@ -465,11 +472,13 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         if (cls == EffectClass::dynamic) {
             // A dynamic adds its force in float (the paddle's contact, which steps in double,
             // rounds its push once: docs/stability.md, "Where double remains").
-            const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
-                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
+            dynamic.params = &s.params;
+            dynamic.start_position = s.start_position;
+            dynamic.tau_us = clock.tau_us;
+            dynamic.state = &s.dynamic_memory->state;
             detail::DynamicResult result;
             if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling) {
-                render_sling(pairing, slots, i, slot_end, dt_us, dynamic, force, result);
+                render_sling(pairing, slots, i, dt_us, dynamic, force, result);
             } else {
                 detail::render_dynamic(dynamic, force, result);
             }

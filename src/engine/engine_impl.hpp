@@ -24,6 +24,12 @@ struct DynamicRecord {
     SlotDynamicBlock block{};
     DynamicState state{};
     int64_t next_interim_us = 0;  // when the next interim report is due
+#if !defined(__OPTIMIZE_SIZE__)
+    // A Dynamic Sling's: the next slot above its own that holds a created sling, or -1
+    // (Engine::Impl::link_slings). The tick's pairing of slings (kPairSlings, x86) follows
+    // this chain instead of testing every slot between two slings.
+    int32_t next_sling = -1;
+#endif
 };
 
 // A dynamic report as the engine's queue holds it (Engine::pop_report widens it to the
@@ -314,6 +320,21 @@ struct Engine::Impl {
         s.state = EffectState::free;
         ++s.generation;
         while (slot_end > 0 && slots[slot_end - 1].state == EffectState::free) --slot_end;
+        if (s.params.type == EffectType::dynamic_sling) link_slings();
+    }
+
+    // The slings' chain (DynamicRecord::next_sling), linked again after a sling is created
+    // or freed: each created sling's record names the next slot above it holding one.
+    void link_slings() noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+        int32_t next = -1;
+        for (int32_t j = slot_end - 1; j >= 0; --j) {
+            detail::Slot& t = slots[j];
+            if (t.state == EffectState::free || t.params.type != EffectType::dynamic_sling) continue;
+            t.dynamic_memory->next_sling = next;
+            next = j;
+        }
+#endif
     }
 
     // Stops a slot by command; a play that was under way ends as `stopped`.
