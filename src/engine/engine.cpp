@@ -52,7 +52,9 @@ static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_s
 // made ahead of the loop reaching it so that two slings can render together
 // (detail::render_sling_pair). It visits the slings only, along their chain
 // (DynamicRecord::next_sling: every created sling above i, in slot order).
-int32_t next_playing_sling(const Slot* slots, int32_t i, int64_t dt_us, detail::ClockReading& clock) noexcept {
+int32_t next_playing_sling([[maybe_unused]] const Slot* slots, [[maybe_unused]] int32_t i,
+                           [[maybe_unused]] int64_t dt_us, [[maybe_unused]] detail::ClockReading& clock) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)  // kPairSlings: the chain is x86's
     for (int32_t j = slots[i].dynamic_memory->next_sling; j >= 0; j = slots[j].dynamic_memory->next_sling) {
         const Slot& t = slots[j];
         if (t.state == EffectState::stopped) continue;  // a sling in the chain is never free
@@ -60,6 +62,7 @@ int32_t next_playing_sling(const Slot* slots, int32_t i, int64_t dt_us, detail::
         clock = t.clock(elapsed_us);
         if (clock.phase == ClockPhase::playing) return j;
     }
+#endif
     return -1;
 }
 
