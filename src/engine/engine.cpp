@@ -206,8 +206,18 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.reads_acceleration = s.params.type == EffectType::inertia || s.params.type == EffectType::dynamic_inertia;
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
-    s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
-    s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
+    const EffectType type = s.params.type;
+    if (s.cls == EffectClass::wave) {
+        s.route = !is_scalar_wave(s.params) ? detail::SlotRoute::wave
+                  : oscillates(type)        ? detail::SlotRoute::periodic
+                                            : detail::SlotRoute::scalar_wave;
+    } else if (s.cls == EffectClass::condition) {
+        s.route = type == EffectType::friction || type == EffectType::texture ? detail::SlotRoute::renders_last
+                                                                              : detail::SlotRoute::condition;
+    } else {
+        s.route = detail::kPairSlings && type == EffectType::dynamic_sling ? detail::SlotRoute::sling
+                                                                          : detail::SlotRoute::dynamic;
+    }
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
     detail::element_direction(s.params, s.direction);  // walls and barriers: u across the surface
 }
@@ -439,12 +449,13 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
         ++playing;
 
-        if (s.scalar_wave) {
+        const detail::SlotRoute route = s.route;
+        if (route <= detail::SlotRoute::scalar_wave) {
             // Most waves: one value along a fixed direction, gain included (prepare_slot).
             // A scalar wave that oscillates is a periodic (sweeps are not scalar): on x86 the
             // tick calls it without scalar_wave_value's dispatch on the type, which would
             // take the same call (its default).
-            const bool periodic = oscillates(s.params.type);
+            const bool periodic = route == detail::SlotRoute::periodic;
             float value = 0.0f;
             if (kCallsPeriodicDirectly && periodic) {
                 value = detail::periodic_wave(s.params, s.waveform, clock.tau_us);
@@ -470,9 +481,12 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             }
             continue;
         }
+        if (route == detail::SlotRoute::renders_last) {
+            m.last_slots[last_count++] = static_cast<uint16_t>(i);
+            continue;
+        }
         float force[kMaxAxes] = {};
-        const EffectClass cls = s.cls;
-        if (cls == EffectClass::dynamic) {
+        if (route >= detail::SlotRoute::dynamic) {
             // A dynamic adds its force in float (the paddle's contact, which steps in double,
             // rounds its push once: docs/stability.md, "Where double remains").
             dynamic.params = &s.params;
@@ -480,7 +494,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             dynamic.tau_us = clock.tau_us;
             dynamic.state = &s.dynamic_memory->state;
             detail::DynamicResult result;
-            if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling) {
+            if (detail::kPairSlings && route == detail::SlotRoute::sling) {
                 render_sling(pairing, slots, i, dt_us, dynamic, force, result);
             } else {
                 detail::render_dynamic(dynamic, force, result);
@@ -492,11 +506,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                 --playing;
                 continue;  // its last force is not applied: the event is over
             }
-        } else if (cls == EffectClass::condition) {
-            if (s.renders_last) {
-                m.last_slots[last_count++] = static_cast<uint16_t>(i);
-                continue;
-            }
+        } else if (route == detail::SlotRoute::condition) {
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;

@@ -46,6 +46,14 @@ struct QueuedReport {
     float handle_velocity[kMaxAxes] = {};
 };
 
+// How the tick renders a slot, worked out once by prepare_slot from its type, class and
+// parameters, so that the tick tests one byte: a scalar wave (value · direction,
+// is_scalar_wave) that is a periodic or not; any other wave; a condition; friction and
+// texture, which render after every other effect of the tick (their stiction holds against
+// what the others push with this tick: ConditionContext::others_force); a dynamic; a
+// Dynamic Sling, rendered with the next playing one (kPairSlings; elsewhere a dynamic).
+enum class SlotRoute : uint8_t { periodic, scalar_wave, wave, condition, renders_last, dynamic, sling };
+
 struct Slot {
     SlotParams params{};  // the header and its type's block (slot_params.hpp)
     // The clock: the effect time of the current or last play, advanced by the tick's length
@@ -87,10 +95,7 @@ struct Slot {
     EffectClass cls = EffectClass::wave;
     bool reads_acceleration = false;     // inertia, or Dynamic Inertia
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
-    bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
-    // Friction and texture render after every other effect of the tick: their stiction holds
-    // against what the others push with this tick (ConditionContext::others_force).
-    bool renders_last = false;
+    SlotRoute route = SlotRoute::wave;   // how the tick renders it (prepare_slot)
     EffectState state = EffectState::free;
     bool began_playing = false;          // start_position is set
     PlayEnd last_end = PlayEnd::none;    // how the last play ended
