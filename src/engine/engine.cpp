@@ -250,6 +250,18 @@ constexpr bool kCallsPeriodicDirectly = true;
 constexpr bool kCallsPeriodicDirectly = false;
 #endif
 
+// What a condition's and a dynamic's context (alike in these fields) share with every other
+// of the tick: set once a tick, not per effect.
+template <class Context>
+void set_shared_motion(Context& c, const EngineConfig& config, const float* position, const float* velocity,
+                       const float* acceleration, float dt_s) noexcept {
+    c.config = &config;
+    c.position = position;
+    c.velocity = velocity;
+    c.acceleration = acceleration;
+    c.dt_s = dt_s;
+}
+
 // Gains are in units of 1/kFullScale: a multiplication by this, not a division per effect.
 constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
 
@@ -398,11 +410,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     const int32_t slot_end = m.paused ? 0 : m.slot_end;
     // What every condition sees alike this tick; the loop fills in each one's own part.
     detail::ConditionContext condition;
-    condition.config = &m.config;
-    condition.position = in.position;
-    condition.velocity = velocity;
-    condition.acceleration = acceleration;
-    condition.dt_s = dt_s;
+    set_shared_motion(condition, m.config, in.position, velocity, acceleration, dt_s);
     condition.reported_position = out.reported_position;
     condition.axes = axes;
     condition.velocity_scale = static_cast<float>(kFullScale) / m.config.velocity_ref;
@@ -411,11 +419,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
     // What every dynamic sees alike this tick, likewise.
     detail::DynamicContext dynamic;
-    dynamic.config = &m.config;
-    dynamic.position = in.position;
-    dynamic.velocity = velocity;
-    dynamic.acceleration = acceleration;
-    dynamic.dt_s = dt_s;
+    set_shared_motion(dynamic, m.config, in.position, velocity, acceleration, dt_s);
     int32_t last_count = 0;
     SlingPairing pairing;
     Slot* const slots = m.slots.get();  // once: the loop's stores could alias the member
