@@ -47,20 +47,22 @@ constexpr bool oscillates(EffectType t) noexcept {
 static_assert(oscillates(EffectType::saw_down) && oscillates(EffectType::sweep_sine) &&
               !oscillates(EffectType::force_profile) && !oscillates(EffectType::smart_pop));
 
-// The first slot in [from, end) holding a Dynamic Sling that plays this tick, or -1, with
-// its clock: the tick loop's own test (its state, its clock after this tick's dt_us), made
-// ahead of the loop reaching it so that two slings can render together
-// (detail::render_sling_pair).
-int32_t next_playing_sling(const Slot* slots, int32_t from, int32_t end, int64_t dt_us,
-                           detail::ClockReading& clock) noexcept {
-    for (int32_t j = from; j < end; ++j) {
+// The first slot above slot i (a sling) holding a Dynamic Sling that plays this tick, or -1,
+// with its clock: the tick loop's own test (its state, its clock after this tick's dt_us),
+// made ahead of the loop reaching it so that two slings can render together
+// (detail::render_sling_pair). It visits the slings only, along their chain
+// (DynamicRecord::next_sling: every created sling above i, in slot order).
+int32_t next_playing_sling([[maybe_unused]] const Slot* slots, [[maybe_unused]] int32_t i,
+                           [[maybe_unused]] int64_t dt_us, [[maybe_unused]] detail::ClockReading& clock) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)  // kPairSlings: the chain is x86's
+    for (int32_t j = slots[i].dynamic_memory->next_sling; j >= 0; j = slots[j].dynamic_memory->next_sling) {
         const Slot& t = slots[j];
-        if (t.cls != EffectClass::dynamic || t.params.type != EffectType::dynamic_sling) continue;
-        if (t.state == EffectState::free || t.state == EffectState::stopped) continue;
+        if (t.state == EffectState::stopped) continue;  // a sling in the chain is never free
         const int64_t elapsed_us = t.state == EffectState::pending ? 0 : t.elapsed_us + dt_us;
         clock = t.clock(elapsed_us);
         if (clock.phase == ClockPhase::playing) return j;
     }
+#endif
     return -1;
 }
 
@@ -76,7 +78,7 @@ struct SlingPairing {
 // The sling in slot i (context c) into force and result: what waits for it, or it and the
 // next playing sling together, or it alone. Out of line, so that the tick's loop over every
 // slot keeps its registers (inline, this cost the loop about 10 instructions a slot).
-[[gnu::noinline]] void render_sling(SlingPairing& pairing, Slot* slots, int32_t i, int32_t end, int64_t dt_us,
+[[gnu::noinline]] void render_sling(SlingPairing& pairing, Slot* slots, int32_t i, int64_t dt_us,
                                     const detail::DynamicContext& c, float force[kMaxAxes],
                                     detail::DynamicResult& result) noexcept {
     if (i == pairing.waiting) {
@@ -85,7 +87,7 @@ struct SlingPairing {
         return;
     }
     detail::ClockReading clock;
-    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i + 1, end, dt_us, clock);
+    const int32_t other = detail::sling_rests(c) ? -1 : next_playing_sling(slots, i, dt_us, clock);
     if (other < 0) {
         detail::render_dynamic(c, force, result);
         return;
@@ -204,8 +206,18 @@ void detail::prepare_slot(Slot& s) noexcept {
     s.reads_acceleration = s.params.type == EffectType::inertia || s.params.type == EffectType::dynamic_inertia;
     s.gain_factor = static_cast<float>(s.params.gain) * (1.0f / static_cast<float>(kFullScale));
     s.render_condition = s.cls == EffectClass::condition ? condition_renderer(s.params) : nullptr;
-    s.renders_last = s.params.type == EffectType::friction || s.params.type == EffectType::texture;
-    s.scalar_wave = s.cls == EffectClass::wave && is_scalar_wave(s.params);
+    const EffectType type = s.params.type;
+    if (s.cls == EffectClass::wave) {
+        s.route = !is_scalar_wave(s.params) ? detail::SlotRoute::wave
+                  : oscillates(type)        ? detail::SlotRoute::periodic
+                                            : detail::SlotRoute::scalar_wave;
+    } else if (s.cls == EffectClass::condition) {
+        s.route = type == EffectType::friction || type == EffectType::texture ? detail::SlotRoute::renders_last
+                                                                              : detail::SlotRoute::condition;
+    } else {
+        s.route = detail::kPairSlings && type == EffectType::dynamic_sling ? detail::SlotRoute::sling
+                                                                          : detail::SlotRoute::dynamic;
+    }
     for (int a = 0; a < kMaxAxes; ++a) s.direction_gain[a] = s.direction[a] * s.gain_factor;
     detail::element_direction(s.params, s.direction);  // walls and barriers: u across the surface
 }
@@ -237,6 +249,18 @@ constexpr bool kCallsPeriodicDirectly = true;
 #else
 constexpr bool kCallsPeriodicDirectly = false;
 #endif
+
+// What a condition's and a dynamic's context (alike in these fields) share with every other
+// of the tick: set once a tick, not per effect.
+template <class Context>
+void set_shared_motion(Context& c, const EngineConfig& config, const float* position, const float* velocity,
+                       const float* acceleration, float dt_s) noexcept {
+    c.config = &config;
+    c.position = position;
+    c.velocity = velocity;
+    c.acceleration = acceleration;
+    c.dt_s = dt_s;
+}
 
 // Gains are in units of 1/kFullScale: a multiplication by this, not a division per effect.
 constexpr float kPerFullScale = 1.0f / static_cast<float>(kFullScale);
@@ -295,6 +319,7 @@ CreateResult Engine::create(const EffectParams& params, std::span<const int16_t>
     m.prepare_new(s);
     m.reset_memory(s);
     if (index >= m.slot_end) m.slot_end = index + 1;
+    if (params.type == EffectType::dynamic_sling) m.link_slings();
     return {EffectId{static_cast<uint16_t>(index), s.generation}, {}};
 }
 
@@ -385,17 +410,16 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
     const int32_t slot_end = m.paused ? 0 : m.slot_end;
     // What every condition sees alike this tick; the loop fills in each one's own part.
     detail::ConditionContext condition;
-    condition.config = &m.config;
-    condition.position = in.position;
-    condition.velocity = velocity;
-    condition.acceleration = acceleration;
-    condition.dt_s = dt_s;
+    set_shared_motion(condition, m.config, in.position, velocity, acceleration, dt_s);
     condition.reported_position = out.reported_position;
     condition.axes = axes;
     condition.velocity_scale = static_cast<float>(kFullScale) / m.config.velocity_ref;
     condition.acceleration_scale = static_cast<float>(kFullScale) / m.config.acceleration_ref;
     condition.applied_force = m.applied_force;  // friction's stop guard: last tick's force
     condition.device_gain = static_cast<float>(m.device_gain) * kPerFullScale;
+    // What every dynamic sees alike this tick, likewise.
+    detail::DynamicContext dynamic;
+    set_shared_motion(dynamic, m.config, in.position, velocity, acceleration, dt_s);
     int32_t last_count = 0;
     SlingPairing pairing;
     Slot* const slots = m.slots.get();  // once: the loop's stores could alias the member
@@ -429,12 +453,13 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
         }
         ++playing;
 
-        if (s.scalar_wave) {
+        const detail::SlotRoute route = s.route;
+        if (route <= detail::SlotRoute::scalar_wave) {
             // Most waves: one value along a fixed direction, gain included (prepare_slot).
             // A scalar wave that oscillates is a periodic (sweeps are not scalar): on x86 the
             // tick calls it without scalar_wave_value's dispatch on the type, which would
             // take the same call (its default).
-            const bool periodic = oscillates(s.params.type);
+            const bool periodic = route == detail::SlotRoute::periodic;
             float value = 0.0f;
             if (kCallsPeriodicDirectly && periodic) {
                 value = detail::periodic_wave(s.params, s.waveform, clock.tau_us);
@@ -460,16 +485,21 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             }
             continue;
         }
+        if (route == detail::SlotRoute::renders_last) {
+            m.last_slots[last_count++] = static_cast<uint16_t>(i);
+            continue;
+        }
         float force[kMaxAxes] = {};
-        const EffectClass cls = s.cls;
-        if (cls == EffectClass::dynamic) {
+        if (route >= detail::SlotRoute::dynamic) {
             // A dynamic adds its force in float (the paddle's contact, which steps in double,
             // rounds its push once: docs/tick-cost.md, "Where double remains").
-            const detail::DynamicContext dynamic{&s.params,        &m.config, in.position,   velocity, acceleration,
-                                                 s.start_position, dt_s,      clock.tau_us, &s.dynamic_memory->state};
+            dynamic.params = &s.params;
+            dynamic.start_position = s.start_position;
+            dynamic.tau_us = clock.tau_us;
+            dynamic.state = &s.dynamic_memory->state;
             detail::DynamicResult result;
-            if (detail::kPairSlings && s.params.type == EffectType::dynamic_sling) {
-                render_sling(pairing, slots, i, slot_end, dt_us, dynamic, force, result);
+            if (detail::kPairSlings && route == detail::SlotRoute::sling) {
+                render_sling(pairing, slots, i, dt_us, dynamic, force, result);
             } else {
                 detail::render_dynamic(dynamic, force, result);
             }
@@ -480,11 +510,7 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
                 --playing;
                 continue;  // its last force is not applied: the event is over
             }
-        } else if (cls == EffectClass::condition) {
-            if (s.renders_last) {
-                m.last_slots[last_count++] = static_cast<uint16_t>(i);
-                continue;
-            }
+        } else if (route == detail::SlotRoute::condition) {
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;

@@ -24,6 +24,12 @@ struct DynamicRecord {
     SlotDynamicBlock block{};
     DynamicState state{};
     int64_t next_interim_us = 0;  // when the next interim report is due
+#if !defined(__OPTIMIZE_SIZE__)
+    // A Dynamic Sling's: the next slot above its own that holds a created sling, or -1
+    // (Engine::Impl::link_slings). The tick's pairing of slings (kPairSlings, x86) follows
+    // this chain instead of testing every slot between two slings.
+    int32_t next_sling = -1;
+#endif
 };
 
 // A dynamic report as the engine's queue holds it (Engine::pop_report widens it to the
@@ -39,6 +45,14 @@ struct QueuedReport {
     float velocity[kMaxAxes] = {};
     float handle_velocity[kMaxAxes] = {};
 };
+
+// How the tick renders a slot, worked out once by prepare_slot from its type, class and
+// parameters, so that the tick tests one byte: a scalar wave (value · direction,
+// is_scalar_wave) that is a periodic or not; any other wave; a condition; friction and
+// texture, which render after every other effect of the tick (their stiction holds against
+// what the others push with this tick: ConditionContext::others_force); a dynamic; a
+// Dynamic Sling, rendered with the next playing one (kPairSlings; elsewhere a dynamic).
+enum class SlotRoute : uint8_t { periodic, scalar_wave, wave, condition, renders_last, dynamic, sling };
 
 struct Slot {
     SlotParams params{};  // the header and its type's block (slot_params.hpp)
@@ -81,10 +95,7 @@ struct Slot {
     EffectClass cls = EffectClass::wave;
     bool reads_acceleration = false;     // inertia, or Dynamic Inertia
     Waveform waveform = Waveform::sine;  // periodics and sweeps: waveform_of(params.type)
-    bool scalar_wave = false;            // waves whose force is value · direction (is_scalar_wave)
-    // Friction and texture render after every other effect of the tick: their stiction holds
-    // against what the others push with this tick (ConditionContext::others_force).
-    bool renders_last = false;
+    SlotRoute route = SlotRoute::wave;   // how the tick renders it (prepare_slot)
     EffectState state = EffectState::free;
     bool began_playing = false;          // start_position is set
     PlayEnd last_end = PlayEnd::none;    // how the last play ended
@@ -314,6 +325,21 @@ struct Engine::Impl {
         s.state = EffectState::free;
         ++s.generation;
         while (slot_end > 0 && slots[slot_end - 1].state == EffectState::free) --slot_end;
+        if (s.params.type == EffectType::dynamic_sling) link_slings();
+    }
+
+    // The slings' chain (DynamicRecord::next_sling), linked again after a sling is created
+    // or freed: each created sling's record names the next slot above it holding one.
+    void link_slings() noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+        int32_t next = -1;
+        for (int32_t j = slot_end - 1; j >= 0; --j) {
+            detail::Slot& t = slots[j];
+            if (t.state == EffectState::free || t.params.type != EffectType::dynamic_sling) continue;
+            t.dynamic_memory->next_sling = next;
+            next = j;
+        }
+#endif
     }
 
     // Stops a slot by command; a play that was under way ends as `stopped`.

@@ -443,6 +443,86 @@ TEST(Sling, TwoSlingsTogetherMoveExactlyAsEachAlone) {
     }
 }
 
+// Through the engine, which renders two playing slings together (kPairSlings) found along
+// a chain of the sling slots the commands keep: after slings are destroyed and their slots
+// reused by a condition and by a new sling, the engine's force is still the sum, in slot
+// order, of each effect played alone in an engine of its own with the same hand. (A chain
+// left stale by destroy would reach the condition's slot as a sling's; one left stale by
+// create would skip or misread the new sling.)
+TEST(Sling, SlingsPairedByTheEngineAfterDestroysAndCreatesMoveAsEachAlone) {
+    EngineConfig config;
+    config.axis_count = 2;
+    config.max_effects = 6;
+    const EffectParams a = sling_params(3000, 1200, 4000, 300);
+    const EffectParams b = sling_params(2000, 800, 6000, 100);
+    const EffectParams c = sling_params(5000, 1500, 3000, 600);
+    const EffectParams d = sling_params(1500, 600, 8000, 200);
+    EffectParams spring;
+    spring.type = EffectType::spring;
+    spring.axis_count = 2;
+    spring.axes[0] = Axis::x;
+    spring.axes[1] = Axis::y;
+    for (ConditionBlock& block : spring.conditions) block.pos_coefficient = block.neg_coefficient = 500;
+
+    Engine together(config);
+    // One engine per effect (b's is emptied at tick 500 and given b again at 1100).
+    Engine alone_a(config), alone_spring(config), alone_c(config), alone_d(config), alone_b(config);
+    const auto create_and_start = [](Engine& engine, EffectParams p) {
+        p.gain = 2000;  // the sum stays below the device's maximum
+        const CreateResult r = engine.create(p, {});
+        EXPECT_TRUE(r.error.ok());
+        EXPECT_TRUE(engine.start(r.id).ok());
+        return r.id;
+    };
+    create_and_start(together, a);
+    const EffectId in_b = create_and_start(together, b);
+    const EffectId in_c = create_and_start(together, c);
+    create_and_start(alone_a, a);
+    const EffectId b_alone = create_and_start(alone_b, b);
+    const EffectId c_alone = create_and_start(alone_c, c);
+
+    constexpr int kTicks = 1500;
+    double largest_force = 0.0;
+    for (int tick = 0; tick < kTicks; ++tick) {
+        if (tick == 500) {
+            ASSERT_TRUE(together.destroy(in_b).ok());
+            ASSERT_TRUE(alone_b.destroy(b_alone).ok());
+            create_and_start(together, spring);  // into b's slot
+            create_and_start(alone_spring, spring);
+        }
+        if (tick == 800) {
+            create_and_start(together, d);  // after c
+            create_and_start(alone_d, d);
+        }
+        if (tick == 1100) {
+            // c's slot freed and taken by a sling again, between the spring and d.
+            ASSERT_TRUE(together.destroy(in_c).ok());
+            ASSERT_TRUE(alone_c.destroy(c_alone).ok());
+            create_and_start(together, b);
+            create_and_start(alone_b, b);
+        }
+        TickInput in;
+        in.t_us = 1000 * static_cast<int64_t>(tick);
+        const double angle = 2 * kBallPi * tick / 400.0;
+        in.position[0] = static_cast<float>(std::round(3000 * std::cos(angle)));
+        in.position[1] = static_cast<float>(std::round(3000 * std::sin(angle)));
+        TickOutput out;
+        together.tick(in, out);
+        float expected[kMaxAxes] = {};
+        for (Engine* engine : {&alone_a, &alone_spring, &alone_c, &alone_d, &alone_b}) {
+            TickOutput single;
+            engine->tick(in, single);
+            for (int ax = 0; ax < 2; ++ax) expected[ax] += single.force[ax];
+        }
+        for (int ax = 0; ax < 2; ++ax) {
+            ASSERT_NEAR(out.force[ax], expected[ax], 1e-3 + 1e-5 * std::fabs(expected[ax]))
+                << "tick " << tick << ", axis " << ax;
+            largest_force = std::max(largest_force, std::fabs(static_cast<double>(expected[ax])));
+        }
+    }
+    EXPECT_GT(largest_force, 100.0);  // the slings pulled
+}
+
 // Random parameters across their whole ranges, and a random hand: jumps across the
 // travel, jitter, stalls, repeated timestamps. Nothing may become NaN or infinite. (The
 // force is the mean pull over the coming tick, along a string that turns during it, so it
