@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "float_select.hpp"
+
 namespace feel::detail {
 
 // std::round(x): to the nearest whole number, halves away from zero, the sign of x kept
@@ -28,7 +30,7 @@ namespace feel::detail {
 #if defined(__OPTIMIZE_SIZE__)
     if (a - whole >= 0.5f) whole += 1.0f;
 #else
-    whole += a - whole >= 0.5f ? 1.0f : 0.0f;
+    whole += select_if_at_least(a - whole, 0.5f, 1.0f, 0.0f);  // (a plain ?: became a jump again next to the bump's cosine)
 #endif
     return std::copysign(whole, x);
 }

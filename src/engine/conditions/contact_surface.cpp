@@ -111,9 +111,18 @@ float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept {
 float surface_bump(float r) noexcept {
     const float nearest_ridge = round_half_away(r / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
     const float d = std::fabs(r - nearest_ridge);
-    if (d >= 0.5f * kSurfaceBumpWidth) return 0.0f;
     // cos(2π·d/w) as a fraction of a turn (turn_trig.hpp: the same bits on every target).
+#if defined(__OPTIMIZE_SIZE__)
+    if (d >= 0.5f * kSurfaceBumpWidth) return 0.0f;
     return 0.5f * (1.0f + cos_turns(d / kSurfaceBumpWidth));
+#else
+    // The handle crosses a ridge's edge every tick or two and the cosine's eighth changes as
+    // often, so both choices were mispredicted jumps at the end of the division's chain: here
+    // the cosine is worked out whatever d and selected (sin_turns_without_jumps(q + ¼) is
+    // cos_turns(q), the same float; issue 14, twelfth pass, "The bumps without jumps").
+    const float on_ridge = 0.5f * (1.0f + sin_turns_without_jumps(d / kSurfaceBumpWidth + 0.25f));
+    return select_if_at_least(d, 0.5f * kSurfaceBumpWidth, 0.0f, on_ridge);
+#endif
 }
 
 void add_rubbing_force(const ConditionContext& c, float pressure, int32_t friction, int32_t texture,

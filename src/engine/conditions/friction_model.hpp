@@ -63,6 +63,7 @@
 #include "feel/engine.hpp"
 #include "float_exp.hpp"
 #include "float_round.hpp"
+#include "float_select.hpp"
 
 namespace feel::detail {
 
@@ -279,9 +280,18 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
     const float r = s - step * round_half_away(s / step);
     const float half = width / 2.0f;
+#if defined(__OPTIMIZE_SIZE__)
     if (r > half || r < -half) return 0.0f;
     const float c = cos_within_half_pi(std::numbers::pi_v<float> * r / width);
     return c * c;  // (1 + cos 2θ)/2
+#else
+    // The bump worked out whatever r and selected: a handle dragged across the grating leaves
+    // or meets a bump every tick or two, and the jump on it was mispredicted at the end of the
+    // division's chain (issue 14, twelfth pass, "The bumps without jumps"). |r| > half is
+    // r > half || r < -half, NaN included (both false).
+    const float c = cos_within_half_pi(std::numbers::pi_v<float> * r / width);
+    return select_if_greater(std::fabs(r), half, 0.0f, c * c);
+#endif
 }
 
 }  // namespace feel::detail

@@ -139,11 +139,22 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     state.others_known = others_known;
     float f = -(z >= 0 ? pos : neg) * bump * z;
     if (presliding > 0 && c.dt_s > 0) {
-        f += bristle_damping(roughness * bump / presliding, z, along(c, u, c.velocity), state.inverse_fade_speed);
+        const float stiffness = roughness * bump / presliding;
+#if defined(__OPTIMIZE_SIZE__)
+        f += bristle_damping(stiffness, z, along(c, u, c.velocity), state.inverse_fade_speed);
+#else
+        // Off a bump the stiffness is 0 and the damping 0: that test flips with the bump's
+        // edge, so the damping is worked out with a stiffness > 0 (its value is linear in
+        // it: the first factor) and selected, the same float (issue 14, twelfth pass).
+        const float some_stiffness = select_if_greater(stiffness, 0.0f, stiffness, 1.0f);
+        const float damping = bristle_damping(some_stiffness, z, along(c, u, c.velocity), state.inverse_fade_speed);
+        f += select_if_greater(stiffness, 0.0f, damping, 0.0f);
+#endif
     }
     const float limit = roughness * bump;
-    if (c.applied_force != nullptr && limit > 0) {
-        if (state.guard_tick.on) {
+    // The guard's switch first: limit > 0 flips with the bump's edge, the switch never.
+    if (c.applied_force != nullptr && state.guard_tick.on) {
+        if (limit > 0) {
             const float applied = along(c, u, c.applied_force);
             const float others = c.others_force != nullptr ? others_along : applied - block.guard.own;
             StopGuard& g = block.guard;
