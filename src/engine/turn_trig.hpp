@@ -18,19 +18,27 @@
 
 #include <cstdint>
 
+#include "float_lanes.hpp"
 #include "float_select.hpp"
 
 namespace feel::detail {
+
+// p truncated toward zero to an int32 and back (FloatLanes has its own, lane by lane).
+[[nodiscard]] inline float truncated_through_int32(float p) noexcept {
+    return static_cast<float>(static_cast<int32_t>(p));
+}
 
 namespace turn_trig_series {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
 // sin 2πa for a in [0, ⅛] turn: the Taylor series to θ⁹.
-[[nodiscard]] inline float sine_near_zero(float a) noexcept {
-    const float t = a * kTwoPi;
-    const float t2 = t * t;
-    float s = 1.0f / 362880.0f;
+// F is float, or FloatLanes (float_lanes.hpp: the same operations lane by lane).
+template <class F>
+[[nodiscard]] inline F sine_near_zero(F a) noexcept {
+    const F t = a * kTwoPi;
+    const F t2 = t * t;
+    F s = 1.0f / 362880.0f;
     s = 1.0f / 5040.0f - t2 * s;
     s = 1.0f / 120.0f - t2 * s;
     s = 1.0f / 6.0f - t2 * s;
@@ -39,10 +47,11 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 
 // sin 2πa for a in [⅛, ¼] turn, as cos of the distance to the crest (to θ¹⁰): exactly 1 at
 // a quarter turn.
-[[nodiscard]] inline float sine_near_crest(float a) noexcept {
-    const float t = (0.25f - a) * kTwoPi;
-    const float t2 = t * t;
-    float c = 1.0f / 3628800.0f;
+template <class F>
+[[nodiscard]] inline F sine_near_crest(F a) noexcept {
+    const F t = (0.25f - a) * kTwoPi;
+    const F t2 = t * t;
+    F c = 1.0f / 3628800.0f;
     c = 1.0f / 40320.0f - t2 * c;
     c = 1.0f / 720.0f - t2 * c;
     c = 1.0f / 24.0f - t2 * c;
@@ -58,25 +67,29 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 // periodic wave's sine: a mispredicted jump at the end of its chain costs more than the
 // work it skips). Otherwise jumps, for arguments that move slowly (a direction, a sweep):
 // well predicted, and fewer instructions. The same float either way; the board branches.
-template <bool kWithoutJumps>
-[[nodiscard]] inline float sin_turns_by(float p) noexcept {
+template <bool kWithoutJumps, class F = float>
+[[nodiscard]] inline F sin_turns_by(F p) noexcept {
     using namespace turn_trig_series;
     // Each choice: x > y ? if_true : if_false.
-    const auto choose = [](float x, float y, float if_true, float if_false) {
-        return kWithoutJumps ? select_if_greater(x, y, if_true, if_false) : (x > y ? if_true : if_false);
+    const auto choose = [](F x, F y, F if_true, F if_false) -> F {
+        if constexpr (kWithoutJumps) {
+            return select_if_greater(x, y, if_true, if_false);
+        } else {
+            return x > y ? if_true : if_false;
+        }
     };
     // The nearest whole turn, by a conversion rather than floorf (a library call on both
     // targets): truncation toward zero, corrected below zero.
-    const float shifted = p + 0.5f;
-    const float truncated = static_cast<float>(static_cast<int32_t>(shifted));
-    const float whole = choose(truncated, shifted, truncated - 1.0f, truncated);
-    const float x = p - whole;  // [-0.5, 0.5]
-    const float magnitude = choose(0.0f, x, -x, x);
-    const float a = choose(magnitude, 0.25f, 0.5f - magnitude, magnitude);  // [0, 0.25]: sin(π - θ) = sin θ
-    float v;
+    const F shifted = p + 0.5f;
+    const F truncated = truncated_through_int32(shifted);
+    const F whole = choose(truncated, shifted, truncated - 1.0f, truncated);
+    const F x = p - whole;  // [-0.5, 0.5]
+    const F magnitude = choose(0.0f, x, -x, x);
+    const F a = choose(magnitude, 0.25f, 0.5f - magnitude, magnitude);  // [0, 0.25]: sin(π - θ) = sin θ
+    F v = 0.0f;
 #if !defined(__OPTIMIZE_SIZE__)
     if constexpr (kWithoutJumps) {
-        v = select_if_greater(a, 0.125f, sine_near_crest(a), sine_near_zero(a));
+        v = select_if_greater(a, F(0.125f), sine_near_crest(a), sine_near_zero(a));
     } else
 #endif
     {
@@ -86,8 +99,18 @@ template <bool kWithoutJumps>
 }
 
 [[nodiscard]] inline float sin_turns(float p) noexcept { return sin_turns_by<false>(p); }
-// For an argument that changes its place in the turn every tick or so.
-[[nodiscard]] inline float sin_turns_without_jumps(float p) noexcept { return sin_turns_by<true>(p); }
+// For an argument that changes its place in the turn every tick or so. On x86 the argument
+// in every lane of an SSE register (float_lanes.hpp), so that each choice is a compare and
+// three logical operations on the register as it is, with no shuffle to broadcast its
+// operands first (select_if_greater's scalar form needs one for each): the same operations
+// in each lane, so lane 0 is the scalar's float.
+[[nodiscard]] inline float sin_turns_without_jumps(float p) noexcept {
+#if defined(FEEL_FLOAT_LANES)
+    return _mm_cvtss_f32(sin_turns_by<true>(FloatLanes(p)).v);
+#else
+    return sin_turns_by<true>(p);
+#endif
+}
 
 // cos(2π·p) = sin(2π·(p + ¼)).
 [[nodiscard]] inline float cos_turns(float p) noexcept { return sin_turns(p + 0.25f); }

@@ -69,10 +69,21 @@ inline constexpr LinearPiece kWaveformPieces[5][4] = {
 [[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, float phase_turns) noexcept {
     const int32_t into_cycle = tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
                                                    : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
+    // On x86 in every lane of an SSE register (float_lanes.hpp): the choices below without a
+    // shuffle to broadcast each operand, the same float in lane 0.
+#if defined(FEEL_FLOAT_LANES)
+    FloatLanes p = FloatLanes(static_cast<float>(into_cycle)) / static_cast<float>(period_us) + phase_turns;
+#else
     float p = static_cast<float>(into_cycle) / static_cast<float>(period_us) + phase_turns;
+#endif
     // Rounding may land a hair's breadth below the period on 1 itself: that is the cycle's start.
     p = select_if_at_least(p, 1.0f, p - 1.0f, p);
-    return select_if_at_least(p, 1.0f, 0.0f, p);
+    p = select_if_at_least(p, 1.0f, 0.0f, p);
+#if defined(FEEL_FLOAT_LANES)
+    return _mm_cvtss_f32(p.v);
+#else
+    return p;
+#endif
 }
 
 }  // namespace feel::detail
