@@ -70,6 +70,15 @@ struct SteadyWindow {
 
 // A periodic's or sweep's block (§6.6.b, §6.6.i) in a slot: the period (at most 65e6 µs) in
 // 32 bits, so that no member of the union needs 8-byte alignment; the rest as the host's.
+// Whether a periodic keeps its last time into the cycle (SlotPeriodicBlock::remainder_us), so
+// that the tick advances it instead of dividing τ by the period: on x86; the board's blocks
+// have no room to spare in the union on 2 axes, and its build divides as before.
+#if !defined(__OPTIMIZE_SIZE__)
+#define FEEL_KEEPS_CYCLE_REMAINDER 1
+#else
+#define FEEL_KEEPS_CYCLE_REMAINDER 0
+#endif
+
 struct SlotPeriodicBlock {
     int32_t magnitude = 0;
     int32_t offset = 0;
@@ -88,6 +97,15 @@ struct SlotPeriodicBlock {
     float sweep_start_turns = 0.0f;    // sweep_start_angle / 36000
     float sweep_span_turns = 0.0f;     // the sweep's travel over the duration, in turns: ≥ 0 clockwise, ≤ 0 counter-clockwise
     SteadyWindow steady{};  // the envelope's steady window (steady_window)
+#if FEEL_KEEPS_CYCLE_REMAINDER
+    // The time into the cycle the tick last worked out (periodic_wave), and at which τ: a
+    // tick later τ has moved on by less than a period, and the new remainder is the old one
+    // plus the step, less the period if it passes it (the same integer as τ mod period,
+    // without the division). INT32_MIN, the block's fresh state, is never within a period
+    // of a τ in [0, 2^31). A command that sets the block makes a fresh one.
+    mutable int32_t remainder_at_tau_us = INT32_MIN;
+    mutable int32_t remainder_us = 0;
+#endif
 };
 
 // The prepared fields cost no RAM: on every device of 2 axes or more the union already

@@ -66,9 +66,14 @@ inline constexpr LinearPiece kWaveformPieces[5][4] = {
 // divides 32 bits in hardware, 64 in a library call) and the same integer as the 64-bit
 // remainder; only an endless wave past 2^31 µs (36 minutes) takes the 64-bit one (time_division.hpp).
 // phase_turns is the phase / 36000, kept with the block (SlotPeriodicBlock).
-[[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, float phase_turns) noexcept {
-    const int32_t into_cycle = tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
-                                                   : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
+// The time into the cycle (τ mod period) at wave time tau_us ≥ 0.
+[[nodiscard]] inline int32_t time_into_cycle(int64_t tau_us, int32_t period_us) noexcept {
+    return tau_us <= INT32_MAX ? static_cast<int32_t>(tau_us) % period_us
+                               : static_cast<int32_t>(tau_us - time_quotient(tau_us, period_us) * period_us);
+}
+
+// The cycle fraction of a time into the cycle (in [0, period)), in [0, 1).
+[[nodiscard]] inline float fraction_of_cycle(int32_t into_cycle, int32_t period_us, float phase_turns) noexcept {
     // On x86 in every lane of an SSE register (float_lanes.hpp): the choices below without a
     // shuffle to broadcast each operand, the same float in lane 0.
 #if defined(FEEL_FLOAT_LANES)
@@ -84,6 +89,10 @@ inline constexpr LinearPiece kWaveformPieces[5][4] = {
 #else
     return p;
 #endif
+}
+
+[[nodiscard]] inline float cycle_fraction(int64_t tau_us, int32_t period_us, float phase_turns) noexcept {
+    return fraction_of_cycle(time_into_cycle(tau_us, period_us), period_us, phase_turns);
 }
 
 }  // namespace feel::detail

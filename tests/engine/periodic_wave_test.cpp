@@ -96,5 +96,50 @@ TEST_F(PeriodicShape, SquareFrequencyIsOneOverPeriod) {
     EXPECT_EQ(rising, 9);  // 10 cycles, the first starts high
 }
 
+// The time into the cycle follows the wave time however the ticks come: at irregular lengths,
+// with jumps of several periods, with the host's time going back, through a restart and a
+// change of the period mid-play (on x86 the tick advances the last tick's remainder instead
+// of dividing, and must divide again whenever that would not be τ mod period). Each tick
+// against the saw's definition at that τ.
+TEST_F(PeriodicShape, SawFollowsItsTimeThroughJitterJumpsTimeGoingBackARestartAndANewPeriod) {
+    const int32_t magnitude = 6000;
+    const int32_t phase = 4500;  // an eighth of a cycle
+    EffectParams p = periodic_on_x(EffectType::saw_up, magnitude, 0, 7'000, phase, kInfiniteUs);
+    const EffectId id = play(p);
+    int64_t period = p.periodic.period_us;
+    int64_t t_us = 0;
+    int64_t tau = 0;  // the wave time of the next tick
+    uint32_t seed = 12345;
+    const auto next_random = [&seed](uint32_t below) {
+        seed = seed * 1664525u + 1013904223u;
+        return (seed >> 8) % below;
+    };
+    for (int i = 0; i < 2000; ++i) {
+        TickInput in;
+        in.t_us = t_us;
+        TickOutput out;
+        engine_->tick(in, out);
+        const double cycles = static_cast<double>(tau) / static_cast<double>(period) + phase / 36000.0;
+        const double frac = cycles - std::floor(cycles);
+        if (frac > 1e-6 && frac < 1 - 1e-6) {  // away from the saw's drop
+            ASSERT_NEAR(out.force[0], magnitude * (2.0 * frac - 1.0), 0.05) << "tick " << i << " tau " << tau;
+        }
+        int64_t dt = 300 + static_cast<int64_t>(next_random(1400));  // 0.3 to 1.7 ms
+        if (i % 97 == 96) dt = 3 * period + 123;                      // a jump of more than a period
+        if (i % 151 == 150 && tau > 2'000) dt = -1 - static_cast<int64_t>(next_random(2'000));  // the host's time goes back
+        t_us += dt;
+        tau += dt;
+        if (i == 700) {  // a restart: the next tick is the wave's first again
+            ASSERT_TRUE(engine_->start(id).ok());
+            tau = 0;
+        }
+        if (i == 1300) {  // a new period mid-play, without a restart: the time runs on
+            p.periodic.period_us = 5'300;
+            ASSERT_TRUE(engine_->update(id, p, effect_field::kTypeSpecific, false).ok());
+            period = p.periodic.period_us;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace feel::test

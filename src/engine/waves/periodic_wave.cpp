@@ -30,11 +30,40 @@ void prepare_periodic_block(SlotParams& s) noexcept {
     b.sweep_span_turns = clockwise ? travel : -travel;
 }
 
+namespace {
+
+// τ mod period (waveform.hpp's time_into_cycle); on x86 advanced from the last tick's when τ
+// moved on by less than a period since (SlotPeriodicBlock::remainder_us), the division
+// otherwise (the first tick, a restart, time gone back, a jump of a period or more).
+int32_t advance_time_into_cycle(const SlotPeriodicBlock& b, int64_t tau_us) noexcept {
+#if FEEL_KEEPS_CYCLE_REMAINDER
+    if (tau_us > INT32_MAX) return time_into_cycle(tau_us, b.period_us);
+    // In unsigned 32 bits: a τ before the kept one wraps to at least 2^31 (τ and the kept τ
+    // are below 2^31), and so does INT32_MIN's, both beyond every period.
+    const uint32_t step = static_cast<uint32_t>(tau_us) - static_cast<uint32_t>(b.remainder_at_tau_us);
+    const auto period = static_cast<uint32_t>(b.period_us);
+    uint32_t into = 0;
+    if (step < period) {
+        into = static_cast<uint32_t>(b.remainder_us) + step;  // below 2·period < 2^32
+        if (into >= period) into -= period;
+    } else {
+        into = static_cast<uint32_t>(static_cast<int32_t>(tau_us) % b.period_us);
+    }
+    b.remainder_at_tau_us = static_cast<int32_t>(tau_us);
+    b.remainder_us = static_cast<int32_t>(into);
+    return static_cast<int32_t>(into);
+#else
+    return time_into_cycle(tau_us, b.period_us);
+#endif
+}
+
+}  // namespace
+
 // offset + envelope(|magnitude|) · sign(magnitude) · source(p). The envelope shapes the
 // oscillation, not the baseline offset.
 float periodic_wave(const SlotParams& p, Waveform waveform, int64_t tau_us) noexcept {
     const SlotPeriodicBlock& b = p.periodic;
-    const float source = waveform_value(waveform, cycle_fraction(tau_us, b.period_us, b.phase_turns));
+    const float source = waveform_value(waveform, fraction_of_cycle(advance_time_into_cycle(b, tau_us), b.period_us, b.phase_turns));
     const float magnitude = static_cast<float>(b.magnitude);
     // Outside the attack and the fade the envelope gives the magnitude back (its sign kept):
     // the window was worked out with the command.
