@@ -35,7 +35,7 @@ namespace {
 // τ mod period (waveform.hpp's time_into_cycle); on x86 advanced from the last tick's when τ
 // moved on by less than a period since (SlotPeriodicBlock::remainder_us), the division
 // otherwise (the first tick, a restart, time gone back, a jump of a period or more).
-int32_t advance_time_into_cycle(const SlotPeriodicBlock& b, int64_t tau_us) noexcept {
+[[gnu::always_inline]] inline int32_t advance_time_into_cycle(const SlotPeriodicBlock& b, int64_t tau_us) noexcept {
 #if FEEL_KEEPS_CYCLE_REMAINDER
     if (tau_us > INT32_MAX) return time_into_cycle(tau_us, b.period_us);
     // In unsigned 32 bits: a τ before the kept one wraps to at least 2^31 (τ and the kept τ
