@@ -218,7 +218,7 @@ template <typename T>
 [[gnu::always_inline]] inline T parabola_step(const Sample<T>& at) noexcept {
     const T discriminant = at.slope * at.slope - 2 * at.value * at.curvature;
     const T root = discriminant >= 0 ? std::sqrt(discriminant) : std::fabs(at.slope);
-    return -2 * at.value / (at.slope < 0 ? at.slope - root : at.slope + root);
+    return -2 * at.value / (at.slope <= 0 ? at.slope - root : at.slope + root);
 }
 
 // The earliest t in (lo, hi] with g(t) <= 0, given g(lo) > 0 >= g(hi) (their samples
