@@ -225,13 +225,14 @@ template <typename T>
 // given: the caller has read both already) and a single sign change between them, to
 // within `tolerance`: steps to the root of each sample's parabola (parabola_step: g
 // returns its slope and curvature too), kept inside the bracket and aimed half a tolerance
-// past the root, so that the bracket closes from both sides; a step that leaves the bracket
-// bisects instead. The bracket closes on a sample at hi, descending there, whose own
-// parabola puts the root within the tolerance below it (the model's error over so short a step is of the order of
-// tolerance³ times the jerk): the search then ends without the evaluation on the other side
-// that would only confirm it. Converges in one to three evaluations where bisection takes
-// 30; at most 64. at_hi comes back as the sample at the t returned (the state there, which
-// the caller needs: no evaluation is repeated).
+// past the root, so that the bracket closes from both sides; a step that leaves the
+// bracket bisects instead. The bracket also closes on a sample at hi, descending there,
+// whose own parabola puts the root within the tolerance below it (the model's error over
+// so short a step is of the order of the tolerance cubed times the jerk): the search then
+// ends without the evaluation on the other side that would only confirm it. Converges in
+// one to three evaluations where Newton's steps took four and bisection 30; at most 64.
+// at_hi comes back as the sample at the t returned (the state there, which the caller
+// needs: no evaluation is repeated).
 template <typename T, typename G>
 T first_nonpositive(const G& g, T lo, const Sample<T>& at_lo, T hi, Sample<T>& at_hi, T tolerance) noexcept {
     Sample<T> at = at_lo;
