@@ -30,6 +30,10 @@
 //     every report's: two builds that print the same digest rendered the same bits, which
 //     is how a pass that claims to be bit for bit is checked. --jitter spreads the ticks'
 //     lengths over 900..1100 µs (a fixed sequence), so that the tick-length paths run too.
+//
+//   feel_tick_instructions MIX TICKS --forces [--jitter]
+//     the same ticks, printing every tick's force on each axis (%a, exact): how a pass that
+//     moves forces measures its largest difference against another build.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -55,6 +59,7 @@ struct Run {
     bool estimator_only = false;
     bool with_acceleration = true;
     bool digest = false;
+    bool print_forces = false;
     uint64_t hash = 1469598103934665603ull;  // FNV-1a's offset basis
 };
 
@@ -115,7 +120,12 @@ void mix_report(uint64_t& hash, const DynamicReport& r) {
                 if (run.digest) mix_report(run.hash, report);
             }
             sink += out.force[0];
-            if (run.digest) mix_output(run.hash, out);
+            if (run.digest) {  // --forces sets digest too: the measured runs test one flag, as before
+                mix_output(run.hash, out);
+                if (run.print_forces) {
+                    std::printf("%a %a\n", static_cast<double>(out.force[0]), static_cast<double>(out.force[1]));
+                }
+            }
         }
     }
     if (sink == 12345.678f) std::puts("");  // keeps the work observable
@@ -131,20 +141,24 @@ void mix_report(uint64_t& hash, const DynamicReport& r) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: feel_tick_instructions MIX [TICKS] [--digest [--jitter]]\n");
+        std::fprintf(stderr, "usage: feel_tick_instructions MIX [TICKS] [--digest | --forces [--jitter]]\n");
         return 2;
     }
     const char* mix = argv[1];
     const int ticks = argc > 2 ? std::atoi(argv[2]) : 2000;
     bool digest = false;
     bool jitter = false;
+    bool print_forces = false;
     for (int i = 3; i < argc; ++i) {
         if (std::strcmp(argv[i], "--digest") == 0) {
             digest = true;
+        } else if (std::strcmp(argv[i], "--forces") == 0) {
+            digest = true;
+            print_forces = true;
         } else if (std::strcmp(argv[i], "--jitter") == 0) {
             jitter = true;
         } else {
-            std::fprintf(stderr, "unknown option %s (--digest, --jitter)\n", argv[i]);
+            std::fprintf(stderr, "unknown option %s (--digest, --forces, --jitter)\n", argv[i]);
             return 2;
         }
     }
@@ -160,6 +174,7 @@ int main(int argc, char** argv) {
                         std::strncmp(mix, "busy_rest_", 10) != 0;
     Run run;
     run.digest = digest;
+    run.print_forces = print_forces;
     std::vector<TickInput> inputs(static_cast<size_t>(kWarmupTicks + ticks));
     for (size_t k = 0; k < inputs.size(); ++k) {
         const int64_t n = static_cast<int64_t>(k) + 1;

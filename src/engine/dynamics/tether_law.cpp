@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "dynamics/tether_step.hpp"
 
@@ -82,19 +83,15 @@ bool advance_tether_piece(const TetherLaw& law, TetherAxisState& state, float& s
             float tc = 0;
             MassStateF at = end;
             if (r == Region::slack) {
-                // Either edge of the play, whichever comes first.
+                // Either edge of the play, whichever comes first (the upper one is tried first).
                 const MassStateF whole = end;
-                if (tether_crossing(seg, start, whole, law.length, remaining, tc, at) && tc < t) {
-                    t = tc;
-                    end = at;
-                    snap_to = law.length;
-                    crossed = true;
-                }
-                if (tether_crossing(seg, start, whole, -law.length, remaining, tc, at) && tc < t) {
-                    t = tc;
-                    end = at;
-                    snap_to = -law.length;
-                    crossed = true;
+                for (const float edge : {law.length, -law.length}) {
+                    if (tether_crossing(seg, start, whole, edge, remaining, tc, at) && tc < t) {
+                        t = tc;
+                        end = at;
+                        snap_to = edge;
+                        crossed = true;
+                    }
                 }
             } else if (tether_crossing(seg, start, end, 0.0f, remaining, tc, at) && tc < remaining) {
                 t = tc;

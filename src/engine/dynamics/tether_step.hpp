@@ -92,8 +92,8 @@ template <typename T>
 // The starting side is the sign of y(0) − level; a start exactly at the level takes the
 // side the motion leaves to (the sign of ẏ(0), else of ÿ(0)), so a contact that begins at
 // its surface finds the moment it comes back out, not the moment it began.
-// Accuracy: Newton's method within a bracket (bisection fallback) closes the bracket to
-// 1e-9·h in double, 2^-20·h (1e-6) in float, plus what rounding the motion's evaluation
+// Accuracy: steps to the root of the motion's Taylor parabola within a bracket (bisection
+// fallback) close the bracket to 1e-9·h in double, 2^-20·h (1e-6) in float, plus what rounding the motion's evaluation
 // does to the root (about eps·amplitude/|slope|: a graze's crossing is less sharp).
 template <typename T>
 [[nodiscard]] bool tether_crossing(const BasicSpringDamper<T>& s, BasicMassState<T> x, StepScalar<T> level,

@@ -221,6 +221,44 @@ TEST(TetherCrossing, FindsTheCrossingOfASineInFloat) {
     EXPECT_NEAR(t, kPiD / w, 1e-6 / w + 0x1p-20 * h35);
 }
 
+TEST(TetherCrossing, FindsTheCrossingOfAFreeMassInFloat) {
+    // The play's motion: a free mass under a constant force, thrown at the level, dropped on
+    // it from rest, and slowed by drag on its way. The crossing is the analytic one (the
+    // quadratic's root; with drag, the root of the closed form y0 + v∞·t + (v0 − v∞)(1 −
+    // e^{−a·t})/a, v∞ = f/(m·a), bisected in double), within the bracket's 2^-20 of the
+    // step and the float ulps of the position it is read from (4 ulps of 128 over the speed
+    // there).
+    using detail::MassStateF;
+    using detail::SpringDamperF;
+    float t = 0;
+    {
+        // y = 80 − 20000·t − 2.5e5·t² reaches 65 within the 1 ms step.
+        const SpringDamperF thrown{0.01f, 0, 0, -5000.0f};
+        const double h = 1e-3, root = (-20000 + std::sqrt(20000.0 * 20000 + 4 * 2.5e5 * 15)) / (2 * 2.5e5);
+        ASSERT_TRUE(detail::tether_crossing(thrown, MassStateF{80, -20000}, 65.0f, static_cast<float>(h), t));
+        EXPECT_NEAR(t, root, 0x1p-20 * h + 4 * 0x1p-17 / (20000 + 5e5 * root));
+    }
+    {
+        // From rest 50 above the level at 1e6 units/s²: there after √(2·50/1e6) = 10 ms.
+        const SpringDamperF dropped{0.01f, 0, 0, -1e4f};
+        const double h = 0.02, root = std::sqrt(2 * 50 / 1e6);
+        ASSERT_TRUE(detail::tether_crossing(dropped, MassStateF{50, 0}, 0.0f, static_cast<float>(h), t));
+        EXPECT_NEAR(t, root, 0x1p-20 * h + 4 * 0x1p-17 / (1e6 * root));
+    }
+    {
+        // Drag a = c/m = 200/s, the force pushing on at 2e5 units/s², from 90 at 15000 units/s
+        // toward 100 (crossed about 0.65 ms in).
+        const SpringDamperF dragged{0.01f, 0, 2.0f, 2000.0f};
+        const double a = 200, v0 = 15000, vinf = 2e5 / a, h = 1e-3;
+        const auto y = [&](double tt) { return 90 + vinf * tt + (v0 - vinf) * -std::expm1(-a * tt) / a; };
+        double lo = 0, hi = h;
+        for (int i = 0; i < 200; ++i) (y((lo + hi) / 2) < 100 ? lo : hi) = (lo + hi) / 2;
+        const double speed = vinf + (v0 - vinf) * std::exp(-a * hi);
+        ASSERT_TRUE(detail::tether_crossing(dragged, MassStateF{90, 15000}, 100.0f, static_cast<float>(h), t));
+        EXPECT_NEAR(t, hi, 0x1p-20 * h + 4 * 0x1p-17 / speed);
+    }
+}
+
 // --- energy over a minute ---------------------------------------------------------------------
 
 double law_energy(const ControlLawBlock& b, const EngineConfig& c, double s, double v) {
