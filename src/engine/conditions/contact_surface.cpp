@@ -112,7 +112,9 @@ namespace {
 
 // surface_bump's body: the rubbing's x86 build takes it inline (below).
 [[gnu::always_inline]] inline float surface_bump_inline(float r) noexcept {
-    const float nearest_ridge = round_half_away(r / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
+    // (The index's zero may have either sign: the ridge's then does too, which d's |·| drops.)
+    const float nearest_ridge =
+        nearest_multiple_index(r, kSurfaceBumpSpacing, 1.0f / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
     const float d = std::fabs(r - nearest_ridge);
     // cos(2π·d/w) as a fraction of a turn (turn_trig.hpp: the same bits on every target).
 #if defined(__OPTIMIZE_SIZE__)
