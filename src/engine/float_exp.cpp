@@ -14,14 +14,6 @@ float float_exp(float x) noexcept { return exp_or_expm1(x, false); }
 float float_expm1(float x) noexcept { return exp_or_expm1(x, true); }
 #endif
 
-float float_tanh(float x) noexcept {
-    constexpr float kTanhOne = 9.1f;  // above: 1 − tanh x < 2^-25, tanh rounds to 1
-    if (x == 0.0f) return x;
-    const float a = x < 0 ? -x : x;
-    if (a > kTanhOne) return x < 0 ? -1.0f : 1.0f;
-    const float t = float_expm1(-2.0f * a);  // NaN stays NaN
-    const float magnitude = -t / (2.0f + t);
-    return x < 0 ? -magnitude : magnitude;
-}
+float float_tanh(float x) noexcept { return float_tanh_inline(x); }
 
 }  // namespace feel::detail

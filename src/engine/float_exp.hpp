@@ -84,4 +84,16 @@ namespace feel::detail {
 #endif
 [[nodiscard]] float float_tanh(float x) noexcept;
 
+// float_tanh's body, for a caller on x86 that would otherwise spill its floats around the
+// call (the walls' rubbing, contact_surface.cpp); float_tanh is this, out of line.
+[[nodiscard, gnu::always_inline]] inline float float_tanh_inline(float x) noexcept {
+    constexpr float kTanhOne = 9.1f;  // above: 1 − tanh x < 2^-25, tanh rounds to 1
+    if (x == 0.0f) return x;
+    const float a = x < 0 ? -x : x;
+    if (a > kTanhOne) return x < 0 ? -1.0f : 1.0f;
+    const float t = float_expm1(-2.0f * a);  // NaN stays NaN
+    const float magnitude = -t / (2.0f + t);
+    return x < 0 ? -magnitude : magnitude;
+}
+
 }  // namespace feel::detail

@@ -35,6 +35,29 @@ namespace feel::detail {
     return std::copysign(whole, x);
 }
 
+// round_half_away(x / step) for a step > 0 given inverse_step = 1/step (rounded to float),
+// but for the sign of a zero result: a grating's index of the ridge
+// nearest x, whose sign its caller does not read (step·(±0) only moves x's own zero). On
+// x86 it skips the division and round_half_away's conversions, the head of the bumps'
+// chains (issue 14, thirteenth pass): q = x·inverse_step is within |x/step|·2^-23 of x/step
+// (two roundings of 2^-24) and fl(x/step) within half of that, so where q lies further than
+// |q|·2^-21 from every half, both round to the same whole number, which adding and taking
+// off 1.5·2^23 gives (to even at a half, but q is no half). Elsewhere (near a half, |q| from
+// 2^20 on, NaN, infinities) the division and round_half_away, as before.
+[[nodiscard, gnu::always_inline]] inline float nearest_multiple_index(float x, float step, float inverse_step) noexcept {
+#if !defined(__OPTIMIZE_SIZE__)
+    constexpr float kRound = 0x1.8p23f;
+    const float q = x * inverse_step;
+    const float whole = (q + kRound) - kRound;
+    // (|q − whole| is exact: whole is within 1 of q and a whole number. The bound's rounding,
+    // at most 2^-26, is within the factor 2 it keeps over the roundings' 2^-22.)
+    if (std::fabs(q - whole) < 0.5f - std::fabs(q) * 0x1p-21f) return whole;
+#else
+    (void)inverse_step;
+#endif
+    return round_half_away(x / step);
+}
+
 // std::nextafter(x, up ? +inf : -inf): the next float above or below x.
 [[nodiscard]] inline float next_float(float x, bool up) noexcept {
     constexpr float kInf = std::numeric_limits<float>::infinity();

@@ -1,5 +1,6 @@
 // round_half_away and next_float (src/engine/float_round.hpp) against std::round and
-// std::nextafter, bit for bit: every float of several binades, the edges, and any float.
+// std::nextafter, bit for bit: every float of several binades, the edges, and any float;
+// nearest_multiple_index against std::round of the quotient.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -78,6 +79,33 @@ TEST(FloatRound, EqualsLibmAtTheEdges) {
     }
     EXPECT_TRUE(std::isnan(round_half_away(std::nanf(""))));
     EXPECT_TRUE(std::isnan(next_float(std::nanf(""), true)));
+}
+
+// nearest_multiple_index(x, step, 1/step) is std::round(x / step) but for the sign of a zero:
+// every 1021st float, and the floats at and either side of x = (n + ½)·step, where the
+// product x·(1/step) may round across the half (the case its fast way must give up), for
+// the bumps' spacings (the walls' 200, the busy mix's texture 400) and some others.
+TEST(FloatRound, NearestMultipleIndexIsTheRoundedQuotient) {
+    int64_t differ = 0;
+    const auto compare = [&](float x, float step) {
+        const float index = nearest_multiple_index(x, step, 1.0f / step);
+        const float quotient = std::round(x / step);
+        differ += x == x && !(index == quotient);  // (+0 == −0: the sign of a zero is not compared)
+    };
+    for (const float step : {200.0f, 400.0f, 1.0f, 3.0f, 7.0f, 1000.0f, 32767.0f}) {
+        for (uint64_t bits = 0; bits <= 0xffffffffu; bits += 1021) {
+            compare(std::bit_cast<float>(static_cast<uint32_t>(bits)), step);
+        }
+        for (int n = -3000; n <= 3000; ++n) {
+            float x = (static_cast<float>(n) + 0.5f) * step;
+            for (int k = 0; k < 4; ++k) x = std::nextafter(x, -1e30f);
+            for (int k = 0; k < 9; ++k, x = std::nextafter(x, 1e30f)) compare(x, step);
+        }
+    }
+    EXPECT_EQ(differ, 0);
+    EXPECT_TRUE(std::isnan(nearest_multiple_index(std::nanf(""), 200.0f, 1.0f / 200.0f)));
+    EXPECT_EQ(nearest_multiple_index(std::numeric_limits<float>::infinity(), 200.0f, 1.0f / 200.0f),
+              std::numeric_limits<float>::infinity());
 }
 
 RC_GTEST_PROP(FloatRound, AnyFloatLikeLibm, (uint32_t b)) {

@@ -108,8 +108,13 @@ float element_stiffness(const EngineConfig& config, int32_t hardness) noexcept {
     return static_cast<float>(hardness) * (1.0f / static_cast<float>(kFullScale)) * config.wall_stiffness;
 }
 
-float surface_bump(float r) noexcept {
-    const float nearest_ridge = round_half_away(r / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
+namespace {
+
+// surface_bump's body: the rubbing's x86 build takes it inline (below).
+[[gnu::always_inline]] inline float surface_bump_inline(float r) noexcept {
+    // (The index's zero may have either sign: the ridge's then does too, which d's |·| drops.)
+    const float nearest_ridge =
+        nearest_multiple_index(r, kSurfaceBumpSpacing, 1.0f / kSurfaceBumpSpacing) * kSurfaceBumpSpacing;
     const float d = std::fabs(r - nearest_ridge);
     // cos(2π·d/w) as a fraction of a turn (turn_trig.hpp: the same bits on every target).
 #if defined(__OPTIMIZE_SIZE__)
@@ -124,6 +129,26 @@ float surface_bump(float r) noexcept {
     return select_if_at_least(d, 0.5f * kSurfaceBumpWidth, 0.0f, on_ridge);
 #endif
 }
+
+// The rubbing's bump and tanh inline on x86: as calls, each spilled the rubbing's floats
+// around it (issue 14, thirteenth pass); the board calls one copy of each (its flash).
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kInlineRubbing = false;
+#else
+inline constexpr bool kInlineRubbing = true;
+#endif
+
+float rubbing_bump(float r) noexcept {
+    if constexpr (kInlineRubbing) {
+        return surface_bump_inline(r);
+    } else {
+        return surface_bump(r);
+    }
+}
+
+}  // namespace
+
+float surface_bump(float r) noexcept { return surface_bump_inline(r); }
 
 void add_rubbing_force(const ConditionContext& c, float pressure, int32_t friction, int32_t texture,
                        float force[kMaxAxes]) noexcept {
@@ -142,10 +167,10 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     if (texture != 0) {
         const bool angle = is_angle_element(c.params->type);
         const int axis = axis_index(c.params->axes[0]);
-        if (angle) bump = surface_bump(u[1] * c.position[0] - u[0] * c.position[1]);  // t = (cos a, −sin a)
+        if (angle) bump = rubbing_bump(u[1] * c.position[0] - u[0] * c.position[1]);  // t = (cos a, −sin a)
         for (int a = angle ? 2 : 0; a < c.axes; ++a) {
             if (a == axis && !angle) continue;
-            const float b = surface_bump(c.position[a]);
+            const float b = rubbing_bump(c.position[a]);
             if (b > bump) bump = b;
         }
     }
@@ -154,7 +179,8 @@ void add_rubbing_force(const ConditionContext& c, float pressure, int32_t fricti
     const float mu = static_cast<float>(friction) * kPerFullScale;
     const float tau = static_cast<float>(texture) * kPerFullScale;
     const float slip_speed = kSurfaceSlipSpeed * c.config->velocity_ref;
-    const float magnitude = pressure * (mu + tau * bump) * float_tanh(speed / slip_speed);
+    const float slip = speed / slip_speed;
+    const float magnitude = pressure * (mu + tau * bump) * (kInlineRubbing ? float_tanh_inline(slip) : float_tanh(slip));
     const float per_speed = magnitude / speed;
     add_force_along(c, v_t, -per_speed, force);  // (x + (−p)·v is x − p·v, bit for bit)
 }

@@ -20,7 +20,8 @@ float presliding_distance(const EngineConfig& config, float dt_s, float f) noexc
 
 float texture_bump(float s, int32_t spacing, float width) noexcept {
     if (!(spacing > 0) || !(width > 0)) return 0.0f;
-    return grating_bump(s, static_cast<float>(spacing), width);
+    const float step = static_cast<float>(spacing);
+    return grating_bump(s, step, 1.0f / step, width);
 }
 
 }  // namespace feel::detail

@@ -273,12 +273,14 @@ inline void hold_with_others(Bristle& bristle, float force, float held, bool sli
     return 1.0f + t * (c2 + t * (c4 + t * (c6 + t * (c8 + t * (c10 + t * c12)))));
 }
 
-// texture_bump for a spacing (> 0, a whole number of position units) and width (> 0) kept as
-// floats: the texture's tick, which keeps them (TextureLaw, friction_state.hpp). Inline: the
-// texture's tick is its one caller on the board, and on x86 a call spills the tick's floats.
-[[nodiscard]] inline float grating_bump(float s, float step, float width) noexcept {
-    // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.)
-    const float r = s - step * round_half_away(s / step);
+// texture_bump for a spacing (> 0, a whole number of position units), its inverse 1/step
+// and width (> 0) kept as floats: the texture's tick, which keeps them (TextureLaw,
+// friction_state.hpp). Inline: the texture's tick is its one caller on the board, and on x86
+// a call spills the tick's floats.
+[[nodiscard]] inline float grating_bump(float s, float step, float inverse_step, float width) noexcept {
+    // (Exact: step·round(s/step) is an integer below 2^24 and s a multiple of its ulp there.
+    // The index's zero may have either sign: r's zero then does too, which only θ² reads.)
+    const float r = s - step * nearest_multiple_index(s, step, inverse_step);
     const float half = width / 2.0f;
 #if defined(__OPTIMIZE_SIZE__)
     if (r > half || r < -half) return 0.0f;

@@ -46,6 +46,7 @@ struct TextureLaw {
     float presliding;          // its presliding distance Z at this tick period (friction_model.hpp)
     float inverse_presliding;  // 1/Z, 0 when Z = 0
     float spacing;             // the bumps' spacing, position units
+    float inverse_spacing;     // 1/spacing (x86: the bump's ridge index, nearest_multiple_index)
     float width;               // their width: spacing · density / 10000
     bool bumps;                // spacing and width > 0 (texture_bump's test)
 };

@@ -81,7 +81,10 @@ void observe_axes(AxisObservers& observers, const EngineConfig& config, float dt
     const StopGuardTick& tick = observers.tick;
     for (int a = 0; a < count; ++a) {
         if (!continuing) observers.axis[a] = HandleObserver{};
-        const bool observed = tick.on && observe(observers.axis[a], tick, position[a], applied[a]);
+        // Without the guard (no device mass) no friction reads the views: they are not
+        // worked out (issue 14, thirteenth pass). The tick that turns it on writes them.
+        if (!tick.on) continue;
+        const bool observed = observe(observers.axis[a], tick, position[a], applied[a]);
         observers.view[a] = view_of(observers.axis[a], observed, tick);
     }
 }

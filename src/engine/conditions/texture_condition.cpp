@@ -69,6 +69,11 @@ TextureLaw texture_law_for(const EngineConfig& config, float dt_s, const Texture
     law.presliding = presliding_distance(config, dt_s, law.roughness);
     law.inverse_presliding = law.presliding > 0 ? 1.0f / law.presliding : 0.0f;
     law.spacing = static_cast<float>(t.spacing);
+#if defined(__OPTIMIZE_SIZE__)
+    law.inverse_spacing = 0.0f;  // (unread: the board divides)
+#else
+    law.inverse_spacing = 1.0f / law.spacing;
+#endif
     law.width = static_cast<float>(t.spacing) * static_cast<float>(t.density) / static_cast<float>(kFullScale);
     law.bumps = t.spacing > 0 && law.width > 0;
     return law;
@@ -118,7 +123,7 @@ void texture_condition(const ConditionContext& c, float force[kMaxAxes]) noexcep
     const bool first = !bristle.primed;  // nothing held yet: take the others' push from here
     const bool at_rest = first || s == bristle.anchor;
     float z = advance(bristle, s, 0.0f, law.inverse_presliding);
-    const float bump = law.bumps ? grating_bump(s, law.spacing, law.width) : 0.0f;
+    const float bump = law.bumps ? grating_bump(s, law.spacing, law.inverse_spacing, law.width) : 0.0f;
     const float output_gain = static_cast<float>(p.gain) / static_cast<float>(kFullScale) * c.device_gain;
     // The others' force along the line, and in this texture's units, as for friction
     // (friction_condition.cpp).
