@@ -20,7 +20,7 @@ namespace feel::detail {
 // Whether a piece that went from (s0, rate0) to (s1, rate1) in region r may have crossed
 // an edge of it (tether_tick.hpp: only a piece that leaves, or turns while heading for
 // an edge, can have).
-[[gnu::always_inline]] inline bool may_have_crossed(TetherRegion r, float length, float s1, float rate0, float rate1) noexcept {
+inline bool may_have_crossed(TetherRegion r, float length, float s1, float rate0, float rate1) noexcept {
     switch (r) {
         case TetherRegion::above: return !(s1 > length) || (rate0 <= 0 && rate1 >= 0);
         case TetherRegion::below: return !(s1 < -length) || (rate0 >= 0 && rate1 <= 0);
@@ -34,7 +34,7 @@ namespace feel::detail {
 // the equilibrium y_eq = f/k, ½·k·(y − y_eq)² + ½·m·v², never grows (damping only takes),
 // so y never leaves y_eq ± R, R² = (y − y_eq)² + m·v²/k. Clear when that whole interval is
 // on the region's side (`outward` +1 above, −1 below).
-[[gnu::always_inline]] inline bool stays_clear(float outward, float k, float m, float f, float y, float v) noexcept {
+inline bool stays_clear(float outward, float k, float m, float f, float y, float v) noexcept {
     const float equilibrium = f / k;
     if (!(equilibrium * outward > 0)) return false;
     const float offset = y - equilibrium;
@@ -50,7 +50,7 @@ namespace feel::detail {
 // piece crossed no edge when that point is inside the play (with a margin of 2^-10 of
 // the bound and 2^-20 of the play for the propagator's rounding, which is far finer).
 // The exact piece (tether_law.cpp) would search both edges for a crossing there is not.
-[[gnu::always_inline]] inline bool turns_within_play(float length, float s0, float v0, float s1, float h) noexcept {
+inline bool turns_within_play(float length, float s0, float v0, float s1, float h) noexcept {
     const float reach = std::fabs(v0) * h * (1.0f + 0x1p-10f) + length * 0x1p-20f;
     const float extremum = v0 >= 0 ? s0 + reach : s0 - reach;
     return std::fabs(extremum) < length && std::fabs(s1) < length;
