@@ -16,7 +16,6 @@
 
 namespace feel::detail {
 
-
 // Whether a piece that went from (s0, rate0) to (s1, rate1) in region r may have crossed
 // an edge of it (tether_tick.hpp: only a piece that leaves, or turns while heading for
 // an edge, can have).

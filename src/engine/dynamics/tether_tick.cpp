@@ -11,7 +11,6 @@ namespace feel::detail {
 
 namespace {
 
-
 float rest_stretch_of(const PreparedTether& t, float gravity) noexcept {
     const float weight = t.mass * gravity;
     if (weight > 0) return t.length + weight / t.k_pos;
