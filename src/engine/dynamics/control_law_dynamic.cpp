@@ -67,6 +67,7 @@
 
 #include "dynamics/dynamic.hpp"
 #include "dynamics/tether_law.hpp"
+#include "dynamics/tether_piece.hpp"
 #include "dynamics/tether_tick.hpp"
 
 namespace feel::detail {
@@ -266,6 +267,77 @@ struct PlainLine {
     const int i = plain_axes(c, force, result, 0, false);
     if (i < c.params->axis_count) [[unlikely]] plain_tick_afresh(c, force, result, i);
 }
+
+// Whether a law's every tick is one watched piece (advance_one_watched_piece): regions
+// to track, one piece a step, nothing counted.
+bool one_watched_piece(const PreparedTether& law) noexcept {
+    return law.piecewise && law.pieces == 1 && law.half_cycles == 0;
+}
+
+// Advances `state` as advance_watched_tether does, its common piece inline.
+[[gnu::always_inline]] inline float advance_watched(const PreparedTether& law, float gravity, TetherAxisState& state,
+                                                    HandleLine line, float hysteresis) noexcept {
+    float impulse;
+    if (advance_one_watched_piece(law, gravity, state, line, impulse)) return impulse;
+    return advance_watched_tether(law, gravity, state, line, hysteresis);
+}
+
+// A tick of an effect whose laws are all watched in one piece (ControlLawState::watched:
+// the control law with play, Dynamic Inertia), once it catches up at the step they are
+// prepared for, the acceleration estimated: control_law_tick's catch-up and prediction
+// with every branch they do not take removed and the piece inline, the same operations
+// in the same order, so the same bits. Such a law always keeps its prediction's end
+// (keeps_ahead) for a finite acceleration. One axis at a time: the general tick's two
+// loops served its calls, here the axes' chains overlap without them.
+[[gnu::noinline, gnu::flatten]] void watched_tick(const DynamicContext& c, float force[kMaxAxes], DynamicResult& result) noexcept {
+    const SlotParams& p = *c.params;
+    DynamicState& d = *c.state;
+    ControlLawState& st = d.law;
+    const float inverse_step = d.inverse_step;
+    const float hysteresis = c.config->sensor_step;
+    for (int i = 0; i < p.axis_count; ++i) {
+        const PreparedTether& law = st.laws[i];
+        const int a = axis_index(p.axes[i]);
+        const float handle = c.position[a];
+        const float handle_velocity = c.velocity[a];
+        const float handle_acceleration = c.acceleration[a];
+        const float frame_velocity = law.handle_frame ? 0.0f : handle_velocity;
+        // The sensed line, which the prediction's heading is too (the handle's frame: still).
+        const float line_velocity = law.handle_frame ? 0.0f : (handle - st.handle_position[i]) * inverse_step;
+        TetherAxisState& now = st.now[i];
+        if (!take_kept_ahead(d, i, line_velocity, now)) {
+            const HandleLine sensed = law.handle_frame ? HandleLine{} : HandleLine{line_velocity, st.handle_velocity[i]};
+            advance_watched(law, gravity_in_frame(law, st.handle_acceleration[i]), now, sensed, hysteresis);
+        }
+        flush_subnormal(now);
+        if (!finite(now)) [[unlikely]] now = initial_state(law, frame_velocity, hysteresis);  // never expected
+        st.handle_position[i] = handle;
+        st.handle_velocity[i] = handle_velocity;
+        st.handle_acceleration[i] = std::isfinite(handle_acceleration) ? handle_acceleration : 0.0f;
+        result.mass_position[a] = now.stretch;
+        result.mass_velocity[a] = now.velocity - frame_velocity;
+        const HandleLine expected = law.handle_frame ? HandleLine{} : HandleLine{line_velocity, handle_velocity};
+        // The prediction's copy field by field: copied whole, the 13 bytes went through the
+        // stack as two overlapping 8-byte moves, whose load waited for both stores.
+        TetherAxisState ahead;
+        ahead.stretch = now.stretch;
+        ahead.velocity = now.velocity;
+        ahead.half_cycles = now.half_cycles;
+        ahead.side = now.side;
+        const float impulse =
+            advance_watched(law, gravity_in_frame(law, handle_acceleration), ahead, expected, hysteresis);
+        const bool keep = std::isfinite(handle_acceleration);
+        if (keep) {
+            st.ahead_stretch[i] = ahead.stretch;
+            st.ahead_velocity[i] = ahead.velocity;
+            st.ahead_line[i] = expected.velocity;
+        }
+        const float pull = -impulse * inverse_step;
+        force[a] += std::isfinite(pull) ? pull : 0.0f;
+        const auto bit = static_cast<uint8_t>(1u << i);
+        d.kept_ahead = keep ? (d.kept_ahead | bit) : (d.kept_ahead & static_cast<uint8_t>(~bit));
+    }
+}
 #endif
 
 // Every tick of a control-law dynamic but a plain one's ordinary tick (control_law_dynamic):
@@ -286,6 +358,9 @@ struct PlainLine {
         }
         c.state->prepared = true;
         if (kKeepAhead) c.state->kept_ahead = 0;  // predicted by the old laws
+#if !defined(__OPTIMIZE_SIZE__)
+        st.watched = false;  // until the pieces are prepared
+#endif
     }
     // A half cycle counts once the stretch swings a sensor count past its rest value: the
     // sensor's flicker around a mass at rest never counts.
@@ -302,6 +377,10 @@ struct PlainLine {
             if (kKeepAhead) c.state->kept_ahead &= static_cast<uint8_t>(~(1u << i));  // predicted over another step
         }
         c.state->inverse_step = 1.0f / step;
+#if !defined(__OPTIMIZE_SIZE__)
+        st.watched = true;
+        for (int i = 0; i < n; ++i) st.watched = st.watched && one_watched_piece(st.laws[i]);
+#endif
     }
 
     const bool fresh = !c.state->initialized || !(step > 0);
@@ -399,10 +478,18 @@ void control_law_dynamic(const DynamicContext& c, float force[kMaxAxes], Dynamic
     // Most ticks of most effects are a plain law's (recoil, impact, liquid, center drift)
     // that catches up at the step its laws are prepared for: straight to its loop, before
     // the general tick saves a register or reads its state.
+    // The watched laws likewise (a control law with play, Dynamic Inertia), with the
+    // acceleration estimated (always, in the engine).
     const DynamicState& d = *c.state;
-    if (d.plain && d.prepared && d.initialized && c.dt_s > 0 && d.law.laws[0].step_s == c.dt_s) {
-        plain_tick(c, force, result);
-        return;
+    if (d.prepared && d.initialized && c.dt_s > 0 && d.law.laws[0].step_s == c.dt_s) {
+        if (d.plain) {
+            plain_tick(c, force, result);
+            return;
+        }
+        if (d.law.watched && c.acceleration != nullptr) {
+            watched_tick(c, force, result);
+            return;
+        }
     }
 #endif
     control_law_tick(c, force, result);

@@ -71,6 +71,10 @@ struct ControlLawState {
     float ahead_stretch[kMaxAxes] = {};   // position units
     float ahead_velocity[kMaxAxes] = {};  // position units/s
     float ahead_line[kMaxAxes] = {};      // position units/s
+    // Every axis's law has regions to track in one piece a step and counts nothing (the
+    // control law with play, Dynamic Inertia): the tick takes watched_tick
+    // (control_law_dynamic.cpp). Set with the pieces, cleared with the laws.
+    bool watched = false;
 #endif
     // The laws of the effect's axes (false after every command that sets parameters:
     // DynamicState::prepared).
