@@ -97,11 +97,18 @@ export async function playThrough(page, durationMs) {
   return from;
 }
 
-// The centre of an SVG element, in page pixels.
+// The centre of an SVG element, in page pixels. The editors redraw their SVG whenever the
+// state arrives, so the element seen visible may be replaced before its box is read (the box
+// is then null): read it again, for up to 5 s, from the element drawn since.
 export async function centreOf(locator) {
-  await locator.waitFor({ state: 'visible' }); // drawn once the editor has the new state
-  const b = await locator.boundingBox();
-  return [b.x + b.width / 2, b.y + b.height / 2];
+  const deadline = Date.now() + 5000;
+  for (;;) {
+    await locator.waitFor({ state: 'visible' }); // drawn once the editor has the new state
+    const b = await locator.boundingBox();
+    if (b) return [b.x + b.width / 2, b.y + b.height / 2];
+    if (Date.now() > deadline) throw new Error(`centreOf: ${locator} has no box after 5 s (redrawn away each time)`);
+    await new Promise((resolve) => setTimeout(resolve, 20));
+  }
 }
 // An SVG point (viewBox units) of `svgLocator`, in page pixels.
 export const pagePoint = (svgLocator, x, y) => svgLocator.evaluate((s, [x, y]) => {
