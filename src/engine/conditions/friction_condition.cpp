@@ -258,11 +258,8 @@ template <bool kSymmetric>
         StopGuard& g = block.guard;
         // (The view read in place: its fields are floats and a byte read once, which the
         // guard's stores to g cannot change, so each is loaded once and only where needed.)
-        // (The lean way's laws resist, being eligible: the guard's test of it is left out.)
-        GuardLimits limits = law.limits;
-        limits.resists = true;
         const float guarded =
-            guard_stop(g, observers.view[a], bristle, state.guard_tick, position, others, f, limits, pos, neg);
+            guard_stop(g, observers.view[a], bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
         const float side = guarded >= 0 ? neg_limit : pos_limit;
         f = guarded > side ? side : (guarded < -side ? -side : guarded);
         remember_output(g, f, e.output_gain);
