@@ -559,11 +559,9 @@ void Engine::tick(const TickInput& in, TickOutput& out) noexcept {
             condition.params = &s.params;
             condition.start_position = s.start_position;
             condition.direction = s.direction;
-            // The first pass's reading again: the same clock, and the iteration it found is
-            // the guess, so no division (on x86, the window it kept).
-            condition.tau_us = s.clock(s.elapsed_us).tau_us;
+            // (No tau_us and no curves: friction and texture read neither, so the clock is
+            // not read again here; the context keeps the last condition's.)
             condition.state = s.condition_memory;
-            condition.curves = s.params.curved.curves;
             float force[kMaxAxes] = {};
             s.render_condition(condition, force);
             if (axes == 2) {  // the common device, unrolled (others[1] is read on 2 axes only)

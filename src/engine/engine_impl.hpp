@@ -288,11 +288,15 @@ struct Engine::Impl {
         }
     }
 
-    // prepare_slot, and a dynamic's per-tick form of its parameters marked stale.
+    // prepare_slot, and a dynamic's per-tick form of its parameters (or a friction's laws)
+    // marked stale.
     void prepare(detail::Slot& s) noexcept {
         acceleration_readers -= s.reads_acceleration ? 1 : 0;
         prepare_new(s);
         if (s.cls == EffectClass::dynamic) s.dynamic_memory->state.prepared = false;
+        if (s.cls == EffectClass::condition && s.condition_memory != nullptr) {
+            s.condition_memory->params_changed(s.params.type);
+        }
     }
 
     // prepare_slot for a slot being created (its old constants were counted off when freed).

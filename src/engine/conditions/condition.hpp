@@ -37,6 +37,12 @@ struct ConditionState {
             contact = ContactState{};
         }
     }
+
+    // The effect's parameters changed (an update) and the memory of its type t is kept: a
+    // friction's lean way checks its blocks' laws again.
+    void params_changed(EffectType t) noexcept {
+        if (kFrictionLeanWay && t == EffectType::friction) friction.laws_current = false;
+    }
 };
 
 struct ConditionContext {
@@ -48,7 +54,9 @@ struct ConditionContext {
     const float* start_position = nullptr;  // [kMaxAxes] sensed position at the effect's first tick
     const float* direction = nullptr;       // [kMaxAxes] the effect's direction factors (direction.hpp)
     float dt_s = 0;                         // time since the previous tick, s (0 on the first)
-    int64_t tau_us = 0;                     // time since the effect began playing
+    // Time since the effect began playing. Not set for friction and texture, which render
+    // last and read no clock (nor curves: Engine::tick's second pass).
+    int64_t tau_us = 0;
     ConditionState* state = nullptr;        // this effect's state, persists across ticks
     float* reported_position = nullptr;     // [kMaxAxes] clipping walls overwrite their axis
     const ConditionCurve* curves = nullptr; // [kMaxAxes] the blocks as curves (params->curved)

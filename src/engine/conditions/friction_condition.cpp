@@ -56,6 +56,7 @@ void remember_tick(FrictionState& state, const EngineConfig& config, float dt_s)
     state.inverse_fade_speed = 1.0f / (kBristleDampingFade * config.velocity_ref);
     state.tick_dt = dt_s;
     for (FrictionBlock& block : state.block) block.law = FrictionBlockLaw{};
+    if constexpr (kFrictionLeanWay) state.laws_current = false;
 }
 
 // A block's law is keyed by the slot's block's six 16-bit values, its first 12 bytes.
@@ -94,17 +95,9 @@ static_assert(offsetof(SlotConditionBlock, pos_coefficient) == 0 && offsetof(Slo
         law.damping = -stiffness * kBristleDampingTime;
     }
     law.limits = guard_limits(magnitude, pos, neg);
+    law.symmetric = kFrictionLeanWay && b.pos_coefficient == b.neg_coefficient && b.pos_saturation == b.neg_saturation;
     law.eligible = b.offset == 0 && b.deadband == 0 && law.limits.resists && law.inverse_presliding > 0;
 }
-
-// The lean way (friction_condition below) is a second copy of a block's work, about 1.3 KB
-// of Thumb code: a build for size (the Cortex-M4F firmware, -Os, whose flash is over its
-// goal) leaves it out, and every block takes the general way, which gives the same force.
-#if defined(__OPTIMIZE_SIZE__)
-inline constexpr bool kLeanWay = false;
-#else
-inline constexpr bool kLeanWay = true;
-#endif
 
 // Static friction on a block at rest whose others' push changed to `pushed` (hold_with_others,
 // friction_model.hpp), its bristle at deflection z. Returns the new deflection.
@@ -213,6 +206,67 @@ struct EffectTick {
     }
 }
 
+// The lean way's blocks of one friction (friction_condition below). kSymmetric: every block's
+// law has equal coefficients and equal saturations on both sides (laws_symmetric), the common
+// friction (the primer's one coefficient): the choices of a side then give the same floats
+// and are left out (issue 14, fifteenth pass). x86 only (kFrictionLeanWay).
+template <bool kSymmetric>
+[[gnu::always_inline]] inline void render_lean_blocks(const ConditionContext& c, const EffectTick& e,
+                                                      FrictionState& state, float force[kMaxAxes]) noexcept {
+    const SlotParams& p = *c.params;
+    const int blocks = p.axis_count;
+    // (The context's arrays once: the blocks' byte stores could alias the context.)
+    const float* const positions = c.position;
+    const float* const others_force = c.others_force;
+    const AxisObservers& observers = *c.observers;
+    for (int i = 0; i < blocks; ++i) {
+        const int a = axis_index(p.axes[i]);
+        const SlotConditionBlock& b = p.conditions[i];
+        FrictionBlock& block = state.block[i];
+        FrictionBlockLaw& law = block.law;
+        Bristle& bristle = block.bristle;
+        const float position = positions[a];
+        // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
+        // finite only where the position and the deflection are.)
+        const float dx = position - bristle.anchor;
+        // (law.lean: the block eligible and its bristle primed.)
+        if (!law.lean || !std::isfinite(dx + bristle.deflection)) {
+            force[a] += render_block_out_of_line(e, state, b, block, a);
+            continue;
+        }
+        // The lean way: render_block's steps with what it tests known (a still surface, no
+        // deadband, a resisting friction with a presliding zone, the bristle primed, the
+        // position and the deflection finite, the observers, the others' force and the guard
+        // there), bit for bit the same force.
+        const bool at_rest = position == bristle.anchor;
+        bristle.anchor = position;
+        float z = move_bristle<true, true>(bristle, dx, law.inverse_presliding);
+        const float others = others_force[a];
+        const float pushed = others * e.inverse_gain;
+        // (Symmetric: the same floats on both sides, so the sides' selections below fold.)
+        const float pos = law.pos, neg = kSymmetric ? law.pos : law.neg;
+        const float pos_limit = law.pos_limit, neg_limit = kSymmetric ? law.pos_limit : law.neg_limit;
+        if (at_rest && pushed != block.others && e.held_before) {
+            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
+        }
+        block.others = pushed;
+        const bool toward_positive = z >= 0;
+        float f = -(toward_positive ? pos : neg) * z + bristle_damping_faded(law.damping, z, observers.damped_velocity[a],
+                                                                            observers.damped_way[a], observers.fade[a]);
+        const float limit = toward_positive ? pos_limit : neg_limit;
+        f = f > limit ? limit : (f < -limit ? -limit : f);
+        StopGuard& g = block.guard;
+        // (The view read in place: its fields are floats and a byte read once, which the
+        // guard's stores to g cannot change, so each is loaded once and only where needed.)
+        const float guarded =
+            guard_stop(g, observers.view[a], bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
+        const float side = guarded >= 0 ? neg_limit : pos_limit;
+        f = guarded > side ? side : (guarded < -side ? -side : guarded);
+        remember_output(g, f, e.output_gain);
+        force[a] += f;
+    }
+}
+
 }  // namespace
 
 void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexcept {
@@ -237,7 +291,7 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
     // engine's observers, the others' force known, the guard on and a tick to damp over.
     // Its blocks take the lean way below unless one of them needs more (render_block).
     // (The guard on implies a tick to damp over: stop_guard_tick.)
-    const bool lean = kLeanWay && c.observers != nullptr && e.others_known && e.guarding;
+    const bool lean = kFrictionLeanWay && c.observers != nullptr && e.others_known && e.guarding;
     const int blocks = p.axis_count;
     if (!lean) {
         // A friction with a direction, or without the guard (no device_mass): every block
@@ -252,52 +306,21 @@ void friction_condition(const ConditionContext& c, float force[kMaxAxes]) noexce
         state.others_known = e.others_known;
         return;
     }
-    for (int i = 0; i < blocks; ++i) {
-        const int a = axis_index(p.axes[i]);
-        const SlotConditionBlock& b = p.conditions[i];
-        FrictionBlock& block = state.block[i];
-        FrictionBlockLaw& law = block.law;
-        keep_law(block, c, state, b);
-        Bristle& bristle = block.bristle;
-        const float position = c.position[a];
-        // (advance with no slip: x - 0 is x. The anchor is always finite, so dx + z is
-        // finite only where the position and the deflection are.)
-        const float dx = position - bristle.anchor;
-        // (law.lean: the block eligible and its bristle primed.)
-        if (!law.lean || !std::isfinite(dx + bristle.deflection)) {
-            force[a] += render_block_out_of_line(e, state, b, block, a);
-            continue;
+    // The blocks' laws checked once an effect (issue 14, fifteenth pass): they change only
+    // with the tick period and the parameters, which clear laws_current.
+    if (!state.laws_current) {
+        bool symmetric = true;
+        for (int i = 0; i < blocks; ++i) {
+            keep_law(state.block[i], c, state, p.conditions[i]);
+            symmetric = symmetric && state.block[i].law.symmetric;
         }
-        // The lean way: render_block's steps with what it tests known (a still surface, no
-        // deadband, a resisting friction with a presliding zone, the bristle primed, the
-        // position and the deflection finite, the observers, the others' force and the guard
-        // there), bit for bit the same force.
-        const bool at_rest = position == bristle.anchor;
-        bristle.anchor = position;
-        float z = move_bristle<true, true>(bristle, dx, law.inverse_presliding);
-        const float others = c.others_force[a];
-        const float pushed = others * e.inverse_gain;
-        const float pos = law.pos, neg = law.neg;
-        const float pos_limit = law.pos_limit, neg_limit = law.neg_limit;
-        if (at_rest && pushed != block.others && e.held_before) {
-            z = hold_at_rest(block, z, pushed, pos, neg, pos_limit, neg_limit);
-        }
-        block.others = pushed;
-        const bool toward_positive = z >= 0;
-        const AxisObservers& observers = *c.observers;
-        float f = -(toward_positive ? pos : neg) * z + bristle_damping_faded(law.damping, z, observers.damped_velocity[a],
-                                                                            observers.damped_way[a], observers.fade[a]);
-        const float limit = toward_positive ? pos_limit : neg_limit;
-        f = f > limit ? limit : (f < -limit ? -limit : f);
-        StopGuard& g = block.guard;
-        // (The view read in place: its fields are floats and a byte read once, which the
-        // guard's stores to g cannot change, so each is loaded once and only where needed.)
-        const float guarded =
-            guard_stop(g, observers.view[a], bristle, state.guard_tick, position, others, f, law.limits, pos, neg);
-        const float side = guarded >= 0 ? neg_limit : pos_limit;
-        f = guarded > side ? side : (guarded < -side ? -side : guarded);
-        remember_output(g, f, e.output_gain);
-        force[a] += f;
+        state.laws_symmetric = symmetric;
+        state.laws_current = true;
+    }
+    if (state.laws_symmetric) {
+        render_lean_blocks<true>(c, e, state, force);
+    } else {
+        render_lean_blocks<false>(c, e, state, force);
     }
     state.others_known = e.others_known;
 }

@@ -11,6 +11,15 @@
 
 namespace feel::detail {
 
+// Whether friction_condition has its lean way for the common block (a second copy of a
+// block's work, about 1.3 KB of Thumb code: a build for size, the Cortex-M4F firmware's,
+// leaves it out, and every block takes the general way, which gives the same force).
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kFrictionLeanWay = false;
+#else
+inline constexpr bool kFrictionLeanWay = true;
+#endif
+
 // What a friction block's law needs that changes only with its block or the tick period,
 // worked out when one of them changes rather than every tick (issue 14: friction's cost per
 // effect).
@@ -31,6 +40,9 @@ struct FrictionBlockLaw {
     // eligible and the bristle primed (one test on the lean way): set with the law and after
     // the block's general way (a bristle is primed there, and only reset with the law).
     bool lean = false;
+    // Equal coefficients and equal saturations on both sides (the same floats): the lean way's
+    // choices of a side can be left out (friction_condition.cpp, render_lean_blocks).
+    bool symmetric = false;
 };
 
 // What a texture's tick needs that changes only with its block or the tick period (issue 14,
@@ -75,6 +87,12 @@ struct FrictionState {
     // friction: index i = the effect's i-th axis; texture: block 0.
     FrictionBlock block[kMaxAxes] = {};
     bool others_known = false;
+    // Every block's law is for its block at this tick period (friction's lean way checks the
+    // keys once an effect, not once a block): cleared when the tick period or the effect's
+    // parameters change (remember_tick, ConditionState::params_changed). x86 only.
+    bool laws_current = false;
+    // With laws_current: every block's law is symmetric (FrictionBlockLaw::symmetric).
+    bool laws_symmetric = false;
     // What every block shares at this tick period, recomputed only when it changes (issue
     // 14: friction's cost per effect): the guards' gains (an exp) and the microdamping's
     // 1/fade speed. (The presliding rule is worked out again with a block's law: rarely.)

@@ -249,8 +249,14 @@ struct GuardLimits {
     // friction's force alone could have stopped it. A hand dragging the handle slower than
     // that, whose travel the sensor cannot tell from the observer's prediction of a stop,
     // is left to the bristle.
-    g.decelerated = (flags & ObserverView::kFast) != 0 ? 0.0f : g.decelerated + std::fabs(force) * t.dt_per_mass;
-    if (!(g.decelerated <= t.quick_stop)) return force;
+    // (Fast, it is 0, which the test below passes: quick_stop is positive, the sensor's step
+    // being so. So the test runs only where it can fail.)
+    if ((flags & ObserverView::kFast) != 0) {
+        g.decelerated = 0.0f;
+    } else {
+        g.decelerated += std::fabs(force) * t.dt_per_mass;
+        if (!(g.decelerated <= t.quick_stop)) return force;
+    }
     // Free means nothing pushes the handle along its motion (a hand pushing lightly, below
     // f/4, is not free: d is its push, along the motion) and nothing holds it beyond f/4
     // against it (the mechanism's dry friction is below that).

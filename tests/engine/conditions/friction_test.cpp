@@ -272,6 +272,26 @@ TEST_F(Friction, StictionDoesNotHoldAPushLargerThanTheFriction) {
     EXPECT_NEAR(tick_at(0).force[0], 7000.0, 1.0);
 }
 
+TEST_F(Friction, AnUpdateWhilePlayingSlidesWithTheNewBlock) {
+    // Without a restart the effect keeps its bristle and slides on with the new coefficients
+    // and saturations at once (Engine::update; Figure 3-9: sliding, the force is the
+    // coefficient of the direction of motion, capped by that side's saturation). A travel of
+    // 12000 is over 22 presliding distances: the bristle is fully slid (z = ±1).
+    const EffectId id = play(condition(EffectType::friction, {Axis::x}, {block(6000, 6000)}));
+    double x = -9000;
+    TickOutput out{};
+    for (int k = 0; k < 600; ++k) out = tick_at(x += 20);
+    EXPECT_NEAR(out.force[0], -6000, 1.0);
+    EffectParams changed = condition(EffectType::friction, {Axis::x}, {block(8000, 3000, 0, 7000, 10000)});
+    ASSERT_TRUE(engine_->update(id, changed, effect_field::kTypeSpecific, false).ok());
+    EXPECT_NEAR(tick_at(x += 20).force[0], -7000, 1.0);  // 8000, capped at 7000
+    for (int k = 0; k < 600; ++k) out = tick_at(x -= 20);
+    EXPECT_NEAR(out.force[0], 3000, 1.0);
+    changed = condition(EffectType::friction, {Axis::x}, {block(2000, 2000)});
+    ASSERT_TRUE(engine_->update(id, changed, effect_field::kTypeSpecific, false).ok());
+    EXPECT_NEAR(tick_at(x -= 20).force[0], 2000, 1.0);
+}
+
 TEST_F(Friction, ANonFiniteSensorReadingMovesNoBristle) {
     // A reading that is not a position (NaN, inf) is no travel: Dahl's z moves only with the
     // handle, so once the handle reads where it was and the velocity estimate is at rest
